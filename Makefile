@@ -1,0 +1,103 @@
+# stopmo -- one non-recursive GNU Makefile.
+#   make            build libcommon.a and every bin/NAME from tools/NAME.c
+#   make check      run the TAP tests (tests/t[0-9]*.sh, tests/unit/*.c) with prove
+#   make demo       run the example pipelines on data the project generates
+#   make bench      benchmarks, printed as ratios against same-run baselines
+#   make deps       install missing Debian packages (root) or print the command
+#   make install PREFIX=/usr/local
+.SUFFIXES:
+.DELETE_ON_ERROR:
+
+PREFIX   ?= /usr/local
+CC       ?= cc
+CXX      ?= c++
+OPT      ?= -O2
+CPPFLAGS += -Ilibcommon -I/usr/include/suitesparse -I/usr/include/maxflow-3.0 \
+            -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -MMD -MP
+CFLAGS   ?= $(OPT) -g
+CFLAGS   += -std=c11 -Wall -Wextra -pthread
+CXXFLAGS ?= $(OPT) -g
+CXXFLAGS += -std=c++17 -Wall -Wextra -Wno-deprecated-copy -pthread -frounding-math \
+            -DCGAL_DISABLE_GMP=0
+LDFLAGS  += -pthread -Wl,--as-needed
+LDLIBS   += -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow \
+            -lOpenMeshCore -lassimp -lpng -lgmp -lmpfr -lstdc++ -lm
+
+DEBS = build-essential pkg-config libsuitesparse-dev libopenblas-dev liblapack-dev \
+       libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libopenmesh-dev libassimp-dev \
+       libmaxflow-dev libpng-dev zlib1g-dev xz-utils perl
+
+LIB_C   := $(wildcard libcommon/*.c)
+LIB_CXX := $(wildcard libcommon/*.cpp)
+LIB_OBJ := $(LIB_C:%.c=build/%.o) $(LIB_CXX:%.cpp=build/%.o)
+TOOLS   := $(patsubst tools/%.c,bin/%,$(wildcard tools/*.c))
+UNITS   := $(patsubst tests/unit/%.c,build/tests/%,$(wildcard tests/unit/*.c))
+BENCHES := $(patsubst bench/%.c,build/bench/%,$(wildcard bench/*.c))
+DEPFILES := $(LIB_OBJ:.o=.d) $(TOOLS:bin/%=build/tools/%.d) $(UNITS:=.d) $(BENCHES:=.d)
+
+all: $(TOOLS) $(UNITS)
+
+build/libcommon.a: $(LIB_OBJ)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+build/libcommon/%.o: libcommon/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+
+build/libcommon/%.o: libcommon/%.cpp
+	@mkdir -p $(@D)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c -o $@ $<
+
+build/tools/%.o: tools/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+
+bin/%: build/tools/%.o build/libcommon.a
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) -o $@ $< build/libcommon.a $(LDLIBS)
+
+build/tests/%: tests/unit/%.c tests/unit/tap.h build/libcommon.a
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -MF $@.d -MT $@ $(CFLAGS) -Itests/unit $(LDFLAGS) -o $@ $< build/libcommon.a $(LDLIBS)
+
+build/bench/%: bench/%.c build/libcommon.a
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -MF $@.d -MT $@ $(CFLAGS) $(LDFLAGS) -o $@ $< build/libcommon.a $(LDLIBS)
+
+# deps: install what is missing (Debian); never fails a build that already has it
+deps:
+	@missing=""; for p in $(DEBS); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -z "$$missing" ]; then echo "deps: all Debian packages present"; \
+	elif [ "$$(id -u)" = 0 ]; then echo "deps: installing$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	else echo "deps: missing packages; run:"; echo "  sudo apt-get install$$missing"; exit 1; fi
+
+check: deps
+	$(MAKE) all
+	prove -j2 --timer tests/t[0-9]*.sh $(UNITS)
+
+demo: deps
+	$(MAKE) all
+	$(MAKE) -C examples/stopshop demo
+
+bench: deps
+	$(MAKE) all $(BENCHES)
+	sh bench/run.sh
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
+	  $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7
+	install -m 755 $(TOOLS) $(DESTDIR)$(PREFIX)/bin
+	install -m 644 $(wildcard man/man1/*.1) $(DESTDIR)$(PREFIX)/share/man/man1
+	for s in 5 7; do f=$$(ls man/man$$s/*.$$s 2>/dev/null); \
+	  [ -z "$$f" ] || install -m 644 $$f $(DESTDIR)$(PREFIX)/share/man/man$$s; done
+
+clean:
+	rm -rf build bin
+
+.PHONY: all deps check demo bench install clean
+.PRECIOUS: build/tools/%.o
+-include $(DEPFILES)

@@ -1,0 +1,33 @@
+/* laplacian.h -- cotangent Laplacian and mass matrices of a triangle mesh.
+ *
+ * Convention (as libigl's cotmatrix): L is symmetric negative semi-definite,
+ *   L_ij = (cot a_ij + cot b_ij) / 2 for an edge ij with opposite angles a, b,
+ *   L_ii = -sum_j L_ij, so every row sums to zero.
+ * The mass matrix is diagonal and returned as a vector.
+ */
+#ifndef CM_LAPLACIAN_H
+#define CM_LAPLACIAN_H
+#include "sparse.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Add the cot Laplacian's entries to T (#V by #V, all entries, both
+ * halves), scaled by `scale`.  V: #V by 3, F: #F by 3. */
+void cot_laplacian_triplets(const double *V, const int *F, int nf, double scale,
+                            struct triplets *T);
+
+/* L: #V by #V cot Laplacian, unsymmetric storage (stype 0). */
+cholmod_sparse *cot_laplacian(const double *V, const int *F, int nv, int nf);
+
+enum mass_type { MASS_BARYCENTRIC, MASS_VORONOI };
+
+/* M: #V diagonal mass entries (out).  Barycentric: a third of the incident
+ * areas.  Voronoi: mixed Voronoi areas (Meyer et al. 2003), obtuse
+ * triangles split barycentrically.  Isolated vertices get 0. */
+void mass_diag(const double *V, const int *F, int nv, int nf, enum mass_type type, double *M);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,458 @@
+/* mesh.c -- MESH stream reading and writing; see mesh.h and man 5 stopmo-mesh. */
+#include "mesh.h"
+#include "cm_error.h"
+#include "numparse.h"
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_COUNT 200000000
+
+int mesh_alloc(struct mesh *m, int nv, int nf, int nframes)
+{
+    memset(m, 0, sizeof *m);
+    m->nv = nv;
+    m->nf = nf;
+    m->nframes = nframes;
+    m->F = calloc((size_t)nf * 3 + 1, sizeof *m->F);
+    m->V = calloc((size_t)nframes * nv * 3 + 1, sizeof *m->V);
+    m->cut = calloc((size_t)nframes + 1, 1);
+    if (!m->F || !m->V || !m->cut) {
+        mesh_free(m);
+        return cm_seterr("out of memory for %d vertices x %d frames", nv, nframes);
+    }
+    return 0;
+}
+
+void mesh_free(struct mesh *m)
+{
+    free(m->F);
+    free(m->V);
+    free(m->cut);
+    memset(m, 0, sizeof *m);
+}
+
+int mesh_nclips(const struct mesh *m)
+{
+    int c = m->nframes > 0;
+    for (int k = 1; k < m->nframes; k++)
+        c += m->cut[k] != 0;
+    return c;
+}
+
+/* ---------------- buffered input ---------------- */
+
+static int fill(struct mesh_reader *r)
+{
+    if (r->eof)
+        return 0;
+    if (r->pos > 0) {
+        memmove(r->buf, r->buf + r->pos, r->len - r->pos);
+        r->len -= r->pos;
+        r->pos = 0;
+    }
+    if (r->len + 1 >= r->cap) {
+        r->cap *= 2;
+        char *nb = realloc(r->buf, r->cap);
+        if (!nb)
+            return cm_seterr("cannot read '%s': out of memory", r->name);
+        r->buf = nb;
+    }
+    size_t n = fread(r->buf + r->len, 1, r->cap - 1 - r->len, r->f);
+    if (n == 0) {
+        if (ferror(r->f))
+            return cm_seterr("cannot read '%s': %s", r->name, strerror(errno));
+        r->eof = 1;
+        return 0;
+    }
+    r->len += n;
+    return 1;
+}
+
+/* Next line (NUL terminated, without '\n'), or NULL at end of input
+ * (check cm_errmsg via *err).  Skips blank and '#' comment lines. */
+static char *next_line(struct mesh_reader *r, int *err)
+{
+    *err = 0;
+    for (;;) {
+        char *nl = r->pos < r->len ? memchr(r->buf + r->pos, '\n', r->len - r->pos) : NULL;
+        if (!nl) {
+            int rc = fill(r);
+            if (rc < 0) { *err = 1; return NULL; }
+            if (rc > 0) continue;
+            if (r->pos >= r->len) return NULL;
+            /* last line without newline */
+            r->buf[r->len] = 0;
+            nl = r->buf + r->len;
+        }
+        char *s = r->buf + r->pos;
+        *nl = 0;
+        r->pos = (size_t)(nl - r->buf) + (nl < r->buf + r->len ? 1 : 0);
+        if (nl == r->buf + r->len) r->pos = r->len;
+        r->line++;
+        char *t = s;
+        while (*t == ' ' || *t == '\t' || *t == '\r') t++;
+        if (*t == 0 || *t == '#')
+            continue;
+        return t;
+    }
+}
+
+static int read_bytes(struct mesh_reader *r, void *dst, size_t n)
+{
+    char *d = dst;
+    while (n > 0) {
+        if (r->pos >= r->len) {
+            int rc = fill(r);
+            if (rc < 0) return -1;
+            if (rc == 0) return 0;
+        }
+        size_t k = r->len - r->pos < n ? r->len - r->pos : n;
+        memcpy(d, r->buf + r->pos, k);
+        r->pos += k;
+        d += k;
+        n -= k;
+    }
+    return 1;
+}
+
+static int at_end(const char *p)
+{
+    while (*p == ' ' || *p == '\t' || *p == '\r') p++;
+    return *p == 0 || *p == '#';
+}
+
+#define RERR(...) do { char m_[512]; snprintf(m_, sizeof m_, __VA_ARGS__); \
+    return cm_seterr("cannot read '%s': line %ld: %s", r->name, r->line, m_); } while (0)
+
+static int header_count(struct mesh_reader *r, const char *key, int allow_q, int *out)
+{
+    int err;
+    char *s = next_line(r, &err);
+    if (err) return -1;
+    if (!s) RERR("truncated header: expected '%s N'", key);
+    size_t kl = strlen(key);
+    if (strncmp(s, key, kl) != 0 || (s[kl] != ' ' && s[kl] != '\t'))
+        RERR("expected '%s N', got '%.40s'", key, s);
+    const char *p = s + kl;
+    while (*p == ' ' || *p == '\t') p++;
+    if (allow_q && *p == '?' && at_end(p + 1)) { *out = -1; return 0; }
+    long v;
+    const char *e = parse_long(p, &v);
+    if (!e || !at_end(e) || v < 0 || v > MAX_COUNT)
+        RERR("bad %s count '%.40s'", key, p);
+    *out = (int)v;
+    return 0;
+}
+
+static uint32_t le32(const unsigned char *b)
+{
+    return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
+}
+
+int mesh_reader_open(struct mesh_reader *r, const char *path)
+{
+    memset(r, 0, sizeof *r);
+    if (!path || !strcmp(path, "-")) {
+        r->name = "<stdin>";
+        r->f = stdin;
+    } else {
+        r->name = path;
+        r->f = fopen(path, "rb");
+        if (!r->f)
+            return cm_seterr("cannot read '%s': %s", path, strerror(errno));
+        r->own = 1;
+    }
+    r->cap = 1 << 20;
+    r->buf = malloc(r->cap);
+    if (!r->buf) { mesh_reader_close(r); return cm_seterr("out of memory"); }
+    int err;
+    char *s = next_line(r, &err);
+    if (err) goto fail;
+    if (!s) { cm_seterr("cannot read '%s': empty input, expected a MESH stream", r->name); goto fail; }
+    if (!strncmp(s, "MESH 1", 6) && at_end(s + 6)) r->raw = 0;
+    else if (!strncmp(s, "MESH 1 raw", 10) && at_end(s + 10)) r->raw = 1;
+    else if (!strncmp(s, "MESH", 4) && (s[4] == ' ')) {
+        cm_seterr("cannot read '%s': line %ld: unsupported MESH version '%.20s'", r->name, r->line, s);
+        goto fail;
+    } else {
+        cm_seterr("cannot read '%s': line %ld: not a MESH stream (bad magic '%.20s'); "
+                  "use mesh-import for OBJ/OFF/PLY/STL/glTF", r->name, r->line, s);
+        goto fail;
+    }
+    if (header_count(r, "vertices", 0, &r->nv) < 0 ||
+        header_count(r, "faces", 0, &r->nf) < 0 ||
+        header_count(r, "frames", 1, &r->nframes) < 0)
+        goto fail;
+    r->F = malloc(((size_t)r->nf * 3 + 1) * sizeof *r->F);
+    if (!r->F) { cm_seterr("cannot read '%s': out of memory", r->name); goto fail; }
+    if (r->raw) {
+        unsigned char *tmp = malloc((size_t)r->nf * 12 + 1);
+        int rc = tmp ? read_bytes(r, tmp, (size_t)r->nf * 12) : -1;
+        if (rc <= 0) {
+            free(tmp);
+            if (rc == 0) cm_seterr("cannot read '%s': truncated face block", r->name);
+            goto fail;
+        }
+        for (size_t i = 0; i < (size_t)r->nf * 3; i++) {
+            uint32_t v = le32(tmp + 4 * i);
+            if (v >= (uint32_t)r->nv) {
+                free(tmp);
+                cm_seterr("cannot read '%s': face %zu: vertex index %u out of range (0..%d)",
+                          r->name, i / 3, v, r->nv - 1);
+                goto fail;
+            }
+            r->F[i] = (int)v;
+        }
+        free(tmp);
+    } else {
+        for (int i = 0; i < r->nf; i++) {
+            s = next_line(r, &err);
+            if (err) goto fail;
+            if (!s) { cm_seterr("cannot read '%s': line %ld: truncated: expected %d faces, got %d",
+                                r->name, r->line, r->nf, i); goto fail; }
+            if (s[0] != 'f' || (s[1] != ' ' && s[1] != '\t')) {
+                cm_seterr("cannot read '%s': line %ld: expected face 'f a b c' (%d of %d), got '%.30s'",
+                          r->name, r->line, i, r->nf, s);
+                goto fail;
+            }
+            const char *p = s + 1;
+            for (int c = 0; c < 3; c++) {
+                long v;
+                p = parse_long(p, &v);
+                if (!p) { cm_seterr("cannot read '%s': line %ld: expected 3 vertex indices",
+                                    r->name, r->line); goto fail; }
+                if (v < 0 || v >= r->nv) {
+                    cm_seterr("cannot read '%s': line %ld: vertex index %ld out of range (0..%d)",
+                              r->name, r->line, v, r->nv - 1);
+                    goto fail;
+                }
+                r->F[3 * i + c] = (int)v;
+            }
+            if (!at_end(p)) {
+                cm_seterr("cannot read '%s': line %ld: a face needs exactly 3 indices "
+                          "(triangulate with mesh-import)", r->name, r->line);
+                goto fail;
+            }
+        }
+    }
+    return 0;
+fail:
+    mesh_reader_close(r);
+    return -1;
+}
+
+int mesh_reader_next(struct mesh_reader *r, double *X, int *cut)
+{
+    int err;
+    char *s = next_line(r, &err);
+    if (err) return -1;
+    if (!s) {
+        if (r->nframes >= 0 && r->frame < r->nframes)
+            return cm_seterr("cannot read '%s': line %ld: truncated: expected %d frames, got %d",
+                             r->name, r->line, r->nframes, r->frame);
+        if (r->nframes < 0 && r->frame == 0)
+            return cm_seterr("cannot read '%s': line %ld: stream has no frames", r->name, r->line);
+        return 0;
+    }
+    if (r->nframes >= 0 && r->frame >= r->nframes)
+        RERR("more frames than the %d announced in the header", r->nframes);
+    long k;
+    const char *p = NULL;
+    if (!strncmp(s, "frame", 5) && (s[5] == ' ' || s[5] == '\t'))
+        p = parse_long(s + 5, &k);
+    if (!p)
+        RERR("expected 'frame %d', got '%.30s'", r->frame, s);
+    if (k != r->frame)
+        RERR("expected frame %d, got frame %ld", r->frame, k);
+    while (*p == ' ' || *p == '\t') p++;
+    int c = 0;
+    if (!strncmp(p, "cut", 3) && at_end(p + 3)) c = 1;
+    else if (!at_end(p))
+        RERR("unexpected '%.20s' after frame number", p);
+    if (cut) *cut = c;
+    size_t n3 = (size_t)r->nv * 3;
+    if (r->raw) {
+        long fl = r->line;
+        int rc = read_bytes(r, X, n3 * sizeof(double));
+        if (rc < 0) return -1;
+        if (rc == 0)
+            return cm_seterr("cannot read '%s': frame %d (header line %ld): truncated vertex block",
+                             r->name, r->frame, fl);
+#if __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+        for (size_t i = 0; i < n3; i++) X[i] = __builtin_bswap64(X[i]);
+#endif
+        for (size_t i = 0; i < n3; i++)
+            if (!isfinite(X[i]))
+                return cm_seterr("cannot read '%s': frame %d: vertex %zu: non-finite coordinate",
+                                 r->name, r->frame, i / 3);
+        /* the block is followed by a newline so the next header is a line */
+        char nl;
+        rc = read_bytes(r, &nl, 1);
+        if (rc < 0) return -1;
+        if (rc == 0 || nl != '\n')
+            return cm_seterr("cannot read '%s': frame %d: missing newline after vertex block",
+                             r->name, r->frame);
+    } else {
+        for (int i = 0; i < r->nv; i++) {
+            s = next_line(r, &err);
+            if (err) return -1;
+            if (!s)
+                return cm_seterr("cannot read '%s': line %ld: truncated: frame %d has %d of %d vertices",
+                                 r->name, r->line, r->frame, i, r->nv);
+            const char *q = s;
+            double *x = X + 3 * (size_t)i;
+            for (int d = 0; d < 3; d++) {
+                q = parse_double(q, &x[d]);
+                if (!q)
+                    RERR("expected 3 numbers (frame %d, vertex %d)", r->frame, i);
+            }
+            if (!at_end(q))
+                RERR("expected 3 numbers (frame %d, vertex %d), got more", r->frame, i);
+            if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]))
+                RERR("non-finite coordinate (frame %d, vertex %d)", r->frame, i);
+        }
+    }
+    r->frame++;
+    return 1;
+}
+
+void mesh_reader_close(struct mesh_reader *r)
+{
+    if (r->own && r->f)
+        fclose(r->f);
+    free(r->buf);
+    free(r->F);
+    r->f = NULL;
+    r->buf = NULL;
+    r->F = NULL;
+}
+
+int mesh_read(const char *path, struct mesh *m)
+{
+    struct mesh_reader r;
+    memset(m, 0, sizeof *m);
+    if (mesh_reader_open(&r, path) < 0)
+        return -1;
+    size_t cap = r.nframes > 0 ? (size_t)r.nframes : 16;
+    size_t fs = (size_t)r.nv * 3;
+    m->nv = r.nv;
+    m->nf = r.nf;
+    m->F = r.F;
+    r.F = NULL;
+    m->V = malloc((cap * fs + 1) * sizeof *m->V);
+    m->cut = malloc(cap + 1);
+    if (!m->V || !m->cut) goto oom;
+    for (;;) {
+        if ((size_t)m->nframes == cap) {
+            cap *= 2;
+            double *nv = realloc(m->V, (cap * fs + 1) * sizeof *m->V);
+            unsigned char *nc = realloc(m->cut, cap + 1);
+            if (nv) m->V = nv;
+            if (nc) m->cut = nc;
+            if (!nv || !nc) goto oom;
+        }
+        int c;
+        int rc = mesh_reader_next(&r, m->V + m->nframes * fs, &c);
+        if (rc < 0) goto fail;
+        if (rc == 0) break;
+        m->cut[m->nframes++] = (unsigned char)c;
+    }
+    if (m->nframes == 0) {
+        cm_seterr("cannot read '%s': stream has no frames", r.name);
+        goto fail;
+    }
+    mesh_reader_close(&r);
+    return 0;
+oom:
+    cm_seterr("cannot read '%s': out of memory", r.name);
+fail:
+    mesh_reader_close(&r);
+    mesh_free(m);
+    return -1;
+}
+
+/* ---------------- writing ---------------- */
+
+static int werr(void)
+{
+    return cm_seterr("write error: %s", strerror(errno));
+}
+
+int mesh_writer_open(struct mesh_writer *w, FILE *f, int nv, int nf,
+                     const int *F, int nframes, int raw)
+{
+    memset(w, 0, sizeof *w);
+    w->f = f;
+    w->raw = raw;
+    w->nv = nv;
+    w->nf = nf;
+    w->nframes = nframes;
+    if (fprintf(f, "MESH 1%s\nvertices %d\nfaces %d\n", raw ? " raw" : "", nv, nf) < 0)
+        return werr();
+    if (nframes < 0) fputs("frames ?\n", f);
+    else fprintf(f, "frames %d\n", nframes);
+    if (raw) {
+        for (size_t i = 0; i < (size_t)nf * 3; i++) {
+            uint32_t v = (uint32_t)F[i];
+            unsigned char b[4] = {v & 255, (v >> 8) & 255, (v >> 16) & 255, v >> 24};
+            fwrite(b, 1, 4, f);
+        }
+    } else {
+        char line[64];
+        for (int i = 0; i < nf; i++) {
+            int n = snprintf(line, sizeof line, "f %d %d %d\n", F[3 * i], F[3 * i + 1], F[3 * i + 2]);
+            fwrite(line, 1, (size_t)n, f);
+        }
+    }
+    return ferror(f) ? werr() : 0;
+}
+
+int mesh_writer_frame(struct mesh_writer *w, const double *X, int cut)
+{
+    if (w->nframes >= 0 && w->written >= w->nframes)
+        return cm_seterr("internal: more frames written than announced (%d)", w->nframes);
+    fprintf(w->f, "frame %d%s\n", w->written, cut && w->written > 0 ? " cut" : "");
+    size_t n3 = (size_t)w->nv * 3;
+    if (w->raw) {
+#if __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "raw MESH output assumes a little-endian host"
+#endif
+        fwrite(X, sizeof(double), n3, w->f);
+        fputc('\n', w->f);
+    } else {
+        char line[128];
+        for (int i = 0; i < w->nv; i++) {
+            int n = 0;
+            for (int d = 0; d < 3; d++) {
+                n += format_double(line + n, X[3 * i + d]);
+                line[n++] = d < 2 ? ' ' : '\n';
+            }
+            fwrite(line, 1, (size_t)n, w->f);
+        }
+    }
+    w->written++;
+    return ferror(w->f) ? werr() : 0;
+}
+
+int mesh_writer_close(struct mesh_writer *w)
+{
+    if (w->nframes >= 0 && w->written != w->nframes)
+        return cm_seterr("internal: %d frames announced, %d written", w->nframes, w->written);
+    if (fflush(w->f) != 0 || ferror(w->f))
+        return werr();
+    return 0;
+}
+
+int mesh_write(FILE *f, const struct mesh *m, int raw)
+{
+    struct mesh_writer w;
+    if (mesh_writer_open(&w, f, m->nv, m->nf, m->F, m->nframes, raw) < 0)
+        return -1;
+    for (int k = 0; k < m->nframes; k++)
+        if (mesh_writer_frame(&w, mesh_frame(m, k), m->cut ? m->cut[k] : 0) < 0)
+            return -1;
+    return mesh_writer_close(&w);
+}

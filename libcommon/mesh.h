@@ -1,0 +1,97 @@
+/* mesh.h -- the MESH stream: a triangle mesh animation (a static mesh is an
+ * animation with one frame).  Format: man 5 stopmo-mesh.
+ *
+ *   MESH 1              ("MESH 1 raw" for the binary variant)
+ *   vertices 2694
+ *   faces 5032
+ *   frames 335          ("frames ?" when the writer streams)
+ *   f 0 1 2             one line per triangle, 0-based (raw: int32 LE block)
+ *   frame 0             frame header; "frame 17 cut" starts a new clip
+ *   0.125 1.5 -0.25     one line per vertex (raw: 3 float64 LE per vertex)
+ *
+ * Two interfaces:
+ *   whole mesh:      mesh_read() / mesh_write() on struct mesh
+ *   frame by frame:  struct mesh_reader / struct mesh_writer, memory
+ *                    O(one frame + topology), for the streaming tools.
+ * Readers accept both variants.  All functions return < 0 on error with a
+ * message in cm_errmsg() naming the file and line.
+ */
+#ifndef CM_MESH_H
+#define CM_MESH_H
+#include <stdio.h>
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct mesh {
+    int nv;               /* #V vertices per frame */
+    int nf;               /* #F triangles */
+    int nframes;          /* number of frames (>= 1 for a valid mesh) */
+    int *F;               /* #F by 3 vertex indices, row-major */
+    double *V;            /* nframes by #V by 3 positions, frame-major */
+    unsigned char *cut;   /* nframes flags: 1 = this frame starts a new clip */
+};
+
+/* Pointer to the #V by 3 positions of frame k. */
+static inline double *mesh_frame(const struct mesh *m, int k)
+{
+    return m->V + (size_t)k * m->nv * 3;
+}
+
+/* Allocate (zeroed) storage for the given sizes. */
+int mesh_alloc(struct mesh *m, int nv, int nf, int nframes);
+void mesh_free(struct mesh *m);
+
+/* Read a whole stream.  path NULL or "-" reads stdin. */
+int mesh_read(const char *path, struct mesh *m);
+/* Write a whole stream (raw != 0: binary variant). */
+int mesh_write(FILE *f, const struct mesh *m, int raw);
+
+/* Number of clips (1 + number of cut marks after frame 0). */
+int mesh_nclips(const struct mesh *m);
+
+/* ---- frame-by-frame reading ---- */
+struct mesh_reader {
+    const char *name;     /* file name used in messages ("<stdin>") */
+    int nv, nf;
+    int nframes;          /* -1 when the header said "frames ?" */
+    int *F;               /* #F by 3, owned by the reader */
+    int raw;              /* 1 if the stream is the raw variant */
+    int frame;            /* index of the next frame to read */
+    /* private */
+    FILE *f;
+    int own;
+    long line;
+    char *buf;
+    size_t cap, len, pos;
+    int eof;
+};
+
+/* Open and read the header and faces. */
+int mesh_reader_open(struct mesh_reader *r, const char *path);
+/* Read the next frame into X (#V by 3); *cut (may be NULL) gets its cut
+ * mark.  Returns 1 if a frame was read, 0 at the proper end of the stream,
+ * -1 on error (truncated, wrong count, NaN, ...). */
+int mesh_reader_next(struct mesh_reader *r, double *X, int *cut);
+void mesh_reader_close(struct mesh_reader *r);
+
+/* ---- frame-by-frame writing ---- */
+struct mesh_writer {
+    FILE *f;
+    int raw, nv, nf;
+    int nframes;          /* announced count, -1 for "?" */
+    int written;
+};
+
+/* Write the header and faces.  nframes < 0 writes "frames ?". */
+int mesh_writer_open(struct mesh_writer *w, FILE *f, int nv, int nf,
+                     const int *F, int nframes, int raw);
+/* Write one frame (#V by 3 positions); cut != 0 marks a new clip. */
+int mesh_writer_frame(struct mesh_writer *w, const double *X, int cut);
+/* Check the announced frame count was met and flush. */
+int mesh_writer_close(struct mesh_writer *w);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
