@@ -12,7 +12,7 @@ PREFIX   ?= /usr/local
 CC       ?= cc
 CXX      ?= c++
 OPT      ?= -O2
-CPPFLAGS += -Ilibcommon -I/usr/include/suitesparse -I/usr/include/maxflow-3.0 \
+CPPFLAGS += -Ilibcommon -I/usr/include/suitesparse -I/usr/include/maxflow-3.0 -I/usr/include/eigen3 \
             -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -MMD -MP
 CFLAGS   ?= $(OPT) -g
 CFLAGS   += -std=c11 -Wall -Wextra -pthread
