@@ -10,7 +10,7 @@
 const char *progname = "stopmo";
 int verbose = 0;
 
-#define MAX_OUTS 16
+#define MAX_OUTS 256
 static struct { FILE *f; char *tmp; char *path; } outs[MAX_OUTS];
 
 static void remove_temporaries(void)

@@ -1,0 +1,345 @@
+/* seam-homog -- make the part seams of an animation the same in every frame
+ * (StopShop Sec. 3.2, Eq. 4-9).
+ *
+ * Seam vertices (incident faces with different part labels) and their
+ * one-ring are set to their average over all frames; every other vertex
+ * moves by the displacement of least squared-Laplacian energy
+ * tr(D^T L^T M^-1 L D) (L, M: cot Laplacian and mass of the average mesh).
+ * The free block of Q = L^T M^-1 L is factored once (CHOLMOD) and each
+ * frame is solved and written while streaming.  Two passes: the average,
+ * then the solves; a regular file is read twice, anything else (a pipe)
+ * is spooled to a temporary raw MESH file first.
+ */
+#include "bilaplacian.h"
+#include "cm_error.h"
+#include "columns.h"
+#include "geometry.h"
+#include "mesh.h"
+#include "progress.h"
+#include "rng.h"
+#include "seam.h"
+#include "spd.h"
+#include "tool.h"
+#include "topology.h"
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static const char help[] =
+"Usage: seam-homog [options] -l LABELS [file]\n"
+"Deform every frame of a MESH animation minimally (squared-Laplacian energy of\n"
+"the displacement) so that the part seams given by per-triangle LABELS, and\n"
+"their one-ring, are identical in every frame (StopShop Eq. 4-9).\n"
+"\n"
+"Options:\n"
+"  -l, --labels FILE     per-triangle part labels, one integer >= 0 per line\n"
+"  -o, --output FILE     write the animation to FILE (default stdout)\n"
+"      --rings K         rings of neighbours fixed around the seam (default 1)\n"
+"      --mass TYPE       voronoi | barycentric mass matrix (default voronoi)\n"
+"      --energy FILE     write the energy tr(D^T Q D) of each frame, one per line\n"
+"      --raw             write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
+"  -v, --verbose         per-frame energy, factor time and frames/s on stderr\n"
+"  -h, --help            show this help\n"
+"      --version         show the version\n"
+"Debugging:\n"
+"      --check N         after each solve, verify that N random perturbations of\n"
+"                        the free vertices raise the energy (exit 1 if not)\n"
+"      --seed S          seed of the --check perturbations (default 1)\n"
+"      --refactor-each-frame  factor the system again for every frame (baseline)\n"
+"\n"
+"A regular input file is read twice; standard input is spooled to a\n"
+"temporary file in $TMPDIR (default /tmp) first.\n"
+"\n"
+"Example: seam-homog -l labels.txt walk.mesh > homog.mesh\n";
+
+struct options {
+    const char *input, *labels, *output, *energy;
+    int rings, raw, check, refactor;
+    long seed;
+    enum mass_type mass;
+};
+
+static void parse_args(int argc, char **argv, struct options *o)
+{
+    static const struct option lo[] = {
+        {"labels", 1, 0, 'l'}, {"output", 1, 0, 'o'}, {"rings", 1, 0, 'r'},
+        {"mass", 1, 0, 'M'}, {"energy", 1, 0, 'E'}, {"raw", 0, 0, 'R'},
+        {"verbose", 0, 0, 'v'}, {"check", 1, 0, 'C'}, {"seed", 1, 0, 'S'},
+        {"refactor-each-frame", 0, 0, 'F'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'},
+        {0, 0, 0, 0}};
+    memset(o, 0, sizeof *o);
+    o->rings = 1;
+    o->seed = 1;
+    o->mass = MASS_VORONOI;
+    int c;
+    while ((c = getopt_long(argc, argv, "l:o:vh", lo, NULL)) != -1) {
+        switch (c) {
+        case 'l': o->labels = optarg; break;
+        case 'o': o->output = optarg; break;
+        case 'r': o->rings = (int)arg_long(optarg, "--rings"); break;
+        case 'M':
+            if (!strcmp(optarg, "voronoi")) o->mass = MASS_VORONOI;
+            else if (!strcmp(optarg, "barycentric")) o->mass = MASS_BARYCENTRIC;
+            else usage_error("--mass: '%s' is not voronoi or barycentric", optarg);
+            break;
+        case 'E': o->energy = optarg; break;
+        case 'R': o->raw = 1; break;
+        case 'v': verbose++; break;
+        case 'C': o->check = (int)arg_long(optarg, "--check"); break;
+        case 'S': o->seed = arg_long(optarg, "--seed"); break;
+        case 'F': o->refactor = 1; break;
+        case 'h': print_help_and_exit(help);
+        case 'V': print_version_and_exit();
+        default: usage_error("unknown option");
+        }
+    }
+    if (!o->labels)
+        usage_error("missing -l LABELS (per-triangle part labels)");
+    if (optind < argc - 1)
+        usage_error("expected at most one input file");
+    o->input = optind < argc ? argv[optind] : "-";
+    if (!strcmp(o->labels, "-") && !strcmp(o->input, "-"))
+        usage_error("the labels and the animation cannot both come from standard input");
+    if (o->rings < 0 || o->rings > 100)
+        usage_error("--rings must be in 0..100");
+    if (o->check < 0)
+        usage_error("--check must be >= 0");
+    if (o->output && o->energy && !strcmp(o->output, o->energy))
+        usage_error("--output and --energy name the same file");
+}
+
+/* ---- the temporary spool for standard input ---- */
+static char *spool_path;
+
+static void remove_spool(void)
+{
+    if (spool_path) unlink(spool_path);
+}
+
+static int is_regular_file(const char *path)
+{
+    struct stat st;
+    return strcmp(path, "-") && stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* Pass 1: read every frame (validating the whole stream), sum the
+ * positions into S (#V by 3), spool to a raw temporary file when `spool`.
+ * Returns the number of frames. */
+static int pass_average(struct mesh_reader *r, int spool, double *S)
+{
+    size_t n3 = (size_t)r->nv * 3;
+    double *X = malloc((n3 + 1) * sizeof *X);
+    struct mesh_writer w;
+    FILE *sf = NULL;
+    if (spool) {
+        const char *dir = getenv("TMPDIR");
+        if (!dir || !*dir) dir = "/tmp";
+        size_t n = strlen(dir) + 32;
+        spool_path = malloc(n);
+        snprintf(spool_path, n, "%s/seam-homog.XXXXXX", dir);
+        int fd = mkstemp(spool_path);
+        if (fd < 0) {
+            int e = errno;
+            free(spool_path);
+            spool_path = NULL;
+            die("cannot create a temporary file in '%s': %s", dir, strerror(e));
+        }
+        atexit(remove_spool);
+        sf = fdopen(fd, "wb");
+        if (!sf || mesh_writer_open(&w, sf, r->nv, r->nf, r->F, -1, 1) < 0)
+            die("cannot write temporary file '%s': %s", spool_path, cm_errmsg());
+    }
+    memset(S, 0, n3 * sizeof *S);
+    struct progress p;
+    progress_start(&p, "seam-homog: average", r->nframes);
+    int n = 0, cut, rc;
+    while ((rc = mesh_reader_next(r, X, &cut)) > 0) {
+        for (size_t i = 0; i < n3; i++) S[i] += X[i];
+        if (sf && mesh_writer_frame(&w, X, cut) < 0)
+            die("cannot write temporary file '%s': %s", spool_path, cm_errmsg());
+        progress_step(&p, ++n);
+    }
+    progress_end(&p);
+    if (rc < 0)
+        die("%s", cm_errmsg());
+    if (sf && (mesh_writer_close(&w) < 0 || fclose(sf) != 0))
+        die("cannot write temporary file '%s': %s", spool_path, strerror(errno));
+    free(X);
+    return n;
+}
+
+/* The solver of the free block, built from Q and the vertex roles. */
+static struct quad_solver *factor(const cholmod_sparse *Q, const unsigned char *role, int nv)
+{
+    unsigned char *fixed = malloc((size_t)nv + 1);
+    for (int v = 0; v < nv; v++) fixed[v] = role[v] != SEAM_FREE;
+    struct quad_solver *S = quad_solver_new(Q, fixed);
+    free(fixed);
+    if (!S)
+        die("cannot factor the squared Laplacian of the average mesh: %s", cm_errmsg());
+    return S;
+}
+
+/* --check: E(D + eps R) >= E(D) for random R on the free vertices.
+ * Returns the smallest relative increase seen. */
+static double check_minimal(const cholmod_sparse *Q, const double *D, const unsigned char *role,
+                            int nv, double E, double scale, int tries, struct rng *g, int frame)
+{
+    size_t n3 = (size_t)nv * 3;
+    double *P = malloc((n3 + 1) * sizeof *P), worst = INFINITY;
+    for (int t = 0; t < tries; t++) {
+        double eps = scale * pow(10, -(t % 6));      /* 1e-3 .. 1e-8 of the bbox */
+        memcpy(P, D, n3 * sizeof *P);
+        for (int v = 0; v < nv; v++)
+            if (role[v] == SEAM_FREE)
+                for (int d = 0; d < 3; d++) P[3 * v + d] += eps * rng_normal(g);
+        double Ep = quadratic_energy(Q, P, 3);
+        if (!(Ep >= E))
+            die("--check: frame %d: a perturbation of size %g lowers the energy from %.17g to %.17g",
+                frame, eps, E, Ep);
+        double rel = (Ep - E) / (E > 0 ? E : 1);
+        if (rel < worst) worst = rel;
+    }
+    free(P);
+    return worst;
+}
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    struct options o;
+    parse_args(argc, argv, &o);
+
+    /* header, labels, seam: everything checkable before reading frames */
+    struct mesh_reader r;
+    if (mesh_reader_open(&r, o.input) < 0)
+        die("%s", cm_errmsg());
+    int nv = r.nv, nf = r.nf, *P, np;
+    if (labels_read(o.labels, nf, "faces", 0, -1, &P, &np) < 0)
+        die("%s", cm_errmsg());
+    int *F = malloc(((size_t)nf * 3 + 1) * sizeof *F);
+    memcpy(F, r.F, (size_t)nf * 3 * sizeof *F);
+    struct topology t;
+    if (topology_build(F, nf, nv, &t) < 0)
+        die("%s", cm_errmsg());
+    unsigned char *is_seam = malloc((size_t)nv + 1), *role = malloc((size_t)nv + 1);
+    int nseam = seam_vertices(&t, P, is_seam);
+    if (seam_check_manifold(&t, is_seam) < 0)
+        die("%s", cm_errmsg());
+    int nfixed = seam_roles(&t, F, is_seam, o.rings, role);
+    int nfree = 0;
+    for (int v = 0; v < nv; v++) nfree += role[v] == SEAM_FREE;
+    info(1, "%d vertices, %d faces: %d seam vertices, %d fixed (%d ring%s), %d free",
+         nv, nf, nseam, nfixed, o.rings, o.rings == 1 ? "" : "s", nfree);
+    if (nseam == 0)
+        warn("the labels have no seam (one part): the animation passes unchanged");
+
+    /* pass 1: average (and validate every frame before writing anything) */
+    double t0 = now_seconds();
+    int spool = !is_regular_file(o.input);
+    size_t n3 = (size_t)nv * 3;
+    double *A = malloc((n3 + 1) * sizeof *A);
+    int nframes = pass_average(&r, spool, A);
+    mesh_reader_close(&r);
+    for (size_t i = 0; i < n3; i++) A[i] /= nframes;
+    double t1 = now_seconds();
+    info(1, "pass 1: %d frames averaged in %.3f s%s", nframes, t1 - t0,
+         spool ? " (spooled to a temporary file)" : "");
+
+    /* Q = L^T M^-1 L of the average mesh; factor the free block once */
+    cholmod_sparse *Q = bilaplacian(A, F, nv, nf, o.mass);
+    if (!Q)
+        die("%s", cm_errmsg());
+    struct quad_solver *S = factor(Q, role, nv);
+    double t2 = now_seconds();
+    info(1, "Q = L^T M^-1 L: %zu stored nonzeros; built and factored in %.3f s",
+         (size_t)((int *)Q->p)[nv], t2 - t1);
+
+    /* pass 2: solve each frame and stream it out */
+    const char *src = spool ? spool_path : o.input;
+    if (mesh_reader_open(&r, src) < 0)
+        die("%s", cm_errmsg());
+    if (spool) {               /* the spool stays readable through r */
+        unlink(spool_path);
+        free(spool_path);
+        spool_path = NULL;
+    }
+    if (r.nv != nv || r.nf != nf || memcmp(r.F, F, (size_t)nf * 3 * sizeof *F))
+        die("cannot read '%s': the file changed between the two passes", o.input);
+    FILE *out = out_open(o.output);
+    FILE *ef = o.energy ? out_open(o.energy) : NULL;
+    struct mesh_writer w;
+    if (mesh_writer_open(&w, out, nv, nf, F, nframes, want_raw(o.raw)) < 0)
+        die("cannot write output: %s", cm_errmsg());
+    double *Y = malloc((n3 + 1) * sizeof *Y), *D = malloc((n3 + 1) * sizeof *D);
+    double scale = 1e-3 * bbox_diagonal(A, nv);
+    if (!(scale > 0)) scale = 1e-3;
+    struct rng g;
+    rng_seed(&g, (uint64_t)o.seed);
+    double worst = INFINITY, Esum = 0, Emax = 0;
+    struct progress p;
+    progress_start(&p, "seam-homog", nframes);
+    int k = 0, cut, rc;
+    while ((rc = mesh_reader_next(&r, Y, &cut)) > 0) {
+        if (k >= nframes)
+            die("cannot read '%s': the file changed between the two passes", o.input);
+        if (o.refactor) {
+            quad_solver_free(S);
+            S = factor(Q, role, nv);
+        }
+        /* fixed rows of D: average - frame (Eq. 9); kept rows: 0 */
+        for (int v = 0; v < nv; v++)
+            for (int d = 0; d < 3; d++)
+                D[3 * v + d] = role[v] == SEAM_FIXED ? A[3 * v + d] - Y[3 * v + d] : 0;
+        if (quad_solver_solve(S, NULL, D, D, 3) < 0)
+            die("frame %d: %s", k, cm_errmsg());
+        double E = quadratic_energy(Q, D, 3);
+        if (o.check > 0) {
+            double wr = check_minimal(Q, D, role, nv, E, scale, o.check, &g, k);
+            if (wr < worst) worst = wr;
+        }
+        /* Z = Y + D, and exactly the average on the fixed vertices */
+        for (int v = 0; v < nv; v++)
+            for (int d = 0; d < 3; d++)
+                Y[3 * v + d] = role[v] == SEAM_FIXED ? A[3 * v + d] : Y[3 * v + d] + D[3 * v + d];
+        if (mesh_writer_frame(&w, Y, cut) < 0)
+            die("cannot write output: %s", cm_errmsg());
+        if (ef) {
+            char buf[40];
+            snprintf(buf, sizeof buf, "%.17g\n", E);
+            fputs(buf, ef);
+        }
+        info(1, "frame %d: energy %.10g", k, E);
+        Esum += E;
+        if (E > Emax) Emax = E;
+        progress_step(&p, ++k);
+    }
+    progress_end(&p);
+    if (rc < 0)
+        die("%s", cm_errmsg());
+    if (k != nframes)
+        die("cannot read '%s': the file changed between the two passes", o.input);
+    if (mesh_writer_close(&w) < 0)
+        die("cannot write output: %s", cm_errmsg());
+    out_close(out);
+    if (ef) out_close(ef);
+    double t3 = now_seconds();
+    info(1, "energy: mean %.6g, max %.6g", Esum / nframes, Emax);
+    if (o.check > 0)
+        info(1, "--check: %d perturbations per frame, smallest relative energy increase %.3g",
+             o.check, worst);
+    info(1, "pass 2: %d frames solved and written in %.3f s: %.1f frames/s%s", nframes,
+         t3 - t2, nframes / (t3 - t2 > 0 ? t3 - t2 : 1e-9),
+         o.refactor ? " (refactoring every frame)" : "");
+    info(1, "total %.3f s: %.1f frames/s", t3 - t0, nframes / (t3 - t0 > 0 ? t3 - t0 : 1e-9));
+    mesh_reader_close(&r);
+    quad_solver_free(S);
+    cholmod_free_sparse(&Q, cm_cholmod());
+    topology_free(&t);
+    free(A); free(Y); free(D); free(F); free(P); free(is_seam); free(role);
+    return 0;
+}
