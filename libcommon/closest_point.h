@@ -1,0 +1,40 @@
+/* closest_point.h -- closest points on a triangle mesh surface: a CGAL AABB
+ * tree of the triangles, built once and queried many times.
+ *
+ *   struct closest_point_tree *T = closest_point_tree_new(V, nv, F, nf);
+ *   closest_point_query(T, p, c, &face, bary);     one point
+ *   closest_points(T, P, n, C, I, B, D);           many points
+ *   closest_point_tree_free(T);
+ *
+ * The tree copies the triangles, so V and F may be freed after building.
+ */
+#ifndef CM_CLOSEST_POINT_H
+#define CM_CLOSEST_POINT_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct closest_point_tree;
+
+/* V: #V by 3 positions, F: #F by 3 indices (checked: 0 <= index < nv).
+ * Returns NULL (cm_errmsg set) on bad indices or an empty mesh. */
+struct closest_point_tree *closest_point_tree_new(const double *V, int nv, const int *F, int nf);
+void closest_point_tree_free(struct closest_point_tree *T);
+
+/* p: 3 query point.  c: 3 (out) closest point on the surface; *face (out,
+ * may be NULL) the triangle it lies on; bary: 3 (out, may be NULL) its
+ * barycentric coordinates in that triangle (c = sum bary_k V[F[face][k]]).
+ * Returns the distance |p - c|. */
+double closest_point_query(const struct closest_point_tree *T, const double p[3], double c[3],
+                           int *face, double bary[3]);
+
+/* P: n by 3 queries.  Outputs (each may be NULL): C n by 3 closest points,
+ * I n face ids, B n by 3 barycentrics, D n distances.  Runs on up to two
+ * threads. */
+void closest_points(const struct closest_point_tree *T, const double *P, int n, double *C,
+                    int *I, double *B, double *D);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

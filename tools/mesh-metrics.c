@@ -1,0 +1,132 @@
+/* mesh-metrics -- per-frame distances and distortions of an animation
+ * against a reference mesh: symmetric Hausdorff and RMS surface distance
+ * (any connectivity), flipped faces, and, when the connectivity matches,
+ * the relative area and volume distortion of thesis Eq. 3.6.
+ */
+#include "closest_point.h"
+#include "distortion.h"
+#include "geometry.h"
+#include "mesh.h"
+#include "mesh_distance.h"
+#include "tool.h"
+#include "cm_error.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <getopt.h>
+
+static const char help[] =
+"Usage: mesh-metrics [options] -r REFERENCE [ANIM]\n"
+"For every frame of ANIM, one row of metrics against frame 0 of REFERENCE:\n"
+"  frame hausdorff hausdorff_rel rms flipped\n"
+"and when ANIM has the reference's connectivity also\n"
+"  volume_rel area_mean area_sigma vol_mean vol_sigma edge_max\n"
+"(hausdorff_rel: over the reference's bounding-box diagonal; see mesh-metrics(1)).\n"
+"\n"
+"Options:\n"
+"  -r, --reference FILE  the reference mesh (required)\n"
+"      --ref-frame K     use frame K of the reference (default 0)\n"
+"      --no-header       omit the '# frame ...' header line\n"
+"  -o, --output FILE     write to FILE (atomically) instead of stdout\n"
+"  -h, --help            show this help\n"
+"      --version         show the version\n"
+"\n"
+"Example: arap-interp a.mesh b.mesh | mesh-metrics -r a.mesh\n";
+
+struct options { const char *input, *ref, *output; int ref_frame, no_header; };
+
+static void parse_args(int argc, char **argv, struct options *o)
+{
+    static const struct option lo[] = {
+        {"reference", 1, 0, 'r'}, {"ref-frame", 1, 0, 'K'}, {"no-header", 0, 0, 'N'},
+        {"output", 1, 0, 'o'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
+        {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
+    memset(o, 0, sizeof *o);
+    int c;
+    while ((c = getopt_long(argc, argv, "r:o:vh", lo, NULL)) != -1) {
+        switch (c) {
+        case 'r': o->ref = optarg; break;
+        case 'K': o->ref_frame = (int)arg_long(optarg, "--ref-frame"); break;
+        case 'N': o->no_header = 1; break;
+        case 'o': o->output = optarg; break;
+        case 'v': verbose++; break;
+        case 'h': print_help_and_exit(help);
+        case 'V': print_version_and_exit();
+        default: usage_error("unknown option");
+        }
+    }
+    if (!o->ref) usage_error("missing -r REFERENCE");
+    if (o->ref_frame < 0) usage_error("--ref-frame must be >= 0");
+    if (argc - optind > 1) usage_error("expected at most one input");
+    o->input = optind < argc ? argv[optind] : "-";
+}
+
+/* growable text buffer: rows are printed only after the whole input was read */
+struct text { char *s; size_t n, cap; };
+static void text_add(struct text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+#include <stdarg.h>
+static void text_add(struct text *t, const char *fmt, ...)
+{
+    va_list ap;
+    for (;;) {
+        va_start(ap, fmt);
+        int k = vsnprintf(t->s ? t->s + t->n : NULL, t->s ? t->cap - t->n : 0, fmt, ap);
+        va_end(ap);
+        if (t->s && t->n + k < t->cap) { t->n += k; return; }
+        t->cap = 2 * (t->cap + k + 256);
+        t->s = realloc(t->s, t->cap);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    struct options o;
+    parse_args(argc, argv, &o);
+    struct mesh ref;
+    if (mesh_read(o.ref, &ref) < 0) die("%s", cm_errmsg());
+    if (o.ref_frame >= ref.nframes)
+        die("cannot use '%s': --ref-frame %d but it has %d frames", o.ref, o.ref_frame, ref.nframes);
+    const double *R = mesh_frame(&ref, o.ref_frame);
+    struct closest_point_tree *TR = closest_point_tree_new(R, ref.nv, ref.F, ref.nf);
+    if (!TR) die("cannot use '%s': %s", o.ref, cm_errmsg());
+    double diag = bbox_diagonal(R, ref.nv);
+    struct mesh_reader rd;
+    if (mesh_reader_open(&rd, o.input) < 0) die("%s", cm_errmsg());
+    int same = rd.nv == ref.nv && rd.nf == ref.nf &&
+               !memcmp(rd.F, ref.F, (size_t)ref.nf * 3 * sizeof(int));
+    double *X = malloc((size_t)rd.nv * 3 * sizeof *X + 1);
+    struct text out = {0};
+    if (!o.no_header)
+        text_add(&out, "# frame hausdorff hausdorff_rel rms flipped%s\n",
+                 same ? " volume_rel area_mean area_sigma vol_mean vol_sigma edge_max" : "");
+    int rc;
+    while ((rc = mesh_reader_next(&rd, X, NULL)) == 1) {
+        int k = rd.frame - 1;
+        struct closest_point_tree *TX = closest_point_tree_new(X, rd.nv, rd.F, rd.nf);
+        if (!TX) die("%s: frame %d: %s", rd.name, k, cm_errmsg());
+        double h, rms;
+        if (symmetric_distance(X, rd.nv, rd.F, rd.nf, TX, R, ref.nv, ref.F, ref.nf, TR, &h, &rms) < 0)
+            die("%s", cm_errmsg());
+        int flipped = flipped_faces(X, rd.F, rd.nf, R, ref.F, TR);
+        closest_point_tree_free(TX);
+        text_add(&out, "%d %.9g %.9g %.9g %d", k, h, diag > 0 ? h / diag : 0, rms, flipped);
+        if (same) {
+            struct distortion d;
+            mesh_distortion(R, X, ref.F, ref.nv, ref.nf, &d);
+            text_add(&out, " %.9g %.9g %.9g %.9g %.9g %.9g", d.volume_rel, d.area_mean,
+                     d.area_sigma, d.vol_mean, d.vol_sigma, d.edge_max);
+        }
+        text_add(&out, "\n");
+    }
+    if (rc < 0) die("%s", cm_errmsg());
+    mesh_reader_close(&rd);
+    FILE *f = out_open(o.output);
+    if (out.n) fwrite(out.s, 1, out.n, f);
+    out_close(f);
+    free(out.s);
+    free(X);
+    closest_point_tree_free(TR);
+    mesh_free(&ref);
+    return 0;
+}
