@@ -26,6 +26,8 @@ int columns_read(const char *path, int want_cols, int want_rows, const char *wha
         if (n < 0)
             break;
         lineno++;
+        while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
+            line[--n] = 0;              /* messages stay on one line */
         char *s = line;
         while (*s == ' ' || *s == '\t' || *s == '\r') s++;
         if (*s == '#' || *s == '\n' || *s == 0)
@@ -48,7 +50,9 @@ int columns_read(const char *path, int want_cols, int want_rows, const char *wha
             }
             if (k == rowcap) {
                 rowcap = rowcap ? 2 * rowcap : 8;
-                row = realloc(row, rowcap * sizeof *row);
+                double *nr = realloc(row, rowcap * sizeof *row);
+                if (!nr) { cm_seterr("cannot read '%s': out of memory", name); goto fail; }
+                row = nr;
             }
             row[k++] = v;
             p = q;
@@ -107,6 +111,10 @@ int labels_read(const char *path, int want_rows, const char *what, int lo, int h
         return -1;
     const char *name = (!path || !strcmp(path, "-")) ? "<stdin>" : path;
     int *l = malloc(((size_t)c.rows + 1) * sizeof *l);
+    if (!l) {
+        columns_free(&c);
+        return cm_seterr("cannot read '%s': out of memory", name);
+    }
     for (int i = 0; i < c.rows; i++) {
         double v = c.x[i];
         if (v != floor(v) || fabs(v) > 2e9) {

@@ -1,6 +1,7 @@
 /* numparse.c -- see numparse.h */
 #include "numparse.h"
 #include <errno.h>
+#include <float.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -85,9 +86,10 @@ const char *parse_long(const char *s, long *out)
         return NULL;
     long v = 0;
     while (*p >= '0' && *p <= '9') {
-        if (v > (LONG_MAX - 9) / 10)
+        int d = *p++ - '0';
+        if (v > (LONG_MAX - d) / 10)
             return NULL;
-        v = v * 10 + (*p++ - '0');
+        v = v * 10 + d;
     }
     *out = neg ? -v : v;
     return p;
@@ -100,7 +102,11 @@ int format_double(char *buf, double x)
         if (signbit(x)) { buf[0] = '-'; buf[1] = '0'; buf[2] = 0; return 2; }
         return 1;
     }
-    for (int prec = 15; prec <= 17; prec++) {
+    /* for normal doubles a shorter round-trip decimal is also what %.15g
+     * prints (it is the nearest 15-digit decimal); subnormals have fewer
+     * significant bits, so search them from 1 digit */
+    int first = fabs(x) < DBL_MIN ? 1 : 15;
+    for (int prec = first; prec <= 17; prec++) {
         int n = snprintf(buf, 32, "%.*g", prec, x);
         double y;
         if (prec == 17 || (parse_double(buf, &y) && y == x))

@@ -16,7 +16,10 @@
  * independent problem (e.g. x, y, z coordinates).
  *
  * A matrix that is not positive definite is reported (cm_errmsg names the
- * failing column), never silently solved.
+ * failing column), never silently solved: a negative or zero pivot (also in
+ * CHOLMOD's simplicial LDL' factorization, which would accept indefinite
+ * matrices), or a numerically singular matrix (CHOLMOD's rcond estimate
+ * below n * DBL_EPSILON, e.g. a Laplacian with nothing fixed).
  */
 #ifndef CM_SPD_H
 #define CM_SPD_H
