@@ -1,0 +1,206 @@
+/* chainlabel.c -- exact DP, alpha-expansion and swap on chain labelings.
+ * See chainlabel.h for the energy. */
+#include "chainlabel.h"
+#include "graphcut.h"
+#include "cm_error.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static inline int linked(const struct chain *p, int f)
+{
+    if (f >= p->n - 1) return 0;
+    return p->link ? p->link[f] != 0 : 1;
+}
+
+/* pair cost of labels (a, b) on pair (f, f+1) */
+static inline double pair_cost(const struct chain *p, int f, int a, int b)
+{
+    if (!p->T && !p->H && !p->c) return 0;
+    double v = 0;
+    if (p->c) v += p->c[f];
+    if (p->T) v += p->T[(size_t)a * p->d + b];
+    if (p->H) v += p->H[(size_t)f * p->d + b] - p->H[(size_t)f * p->d + a];
+    return v;
+}
+
+double chain_energy(const struct chain *p, const int *l, double *unary, double *pair)
+{
+    double eu = 0, ep = 0;
+    for (int f = 0; f < p->n; f++) {
+        eu += p->U[(size_t)f * p->d + l[f]];
+        if (linked(p, f)) ep += pair_cost(p, f, l[f], l[f + 1]);
+    }
+    if (unary) *unary = eu;
+    if (pair) *pair = ep;
+    return eu + ep;
+}
+
+double chain_dp(const struct chain *p, int *l)
+{
+    int n = p->n, d = p->d;
+    double *V = malloc(sizeof(double) * d);      /* best energy ending in label a */
+    double *h = malloc(sizeof(double) * d);
+    double *Vn = malloc(sizeof(double) * d);
+    int *back = malloc(sizeof(int) * (size_t)n * d);
+    if (!V || !h || !Vn || !back) {
+        free(V); free(h); free(Vn); free(back);
+        cm_seterr("chain_dp: out of memory (%d frames, %d labels)", n, d);
+        return NAN;
+    }
+    double total = 0;
+    int start = 0;
+    while (start < n) {
+        int end = start;                       /* clip is start..end */
+        while (linked(p, end)) end++;
+        for (int a = 0; a < d; a++) V[a] = p->U[(size_t)start * d + a];
+        for (int f = start; f < end; f++) {
+            /* Vn[b] = U[f+1][b] + c + H[f][b] + min_a (V[a] - H[f][a] + T[a][b]) */
+            const double *Hf = p->H ? p->H + (size_t)f * d : NULL;
+            for (int a = 0; a < d; a++) h[a] = V[a] - (Hf ? Hf[a] : 0);
+            double cf = p->c ? p->c[f] : 0;
+            int *bk = back + (size_t)(f + 1) * d;
+            if (p->T) {
+                for (int b = 0; b < d; b++) Vn[b] = INFINITY;
+                for (int b = 0; b < d; b++) bk[b] = 0;
+                /* loop order a outer for a contiguous T row (T symmetric) */
+                for (int a = 0; a < d; a++) {
+                    const double *Ta = p->T + (size_t)a * d;
+                    double ha = h[a];
+                    for (int b = 0; b < d; b++) {
+                        double v = ha + Ta[b];
+                        if (v < Vn[b]) { Vn[b] = v; bk[b] = a; }
+                    }
+                }
+            } else {
+                int am = 0;
+                for (int a = 1; a < d; a++) if (h[a] < h[am]) am = a;
+                for (int b = 0; b < d; b++) { Vn[b] = h[am]; bk[b] = am; }
+            }
+            const double *Un = p->U + (size_t)(f + 1) * d;
+            for (int b = 0; b < d; b++) V[b] = Vn[b] + Un[b] + cf + (Hf ? Hf[b] : 0);
+        }
+        int best = 0;
+        for (int a = 1; a < d; a++) if (V[a] < V[best]) best = a;
+        total += V[best];
+        l[end] = best;
+        for (int f = end; f > start; f--) l[f - 1] = back[(size_t)f * d + l[f]];
+        start = end + 1;
+    }
+    free(V); free(h); free(Vn); free(back);
+    return total;
+}
+
+/* Add the binary term E(x_i, x_j) with table (A, B, C, D) = E00, E01, E10,
+ * E11 (x = 1: sink side) to g; requires B + C >= A + D. */
+static void add_pair(struct graphcut *g, int i, int j, double A, double B, double C, double D)
+{
+    /* E = A + (C-A) x_i + (D-C) x_j + (B+C-A-D) (1-x_i) x_j */
+    double ui = C - A, uj = D - C, w = B + C - A - D;
+    if (ui > 0) graphcut_add_tweights(g, i, ui, 0); else graphcut_add_tweights(g, i, 0, -ui);
+    if (uj > 0) graphcut_add_tweights(g, j, uj, 0); else graphcut_add_tweights(g, j, 0, -uj);
+    if (w < 0) w = 0;   /* rounding only: callers guarantee B + C >= A + D */
+    graphcut_add_edge(g, i, j, w, 0);
+}
+
+static void add_unary(struct graphcut *g, int i, double e0, double e1)
+{
+    /* node on sink side (x = 1) pays cap_source, source side pays cap_sink */
+    graphcut_add_tweights(g, i, e1, e0);
+}
+
+double chain_expansion(const struct chain *p, int *l, int max_sweeps, long *ntrunc)
+{
+    int n = p->n, d = p->d;
+    if (max_sweeps <= 0) max_sweeps = 20;
+    long nt = 0;
+    double E = chain_energy(p, l, NULL, NULL);
+    int *nl = malloc(sizeof(int) * n);
+    if (!nl) { cm_seterr("chain_expansion: out of memory"); return NAN; }
+    for (int sweep = 0; sweep < max_sweeps; sweep++) {
+        int improved = 0;
+        for (int alpha = 0; alpha < d; alpha++) {
+            struct graphcut *g = graphcut_new(n, n);
+            if (!g) { free(nl); cm_seterr("chain_expansion: out of memory"); return NAN; }
+            for (int f = 0; f < n; f++)
+                add_unary(g, f, p->U[(size_t)f * d + l[f]], p->U[(size_t)f * d + alpha]);
+            for (int f = 0; f + 1 < n; f++) {
+                if (!linked(p, f)) continue;
+                int a = l[f], b = l[f + 1];
+                double A = pair_cost(p, f, a, b), B = pair_cost(p, f, a, alpha);
+                double C = pair_cost(p, f, alpha, b), D = pair_cost(p, f, alpha, alpha);
+                double excess = A + D - B - C;
+                if (excess > 0) {
+                    /* truncation: raise E01 and E10 (upper bound, exact at x = 0) */
+                    B += 0.5 * excess; C += 0.5 * excess;
+                    nt++;
+                }
+                add_pair(g, f, f + 1, A, B, C, D);
+            }
+            graphcut_maxflow(g);
+            for (int f = 0; f < n; f++) nl[f] = graphcut_side(g, f) ? alpha : l[f];
+            graphcut_free(g);
+            double En = chain_energy(p, nl, NULL, NULL);
+            if (En < E - 1e-12 * fabs(E)) {
+                memcpy(l, nl, sizeof(int) * n);
+                E = En;
+                improved = 1;
+            }
+        }
+        if (!improved) break;
+    }
+    free(nl);
+    if (ntrunc) *ntrunc = nt;
+    return E;
+}
+
+double chain_swap(const struct chain *p, int *l, int max_sweeps)
+{
+    int n = p->n, d = p->d;
+    if (max_sweeps <= 0) max_sweeps = 20;
+    double E = chain_energy(p, l, NULL, NULL);
+    int *nl = malloc(sizeof(int) * n), *idx = malloc(sizeof(int) * n);
+    if (!nl || !idx) { free(nl); free(idx); cm_seterr("chain_swap: out of memory"); return NAN; }
+    for (int sweep = 0; sweep < max_sweeps; sweep++) {
+        int improved = 0;
+        for (int al = 0; al < d; al++)
+            for (int be = al + 1; be < d; be++) {
+                int k = 0;
+                for (int f = 0; f < n; f++) idx[f] = (l[f] == al || l[f] == be) ? k++ : -1;
+                if (k == 0) continue;
+                struct graphcut *g = graphcut_new(k, k);
+                if (!g) { free(nl); free(idx); cm_seterr("chain_swap: out of memory"); return NAN; }
+                /* x = 0: alpha, x = 1: beta */
+                for (int f = 0; f < n; f++) {
+                    if (idx[f] < 0) continue;
+                    double e0 = p->U[(size_t)f * d + al], e1 = p->U[(size_t)f * d + be];
+                    if (f > 0 && linked(p, f - 1) && idx[f - 1] < 0) {
+                        e0 += pair_cost(p, f - 1, l[f - 1], al);
+                        e1 += pair_cost(p, f - 1, l[f - 1], be);
+                    }
+                    if (linked(p, f) && idx[f + 1] < 0) {
+                        e0 += pair_cost(p, f, al, l[f + 1]);
+                        e1 += pair_cost(p, f, be, l[f + 1]);
+                    }
+                    add_unary(g, idx[f], e0, e1);
+                    if (linked(p, f) && idx[f + 1] >= 0)
+                        add_pair(g, idx[f], idx[f + 1], pair_cost(p, f, al, al), pair_cost(p, f, al, be),
+                                 pair_cost(p, f, be, al), pair_cost(p, f, be, be));
+                }
+                graphcut_maxflow(g);
+                memcpy(nl, l, sizeof(int) * n);
+                for (int f = 0; f < n; f++)
+                    if (idx[f] >= 0) nl[f] = graphcut_side(g, idx[f]) ? be : al;
+                graphcut_free(g);
+                double En = chain_energy(p, nl, NULL, NULL);
+                if (En < E - 1e-12 * fabs(E)) {
+                    memcpy(l, nl, sizeof(int) * n);
+                    E = En;
+                    improved = 1;
+                }
+            }
+        if (!improved) break;
+    }
+    free(nl); free(idx);
+    return E;
+}

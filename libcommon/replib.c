@@ -1,0 +1,598 @@
+/* replib.c -- replacement library by block coordinate descent (see replib.h). */
+#include "replib.h"
+#include "chainlabel.h"
+#include "cm_error.h"
+#include "rng.h"
+#include <cblas.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+/* LAPACK (column-major Fortran interface, from OpenBLAS/liblapack) */
+extern void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+
+static double wall(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+#define GRAM_AUTO_MAX 12000   /* N above this: K would exceed ~1.1 GB; use direct */
+
+int replib_prepare(struct replib_data *D)
+{
+    int n = D->n, nv = D->nv;
+    D->link = NULL; D->mean = D->Z = D->K = D->zz = D->dd = NULL;
+    double t0 = wall();
+    if (n < 1 || nv < 1) return cm_seterr("replib: empty animation (%d frames, %d vertices)", n, nv);
+    if (D->nfix < 0 || (D->nfix > 0 && !D->Rfix)) return cm_seterr("replib: bad fixed pieces");
+    int m3 = D->m3 = 3 * nv, N = D->N = n + D->nfix;
+    for (size_t k = 0; k < (size_t)n * m3; k++)
+        if (!isfinite(D->X[k]))
+            return cm_seterr("frame %zu: vertex %zu: coordinate is not finite", k / m3, (k % m3) / 3);
+    for (size_t k = 0; k < (size_t)D->nfix * m3; k++)
+        if (!isfinite(D->Rfix[k]))
+            return cm_seterr("fixed piece %zu: vertex %zu: coordinate is not finite", k / m3, (k % m3) / 3);
+    if (D->w) {
+        double s = 0;
+        for (int i = 0; i < nv; i++) {
+            if (!isfinite(D->w[i]) || D->w[i] < 0)
+                return cm_seterr("weight of vertex %d is %g: weights must be finite and >= 0", i, D->w[i]);
+            s += D->w[i];
+        }
+        if (!(s > 0)) return cm_seterr("all weights are zero");
+    }
+    D->link = calloc(n, 1);
+    D->mean = calloc(m3, sizeof(double));
+    D->zz = calloc(N, sizeof(double));
+    D->dd = calloc(n, sizeof(double));
+    D->Z = malloc(sizeof(double) * (size_t)N * m3);
+    if (!D->link || !D->mean || !D->zz || !D->dd || !D->Z) {
+        replib_data_free(D);
+        return cm_seterr("replib: out of memory (%d frames x %d vertices)", n, nv);
+    }
+    for (int f = 0; f + 1 < n; f++) D->link[f] = !(D->cut && D->cut[f + 1]);
+    for (int f = 0; f < n; f++)
+        for (int k = 0; k < m3; k++) D->mean[k] += D->X[(size_t)f * m3 + k];
+    for (int k = 0; k < m3; k++) D->mean[k] /= n;
+    for (int g = 0; g < N; g++) {
+        const double *x = g < n ? D->X + (size_t)g * m3 : D->Rfix + (size_t)(g - n) * m3;
+        double *z = D->Z + (size_t)g * m3;
+        for (int i = 0; i < nv; i++) {
+            double s = D->w ? sqrt(D->w[i]) : 1;
+            for (int c = 0; c < 3; c++) z[3 * i + c] = s * (x[3 * i + c] - D->mean[3 * i + c]);
+        }
+    }
+    int gram = D->gram;
+    if (gram < 0) gram = N <= GRAM_AUTO_MAX;
+    D->gram = gram;
+    if (gram) {
+        D->K = malloc(sizeof(double) * (size_t)N * N);
+        if (!D->K) {
+            replib_data_free(D);
+            return cm_seterr("replib: out of memory for the %d x %d Gram matrix", N, N);
+        }
+        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, N, m3, 1.0, D->Z, m3, 0.0, D->K, N);
+        for (int i = 0; i < N; i++)
+            for (int j = 0; j < i; j++) D->K[(size_t)i * N + j] = D->K[(size_t)j * N + i];
+        for (int g = 0; g < N; g++) D->zz[g] = D->K[(size_t)g * N + g];
+        for (int f = 0; f + 1 < n; f++)
+            if (D->link[f])
+                D->dd[f] = D->K[(size_t)f * N + f] + D->K[(size_t)(f + 1) * N + f + 1] -
+                           2 * D->K[(size_t)f * N + f + 1];
+        free(D->Z);
+        D->Z = NULL;
+    } else {
+        for (int g = 0; g < N; g++) {
+            const double *z = D->Z + (size_t)g * m3;
+            D->zz[g] = cblas_ddot(m3, z, 1, z, 1);
+        }
+        for (int f = 0; f + 1 < n; f++) {
+            if (!D->link[f]) continue;
+            const double *a = D->Z + (size_t)f * m3, *b = a + m3;
+            double s = 0;
+            for (int k = 0; k < m3; k++) s += (b[k] - a[k]) * (b[k] - a[k]);
+            D->dd[f] = s;
+        }
+    }
+    D->prep_seconds = wall() - t0;
+    return 0;
+}
+
+void replib_data_free(struct replib_data *D)
+{
+    free(D->link); free(D->mean); free(D->Z); free(D->K); free(D->zz); free(D->dd);
+    D->link = NULL; D->mean = D->Z = D->K = D->zz = D->dd = NULL;
+}
+
+/* ---- the library: every piece is a row copy (src >= 0) or solved ---- */
+
+struct lstate {
+    int d, nfree;
+    int *src;       /* d: source row in [0, N) or -1 when solved */
+    int *fidx;      /* nfree solved pieces */
+    double *Uf;     /* nfree by nfree: A_FF = Uf^T Uf (upper, row-major) */
+    int nnz, cap;   /* right-hand side triplets: row = position in fidx */
+    int *ri, *ci;
+    double *v;
+};
+
+static void lstate_free(struct lstate *s)
+{
+    free(s->src); free(s->fidx); free(s->Uf); free(s->ri); free(s->ci); free(s->v);
+    memset(s, 0, sizeof *s);
+}
+
+static int lstate_init(struct lstate *s, int d)
+{
+    memset(s, 0, sizeof *s);
+    s->d = d;
+    s->src = malloc(sizeof(int) * d);
+    s->fidx = malloc(sizeof(int) * d);
+    if (!s->src || !s->fidx) { lstate_free(s); return cm_seterr("replib: out of memory"); }
+    return 0;
+}
+
+static int push(struct lstate *s, int r, int c, double v)
+{
+    if (s->nnz == s->cap) {
+        int nc = s->cap ? 2 * s->cap : 1024;
+        int *ri = realloc(s->ri, sizeof(int) * nc), *ci;
+        if (!ri) return -1;
+        s->ri = ri;
+        if (!(ci = realloc(s->ci, sizeof(int) * nc))) return -1;
+        s->ci = ci;
+        double *vv = realloc(s->v, sizeof(double) * nc);
+        if (!vv) return -1;
+        s->v = vv;
+        s->cap = nc;
+    }
+    s->ri[s->nnz] = r; s->ci[s->nnz] = c; s->v[s->nnz] = v;
+    s->nnz++;
+    return 0;
+}
+
+/* Library step: build A and the sparse B for labels l.  cost (n) ranks
+ * frames for re-seeding unused pieces (worst first).  *reseeded gets the
+ * count. */
+static int library_step(const struct replib_data *D, int d, double mu, const int *l,
+                        const double *cost, struct lstate *s, int *reseeded)
+{
+    int n = D->n, nfix = D->nfix;
+    s->nfree = 0; s->nnz = 0;
+    free(s->Uf); s->Uf = NULL;
+    int *count = calloc(d, sizeof(int)), *fpos = malloc(sizeof(int) * d);
+    double *A = calloc((size_t)d * d, sizeof(double));
+    int *order = NULL;
+    if (!count || !fpos || !A) goto oom;
+    for (int f = 0; f < n; f++) { count[l[f]]++; A[(size_t)l[f] * d + l[f]] += 1; }
+    for (int f = 0; f + 1 < n; f++) {
+        if (!D->link[f] || mu == 0) continue;
+        int a = l[f], b = l[f + 1];
+        if (a == b) continue;
+        A[(size_t)a * d + a] += mu; A[(size_t)b * d + b] += mu;
+        A[(size_t)a * d + b] -= mu; A[(size_t)b * d + a] -= mu;
+    }
+    int nres = 0;
+    for (int a = 0; a < d; a++) {
+        fpos[a] = -1;
+        if (a < nfix) s->src[a] = n + a;
+        else if (count[a] == 0) { s->src[a] = -2; nres++; }
+        else { s->src[a] = -1; fpos[a] = s->nfree; s->fidx[s->nfree++] = a; }
+    }
+    if (nres) {
+        /* re-seed unused pieces with the worst-fit frames (distinct) */
+        order = malloc(sizeof(int) * n);
+        if (!order) goto oom;
+        for (int f = 0; f < n; f++) order[f] = f;
+        for (int k = 0, a = 0; k < nres; k++) {
+            /* partial selection sort: k-th worst */
+            int best = k;
+            for (int j = k + 1; j < n; j++)
+                if (cost[order[j]] > cost[order[best]]) best = j;
+            int t = order[k]; order[k] = order[best]; order[best] = t;
+            while (s->src[a] != -2) a++;
+            s->src[a] = order[k];
+        }
+    }
+    *reseeded = nres;
+    int nf = s->nfree;
+    if (nf > 0) {
+        s->Uf = malloc(sizeof(double) * (size_t)nf * nf);
+        if (!s->Uf) goto oom;
+        for (int p = 0; p < nf; p++)
+            for (int q = 0; q < nf; q++)
+                s->Uf[(size_t)p * nf + q] = A[(size_t)s->fidx[p] * d + s->fidx[q]];
+        int info = 0;
+        dpotrf_("L", &nf, s->Uf, &nf, &info);   /* column-major lower = row-major upper */
+        if (info != 0) {
+            free(count); free(fpos); free(A); free(order);
+            return cm_seterr("replib: library system not positive definite (info %d)", info);
+        }
+        /* B = S + mu S G G^T (free rows), minus A_{F,copies} for row copies */
+        for (int f = 0; f < n; f++)
+            if (fpos[l[f]] >= 0 && push(s, fpos[l[f]], f, 1) < 0) goto oom;
+        if (mu != 0)
+            for (int f = 0; f + 1 < n; f++) {
+                if (!D->link[f]) continue;
+                int a = l[f], b = l[f + 1];
+                if (a == b) continue;
+                if (fpos[b] >= 0 && (push(s, fpos[b], f + 1, mu) < 0 || push(s, fpos[b], f, -mu) < 0)) goto oom;
+                if (fpos[a] >= 0 && (push(s, fpos[a], f + 1, -mu) < 0 || push(s, fpos[a], f, mu) < 0)) goto oom;
+            }
+        for (int p = 0; p < nf; p++)
+            for (int j = 0; j < d; j++) {
+                double v = A[(size_t)s->fidx[p] * d + j];
+                if (s->src[j] >= 0 && v != 0 && push(s, p, s->src[j], -v) < 0) goto oom;
+            }
+    }
+    free(count); free(fpos); free(A); free(order);
+    return 0;
+oom:
+    free(count); free(fpos); free(A); free(order);
+    return cm_seterr("replib: out of memory in the library step");
+}
+
+/* out (d by cols) = library applied to rows: row g < n1 is Y1[g], else
+ * Y2[g - n1] (both with row length cols). */
+static int lstate_apply(const struct lstate *s, const double *Y1, int n1, const double *Y2,
+                        int cols, double *out)
+{
+    int nf = s->nfree;
+#define ROW(g) ((g) < n1 ? Y1 + (size_t)(g) * cols : Y2 + (size_t)((g) - n1) * cols)
+    for (int a = 0; a < s->d; a++)
+        if (s->src[a] >= 0) memcpy(out + (size_t)a * cols, ROW(s->src[a]), sizeof(double) * cols);
+    if (nf == 0) return 0;
+    double *tmp = calloc((size_t)nf * cols, sizeof(double));
+    if (!tmp) return cm_seterr("replib: out of memory");
+    for (int k = 0; k < s->nnz; k++)
+        cblas_daxpy(cols, s->v[k], ROW(s->ci[k]), 1, tmp + (size_t)s->ri[k] * cols, 1);
+#undef ROW
+    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, cols, 1.0,
+                s->Uf, nf, tmp, cols);
+    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, cols, 1.0,
+                s->Uf, nf, tmp, cols);
+    for (int p = 0; p < nf; p++)
+        memcpy(out + (size_t)s->fidx[p] * cols, tmp + (size_t)p * cols, sizeof(double) * cols);
+    free(tmp);
+    return 0;
+}
+
+/* Coefficients C (d by N): r_a = sum_g C_ag z_g. */
+static int lstate_coeffs(const struct lstate *s, int N, double *C)
+{
+    int d = s->d, nf = s->nfree;
+    memset(C, 0, sizeof(double) * (size_t)d * N);
+    for (int a = 0; a < d; a++)
+        if (s->src[a] >= 0) C[(size_t)a * N + s->src[a]] = 1;
+    if (nf == 0) return 0;
+    double *tmp = calloc((size_t)nf * N, sizeof(double));
+    if (!tmp) return cm_seterr("replib: out of memory");
+    for (int k = 0; k < s->nnz; k++) tmp[(size_t)s->ri[k] * N + s->ci[k]] += s->v[k];
+    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, N, 1.0,
+                s->Uf, nf, tmp, N);
+    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, N, 1.0,
+                s->Uf, nf, tmp, N);
+    for (int p = 0; p < nf; p++)
+        memcpy(C + (size_t)s->fidx[p] * N, tmp + (size_t)p * N, sizeof(double) * N);
+    free(tmp);
+    return 0;
+}
+
+/* ---- costs: P (N by d, z_g . r_a) and Q (d by d, r_a . r_b) ---- */
+
+struct work {
+    int d;
+    double *P, *Q, *C, *Rw;     /* P: N by d; C: d by N (Gram); Rw: d by 3#V (direct) */
+    double *U, *T, *H, *c;      /* chain terms */
+    struct chain ch;
+};
+
+static void work_free(struct work *w)
+{
+    free(w->P); free(w->Q); free(w->C); free(w->Rw); free(w->U); free(w->T); free(w->H); free(w->c);
+    memset(w, 0, sizeof *w);
+}
+
+static int work_init(struct work *w, const struct replib_data *D, int d)
+{
+    memset(w, 0, sizeof *w);
+    w->d = d;
+    size_t N = D->N, n = D->n;
+    w->P = malloc(sizeof(double) * N * d);
+    w->Q = malloc(sizeof(double) * (size_t)d * d);
+    w->U = malloc(sizeof(double) * n * d);
+    w->T = malloc(sizeof(double) * (size_t)d * d);
+    w->H = calloc(n * d, sizeof(double));
+    w->c = calloc(n, sizeof(double));
+    if (D->K) w->C = malloc(sizeof(double) * (size_t)d * N);
+    else w->Rw = malloc(sizeof(double) * (size_t)d * D->m3);
+    if (!w->P || !w->Q || !w->U || !w->T || !w->H || !w->c || !(D->K ? (void *)w->C : (void *)w->Rw)) {
+        work_free(w);
+        return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, d);
+    }
+    return 0;
+}
+
+static int compute_costs(const struct replib_data *D, const struct lstate *s, double mu, struct work *w)
+{
+    int N = D->N, n = D->n, d = w->d, m3 = D->m3;
+    if (D->K) {
+        if (lstate_coeffs(s, N, w->C) < 0) return -1;
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, N, d, N, 1.0, D->K, N, w->C, N, 0.0, w->P, d);
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, d, d, N, 1.0, w->C, N, w->P, d, 0.0, w->Q, d);
+    } else {
+        if (lstate_apply(s, D->Z, N, NULL, m3, w->Rw) < 0) return -1;
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, m3, 1.0, D->Z, m3, w->Rw, m3, 0.0, w->P, d);
+        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, m3, 1.0, w->Rw, m3, 0.0, w->Q, d);
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+    }
+    /* symmetrize Q (the Gram product is symmetric only up to rounding) */
+    for (int a = 0; a < d; a++)
+        for (int b = 0; b < a; b++) {
+            double v = 0.5 * (w->Q[(size_t)a * d + b] + w->Q[(size_t)b * d + a]);
+            w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a] = v;
+        }
+    const double *P = w->P, *Q = w->Q;
+    for (int f = 0; f < n; f++)
+        for (int a = 0; a < d; a++)
+            w->U[(size_t)f * d + a] = D->zz[f] + Q[(size_t)a * d + a] - 2 * P[(size_t)f * d + a];
+    w->ch.n = n; w->ch.d = d; w->ch.U = w->U; w->ch.link = D->link;
+    if (mu > 0) {
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < d; b++)
+                w->T[(size_t)a * d + b] = a == b ? 0 :
+                    mu * (Q[(size_t)a * d + a] + Q[(size_t)b * d + b] - 2 * Q[(size_t)a * d + b]);
+        for (int f = 0; f + 1 < n; f++) {
+            double *h = w->H + (size_t)f * d;
+            if (!D->link[f]) { memset(h, 0, sizeof(double) * d); w->c[f] = 0; continue; }
+            for (int a = 0; a < d; a++)
+                h[a] = -2 * mu * (P[(size_t)(f + 1) * d + a] - P[(size_t)f * d + a]);
+            w->c[f] = mu * D->dd[f];
+        }
+        w->ch.T = w->T; w->ch.H = w->H; w->ch.c = w->c;
+    } else {
+        w->ch.T = NULL; w->ch.H = NULL; w->ch.c = NULL;
+    }
+    return 0;
+}
+
+/* label step on the chain in w; l in/out (used as the start for moves) */
+static double label_step(struct work *w, enum replib_method m, int *l, int have_start)
+{
+    if (m == REPLIB_DP) return chain_dp(&w->ch, l);
+    if (!have_start) {
+        int n = w->ch.n, d = w->ch.d;
+        for (int f = 0; f < n; f++) {
+            int b = 0;
+            for (int a = 1; a < d; a++) if (w->U[(size_t)f * d + a] < w->U[(size_t)f * d + b]) b = a;
+            l[f] = b;
+        }
+    }
+    if (m == REPLIB_EXPANSION) return chain_expansion(&w->ch, l, 0, NULL);
+    return chain_swap(&w->ch, l, 0);
+}
+
+/* k-means++ seeding on the Gram matrix (fixed pieces count as centers);
+ * Forgy (distinct random frames) in the direct back end. */
+static int seed_pieces(const struct replib_data *D, int d, struct rng *r, struct lstate *s)
+{
+    int n = D->n, N = D->N, nfix = D->nfix;
+    s->nfree = 0; s->nnz = 0;
+    double *mind = malloc(sizeof(double) * n);
+    unsigned char *used = calloc(n, 1);
+    if (!mind || !used) { free(mind); free(used); return cm_seterr("replib: out of memory"); }
+    for (int f = 0; f < n; f++) mind[f] = INFINITY;
+    const double *K = D->K;
+#define DIST(f, g) (D->zz[f] + D->zz[g] - 2 * K[(size_t)(f) * N + (g)])
+    for (int a = 0; a < d; a++) {
+        int g;
+        if (a < nfix) g = n + a;
+        else {
+            double tot = 0;
+            if (K && a > 0)
+                for (int f = 0; f < n; f++) if (!used[f]) tot += mind[f] > 0 ? mind[f] : 0;
+            if (K && a > 0 && tot > 0) {
+                double u = rng_uniform(r) * tot;
+                g = -1;
+                for (int f = 0; f < n; f++) {
+                    if (used[f]) continue;
+                    double m = mind[f] > 0 ? mind[f] : 0;
+                    if (m <= 0) continue;
+                    g = f;
+                    if (u < m) break;
+                    u -= m;
+                }
+            } else {
+                int left = 0;
+                for (int f = 0; f < n; f++) left += !used[f];
+                int k = rng_int(r, left);
+                for (g = 0; g < n; g++) if (!used[g] && k-- == 0) break;
+            }
+            used[g] = 1;
+        }
+        s->src[a] = g;
+        if (K)
+            for (int f = 0; f < n; f++) {
+                double dv = DIST(f, g);
+                if (dv < mind[f]) mind[f] = dv;
+            }
+    }
+#undef DIST
+    free(mind); free(used);
+    return 0;
+}
+
+int replib_learn(const struct replib_data *D, const struct replib_opts *o, struct replib_result *res)
+{
+    int n = D->n, d = o->d, m3 = D->m3;
+    memset(res, 0, sizeof *res);
+    if (d < 1) return cm_seterr("the library needs at least one piece (d = %d)", d);
+    if (d < D->nfix) return cm_seterr("d = %d is less than the %d fixed pieces", d, D->nfix);
+    if (d - D->nfix > n) return cm_seterr("d = %d pieces but only %d frames", d, n);
+    if (!(o->lambda >= 0) || !isfinite(o->lambda)) return cm_seterr("lambda must be >= 0");
+    if (o->init_labels)
+        for (int f = 0; f < n; f++)
+            if (o->init_labels[f] < 0 || o->init_labels[f] >= d)
+                return cm_seterr("initial label %d of frame %d is not in [0, %d)", o->init_labels[f], f, d);
+    double t0 = wall(), mu = o->lambda / 2;
+    int restarts = o->restarts < 1 ? 1 : o->restarts, iters = o->iterations < 1 ? 1 : o->iterations;
+    res->d = d; res->n = n; res->m3 = m3;
+    res->labels = malloc(sizeof(int) * n);
+    res->R = malloc(sizeof(double) * (size_t)d * m3);
+    int *l = malloc(sizeof(int) * n), *ln = malloc(sizeof(int) * n);
+    double *cost = calloc(n, sizeof(double));
+    struct lstate s;
+    struct work w;
+    int ok = res->labels && res->R && l && ln && cost;
+    if (!ok || lstate_init(&s, d) < 0) {
+        free(l); free(ln); free(cost); replib_result_free(res);
+        return cm_seterr("replib: out of memory");
+    }
+    if (work_init(&w, D, d) < 0) {
+        free(l); free(ln); free(cost); lstate_free(&s); replib_result_free(res);
+        return -1;
+    }
+    double best = INFINITY;
+    int rc = 0;
+    for (int rs = 0; rs < restarts && rc == 0; rs++) {
+        struct rng r;
+        rng_seed(&r, o->seed ^ (0x9E3779B97F4A7C15ULL * (uint64_t)(rs + 1)));
+        double ti = wall(), E;
+        struct replib_iter it = {0};
+        it.restart = rs;
+        if (rs == 0 && o->init_labels) {
+            memcpy(l, o->init_labels, sizeof(int) * n);
+            E = INFINITY;
+        } else {
+            if (seed_pieces(D, d, &r, &s) < 0 || compute_costs(D, &s, mu, &w) < 0) { rc = -1; break; }
+            double tl = wall();
+            E = label_step(&w, o->method, l, 0);
+            res->label_seconds += wall() - tl;
+            if (isnan(E)) { rc = -1; break; }
+            it.energy = E;
+            chain_energy(&w.ch, l, &it.data, &it.velocity);
+            it.changed = n;
+            it.seconds = wall() - ti;
+            if (o->log) o->log(o->log_ctx, &it);
+        }
+        for (int k = 1; k <= iters; k++) {
+            ti = wall();
+            it.iteration = k;
+            if (library_step(D, d, mu, l, cost, &s, &it.reseeded) < 0 || compute_costs(D, &s, mu, &w) < 0) {
+                rc = -1;
+                break;
+            }
+            memcpy(ln, l, sizeof(int) * n);
+            double tl = wall();
+            double En = label_step(&w, o->method, ln, 1);
+            res->label_seconds += wall() - tl;
+            if (isnan(En)) { rc = -1; break; }
+            it.changed = 0;
+            for (int f = 0; f < n; f++) it.changed += ln[f] != l[f];
+            memcpy(l, ln, sizeof(int) * n);
+            for (int f = 0; f < n; f++) cost[f] = w.U[(size_t)f * d + l[f]];
+            it.energy = En;
+            chain_energy(&w.ch, l, &it.data, &it.velocity);
+            it.seconds = wall() - ti;
+            res->iterations++;
+            if (o->log) o->log(o->log_ctx, &it);
+            double Eprev = E;
+            E = En;
+            if (it.changed == 0 || (isfinite(Eprev) && Eprev - En <= o->tol * fabs(Eprev))) break;
+        }
+        if (rc) break;
+        res->restarts++;
+        if (E < best) {
+            /* s, w hold the library and costs that l was optimised for */
+            best = E;
+            res->best_restart = rs;
+            memcpy(res->labels, l, sizeof(int) * n);
+            chain_energy(&w.ch, l, &res->data, &res->velocity);
+            res->energy = E;
+            if (lstate_apply(&s, D->X, n, D->Rfix, m3, res->R) < 0) { rc = -1; break; }
+        }
+    }
+    free(l); free(ln); free(cost);
+    lstate_free(&s);
+    work_free(&w);
+    if (rc) { replib_result_free(res); return -1; }
+    res->seconds = wall() - t0;
+    return 0;
+}
+
+void replib_result_free(struct replib_result *res)
+{
+    free(res->labels); free(res->R);
+    res->labels = NULL; res->R = NULL;
+}
+
+double replib_label(const struct replib_data *D, double lambda, enum replib_method method,
+                    int *l, double *data, double *velocity)
+{
+    int d = D->nfix;
+    if (d < 1) { cm_seterr("replib_label: empty library"); return NAN; }
+    struct lstate s;
+    struct work w;
+    if (lstate_init(&s, d) < 0) return NAN;
+    if (work_init(&w, D, d) < 0) { lstate_free(&s); return NAN; }
+    for (int a = 0; a < d; a++) s.src[a] = D->n + a;
+    double E = NAN;
+    if (compute_costs(D, &s, lambda / 2, &w) == 0) {
+        E = label_step(&w, method, l, 0);
+        if (!isnan(E)) chain_energy(&w.ch, l, data, velocity);
+    }
+    lstate_free(&s);
+    work_free(&w);
+    return E;
+}
+
+void replib_evaluate(const double *X, int n, int nv, const double *R, int d, const int *l,
+                     const double *w, const unsigned char *cut, double lambda,
+                     struct replib_report *rep, double *frame_err)
+{
+    (void)d;
+    size_t m3 = 3 * (size_t)nv;
+    double data = 0, vel = 0, se = 0, sv = 0, me = 0, mv = 0;
+    long nvel = 0;
+    int worst = 0;
+    for (int f = 0; f < n; f++) {
+        const double *x = X + f * m3, *r = R + l[f] * m3;
+        double fm = 0;
+        for (int i = 0; i < nv; i++) {
+            double dx = x[3 * i] - r[3 * i], dy = x[3 * i + 1] - r[3 * i + 1], dz = x[3 * i + 2] - r[3 * i + 2];
+            double e2 = dx * dx + dy * dy + dz * dz, e = sqrt(e2);
+            data += (w ? w[i] : 1) * e2;
+            se += e;
+            if (e > fm) fm = e;
+        }
+        if (frame_err) frame_err[f] = fm;
+        if (fm > me) { me = fm; worst = f; }
+        if (f + 1 < n && !(cut && cut[f + 1])) {
+            const double *x1 = x + m3, *r1 = R + l[f + 1] * m3;
+            for (size_t k = 0; k < m3; k += 3) {
+                double e2 = 0;
+                for (int c = 0; c < 3; c++) {
+                    double v = (x1[k + c] - x[k + c]) - (r1[k + c] - r[k + c]);
+                    e2 += v * v;
+                }
+                double e = sqrt(e2);
+                vel += (w ? w[k / 3] : 1) * e2;
+                sv += e;
+                if (e > mv) mv = e;
+            }
+            nvel++;
+        }
+    }
+    rep->data = data;
+    rep->velocity = vel;
+    rep->energy = data + lambda / 2 * vel;
+    rep->mean_err = se / ((double)n * nv);
+    rep->max_err = me;
+    rep->mean_verr = nvel ? sv / ((double)nvel * nv) : 0;
+    rep->max_verr = mv;
+    rep->worst_frame = worst;
+}

@@ -1,0 +1,133 @@
+/* replib.h -- replacement library and per-frame labels (StopShop Sec. 3.3,
+ * Eq. 10-16): given one part's animation X (n frames of #V vertices), find
+ * d pieces R and labels l minimizing
+ *
+ *   E(R, l) = sum_f |x_f - r_{l_f}|_W^2
+ *           + lambda/2 sum_{f, f+1 in one clip} |(x_{f+1} - x_f) - (r_{l_{f+1}} - r_{l_f})|_W^2
+ *
+ * by block coordinate descent with restarts:
+ *   library step: with mu = lambda/2, S the d by n assignment matrix and G
+ *     the n by (n-1) in-clip forward difference (Eq. 12), solve the d by d
+ *     SPD system  A R^T = B,  A = S S^T + mu S G G^T S^T,
+ *     B = (S + mu S G G^T) X^T  (Eq. 13 with the paper's lambda read as
+ *     lambda/2, so that it is the exact normal equation of Eq. 10, and with
+ *     A d by d, not n by n).  A piece no frame uses is re-seeded with the
+ *     worst-fit frame; fixed pieces (--fixed) stay as given.
+ *   label step: exact chain DP (chainlabel.h), or alpha-expansion / swap.
+ * With lambda = 0 this is Lloyd's k-means.
+ *
+ * Costs come from dense products: |z|^2 + |r|^2 - 2 z.r.  Internally every
+ * piece is r_a = sum_g C_ag z_g over the frames (and fixed pieces) z_g, so
+ * two back ends give the same numbers:
+ *   Gram:   K = Z Z^T once (one DSYRK, N^2 3#V flops); per iteration
+ *           P = K C^T, Q = C P: independent of #V, restarts nearly free.
+ *   direct: per iteration R = A^-1 B (sparse B), P = Z R^T (one DGEMM,
+ *           serving both the data and the velocity term since
+ *           dz_f . r_a = P_{f+1,a} - P_{f,a}) and Q = R R^T (DSYRK).
+ * Z is X centered on the mean frame and scaled by sqrt(w) per vertex (the
+ * energy is translation invariant and the library step does not depend on
+ * W, Sec. 3.3).
+ */
+#ifndef CM_REPLIB_H
+#define CM_REPLIB_H
+#include <stdint.h>
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum replib_method { REPLIB_DP = 0, REPLIB_EXPANSION = 1, REPLIB_SWAP = 2 };
+
+/* The animation and everything precomputed from it (reused across d). */
+struct replib_data {
+    /* inputs, set by the caller before replib_prepare() */
+    int n;                      /* frames */
+    int nv;                     /* #V vertices per frame */
+    const double *X;            /* n by 3#V positions (a MESH's V array) */
+    int nfix;                   /* fixed pieces (may be 0) */
+    const double *Rfix;         /* nfix by 3#V fixed piece positions, or NULL */
+    const double *w;            /* #V saliency weights >= 0, or NULL (all 1) */
+    const unsigned char *cut;   /* n flags, 1 = frame starts a clip, or NULL */
+    int gram;                   /* -1 auto, 0 direct, 1 Gram */
+    /* derived by replib_prepare() */
+    int N;                      /* n + nfix */
+    int m3;                     /* 3#V */
+    unsigned char *link;        /* n: link[f] = 1 if f, f+1 are in one clip */
+    double *mean;               /* 3#V mean frame */
+    double *Z;                  /* N by 3#V centered weighted rows (direct back end only) */
+    double *K;                  /* N by N Gram matrix (Gram back end only) */
+    double *zz;                 /* N squared norms |z_g|^2 */
+    double *dd;                 /* n: |z_{f+1} - z_f|^2 (0 where not linked) */
+    double prep_seconds;        /* time spent in replib_prepare */
+};
+
+/* Validate (weights finite and >= 0 with a positive sum, X finite) and
+ * precompute.  Returns 0, or -1 with cm_errmsg(). */
+int replib_prepare(struct replib_data *D);
+void replib_data_free(struct replib_data *D);
+
+/* One iteration, for logging. */
+struct replib_iter {
+    int restart, iteration;     /* iteration 0 = after initialisation */
+    double energy;              /* E after the label step */
+    double data, velocity;      /* its data term and lambda/2 * velocity term */
+    int changed;                /* labels changed in this label step */
+    int reseeded;               /* pieces re-seeded in this library step */
+    double seconds;             /* wall time of this iteration */
+};
+
+struct replib_opts {
+    int d;                      /* pieces, nfix <= d <= n + nfix */
+    double lambda;              /* velocity weight (>= 0) */
+    int restarts;               /* >= 1 */
+    int iterations;             /* max iterations per restart (>= 1) */
+    uint64_t seed;
+    enum replib_method method;  /* label step */
+    const int *init_labels;     /* n labels in [0, d) for restart 0, or NULL (k-means++ start) */
+    double tol;                 /* stop when E decreases by less than tol * E (e.g. 1e-9) */
+    void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
+    void *log_ctx;
+};
+
+struct replib_result {
+    int d, n, m3;
+    int *labels;                /* n labels of the best restart */
+    double *R;                  /* d by 3#V library (pieces 0..nfix-1 are the fixed ones) */
+    double energy, data, velocity;  /* model energy of the best (data + lambda/2 vel) */
+    int best_restart;
+    int restarts, iterations;   /* restarts run, iterations over all restarts */
+    double seconds;             /* wall time of replib_learn (excl. prepare) */
+    double label_seconds;       /* of which in label steps */
+};
+
+/* Block coordinate descent with restarts.  Returns 0 or -1 (cm_errmsg). */
+int replib_learn(const struct replib_data *D, const struct replib_opts *o,
+                 struct replib_result *res);
+void replib_result_free(struct replib_result *res);
+
+/* Labels for a fixed library: D prepared with nfix = d pieces (Rfix = the
+ * library).  l (out): n labels.  Returns the energy (*data, *velocity may
+ * be NULL), NAN on failure. */
+double replib_label(const struct replib_data *D, double lambda, enum replib_method method,
+                    int *l, double *data, double *velocity);
+
+/* Direct evaluation of a labeling (no Gram tricks), in model units. */
+struct replib_report {
+    double energy;              /* data + lambda/2 * velocity */
+    double data;                /* sum_f |x_f - r_l|_W^2 */
+    double velocity;            /* sum_linked |dx - dr|_W^2 (without lambda/2) */
+    double mean_err, max_err;   /* per-vertex distance |x_fi - r_{l_f} i| over all f, i */
+    double mean_verr, max_verr; /* per-vertex velocity error over linked pairs */
+    int worst_frame;            /* frame holding max_err */
+};
+
+/* X: n by 3#V, R: d by 3#V, l: n labels in [0, d), w: #V or NULL,
+ * cut: n or NULL.  frame_err (out, may be NULL): n per-frame max vertex
+ * distance. */
+void replib_evaluate(const double *X, int n, int nv, const double *R, int d, const int *l,
+                     const double *w, const unsigned char *cut, double lambda,
+                     struct replib_report *rep, double *frame_err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,293 @@
+/* dict-learn -- a replacement library of d printable pieces and per-frame
+ * labels for one part's animation (StopShop Sec. 3.3, Eq. 10-16).
+ *
+ * Block coordinate descent with restarts (libcommon/replib.h): library step
+ * = a d x d SPD solve, label step = exact chain DP (or alpha-expansion).
+ * Output: the library as a MESH stream whose frames are the pieces.
+ * Size selection: --max-error (Fig. 16) and --sweep (Fig. 8).
+ */
+#include "replib.h"
+#include "mesh.h"
+#include "columns.h"
+#include "tool.h"
+#include "progress.h"
+#include "cm_error.h"
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char help[] =
+"Usage: dict-learn [options] [FILE]\n"
+"Learn a replacement library of D pieces and per-frame labels for one part's\n"
+"animation (a MESH stream); write the library (frames = pieces) on stdout.\n"
+"Minimizes |X - R S|_W^2 + lambda/2 |X G - R S G|_W^2 (StopShop Eq. 10).\n"
+"\n"
+"Options:\n"
+"  -d, --pieces D         library size (default 20; D <= frames)\n"
+"  -l, --lambda X         velocity weight lambda (default 2)\n"
+"  -r, --restarts N       random restarts, best kept (default 5)\n"
+"  -i, --iterations N     max iterations per restart (default 50)\n"
+"      --seed N           random seed (default 1): same seed, same bytes\n"
+"  -w, --weights FILE     per-vertex saliency weights (one number per vertex)\n"
+"      --fixed LIB        pieces that must stay (a MESH library from an earlier\n"
+"                         film); they become pieces 0..k-1 of the output\n"
+"  -m, --method M         label step: dp (exact, default) | expansion | swap\n"
+"      --init-labels FILE start restart 0 from these labels (one per frame)\n"
+"      --labels-out FILE  write the per-frame labels (0-based piece ids)\n"
+"      --report FILE      write the energy report (key value lines)\n"
+"      --max-error E      choose the smallest D whose worst per-vertex error\n"
+"                         is <= E model units (Fig. 16); -d is then ignored\n"
+"      --sweep D1:D2[:S]  print \"d energy mean_err max_err\" for D = D1..D2\n"
+"                         step S (Fig. 8) instead of writing a library\n"
+"      --gram auto|on|off cost back end: Gram matrix (default when frames <=\n"
+"                         12000) or one GEMM per iteration\n"
+"  -o, --output FILE      write the library to FILE instead of stdout\n"
+"      --raw              write the raw (binary) MESH variant\n"
+"  -v, --verbose          energies and timings per iteration on stderr\n"
+"  -h, --help             show this help\n"
+"      --version          show the version\n"
+"\n"
+"Example: dict-learn -d 20 --lambda 2 --labels-out lower.lab lower.mesh >lower.lib\n";
+
+struct options {
+    const char *input, *weights, *fixed, *init_labels, *labels_out, *report, *output, *sweep;
+    int d, restarts, iterations, raw, gram;
+    double lambda, max_error;
+    long seed;
+    enum replib_method method;
+};
+
+static void parse_args(int argc, char **argv, struct options *o)
+{
+    static const struct option lo[] = {
+        {"pieces", 1, 0, 'd'}, {"lambda", 1, 0, 'l'}, {"restarts", 1, 0, 'r'},
+        {"iterations", 1, 0, 'i'}, {"seed", 1, 0, 'S'}, {"weights", 1, 0, 'w'},
+        {"fixed", 1, 0, 'F'}, {"method", 1, 0, 'm'}, {"init-labels", 1, 0, 'I'},
+        {"labels-out", 1, 0, 'L'}, {"report", 1, 0, 'P'}, {"max-error", 1, 0, 'E'},
+        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"output", 1, 0, 'o'},
+        {"raw", 0, 0, 'R'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
+        {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
+    memset(o, 0, sizeof *o);
+    o->d = 20; o->lambda = 2; o->restarts = 5; o->iterations = 50; o->seed = 1;
+    o->gram = -1; o->max_error = -1;
+    int c;
+    while ((c = getopt_long(argc, argv, "d:l:r:i:w:m:o:vh", lo, NULL)) != -1) {
+        switch (c) {
+        case 'd': o->d = (int)arg_long(optarg, "--pieces"); break;
+        case 'l': o->lambda = arg_double(optarg, "--lambda"); break;
+        case 'r': o->restarts = (int)arg_long(optarg, "--restarts"); break;
+        case 'i': o->iterations = (int)arg_long(optarg, "--iterations"); break;
+        case 'S': o->seed = arg_long(optarg, "--seed"); break;
+        case 'w': o->weights = optarg; break;
+        case 'F': o->fixed = optarg; break;
+        case 'm':
+            if (!strcmp(optarg, "dp")) o->method = REPLIB_DP;
+            else if (!strcmp(optarg, "expansion")) o->method = REPLIB_EXPANSION;
+            else if (!strcmp(optarg, "swap")) o->method = REPLIB_SWAP;
+            else usage_error("--method: '%s' is not dp, expansion or swap", optarg);
+            break;
+        case 'I': o->init_labels = optarg; break;
+        case 'L': o->labels_out = optarg; break;
+        case 'P': o->report = optarg; break;
+        case 'E': o->max_error = arg_double(optarg, "--max-error");
+            if (!(o->max_error >= 0)) usage_error("--max-error must be >= 0");
+            break;
+        case 'W': o->sweep = optarg; break;
+        case 'G':
+            if (!strcmp(optarg, "auto")) o->gram = -1;
+            else if (!strcmp(optarg, "on")) o->gram = 1;
+            else if (!strcmp(optarg, "off")) o->gram = 0;
+            else usage_error("--gram: '%s' is not auto, on or off", optarg);
+            break;
+        case 'o': o->output = optarg; break;
+        case 'R': o->raw = 1; break;
+        case 'v': verbose++; break;
+        case 'h': print_help_and_exit(help);
+        case 'V': print_version_and_exit();
+        default: usage_error("unknown option");
+        }
+    }
+    if (optind < argc - 1) usage_error("expected at most one input FILE");
+    o->input = optind < argc ? argv[optind] : NULL;
+    if (!(o->lambda >= 0) || !isfinite(o->lambda)) usage_error("--lambda must be >= 0");
+    if (o->restarts < 1) usage_error("--restarts must be at least 1");
+    if (o->iterations < 1) usage_error("--iterations must be at least 1");
+}
+
+static void log_iter(void *ctx, const struct replib_iter *it)
+{
+    (void)ctx;
+    info(2, "restart %d iteration %d: E %.10g (data %.6g, velocity %.6g) changed %d reseeded %d  %.3f s",
+         it->restart, it->iteration, it->energy, it->data, it->velocity, it->changed,
+         it->reseeded, it->seconds);
+}
+
+struct run {
+    struct replib_result res;
+    struct replib_report rep;
+};
+
+static void learn(const struct replib_data *D, const struct options *o, int d,
+                  const int *init, const struct mesh *m, const double *w, struct run *run)
+{
+    struct replib_opts ro = {0};
+    ro.d = d; ro.lambda = o->lambda; ro.restarts = o->restarts; ro.iterations = o->iterations;
+    ro.seed = (uint64_t)o->seed; ro.method = o->method; ro.init_labels = init; ro.tol = 1e-10;
+    ro.log = log_iter;
+    if (replib_learn(D, &ro, &run->res) < 0) die("%s", cm_errmsg());
+    replib_evaluate(m->V, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
+                    o->lambda, &run->rep, NULL);
+    const struct replib_result *r = &run->res;
+    info(1, "d %d: energy %.10g (data %.6g, velocity %.6g), mean error %.6g, max error %.6g",
+         d, run->rep.energy, run->rep.data, run->rep.velocity, run->rep.mean_err, run->rep.max_err);
+    info(1, "d %d: %d restarts, %d iterations, %.4f s per iteration (labels %.4f s), best restart %d, %.3f s",
+         d, r->restarts, r->iterations, r->iterations ? r->seconds / r->iterations : 0,
+         r->iterations ? r->label_seconds / r->iterations : 0, r->best_restart, r->seconds);
+}
+
+static void parse_sweep(const char *s, int *d1, int *d2, int *step)
+{
+    char junk;
+    if (sscanf(s, "%d:%d:%d%c", d1, d2, step, &junk) != 3) {
+        *step = 1;
+        if (sscanf(s, "%d:%d%c", d1, d2, &junk) != 2)
+            usage_error("--sweep: '%s' is not D1:D2 or D1:D2:STEP", s);
+    }
+    if (*d1 < 1 || *d2 < *d1 || *step < 1) usage_error("--sweep: need 1 <= D1 <= D2 and STEP >= 1");
+}
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    struct options o;
+    parse_args(argc, argv, &o);
+    int sd1 = 0, sd2 = 0, sstep = 1;
+    if (o.sweep) parse_sweep(o.sweep, &sd1, &sd2, &sstep);
+    if (!o.sweep && o.max_error < 0 && o.d < 1)
+        die("-d %d: the library needs at least one piece", o.d);
+
+    struct mesh m;
+    if (mesh_read(o.input, &m) < 0) die("%s", cm_errmsg());
+    struct columns wc = {0};
+    if (o.weights && columns_read(o.weights, 1, m.nv, "vertices", &wc) < 0) die("%s", cm_errmsg());
+    struct mesh fx = {0};
+    if (o.fixed) {
+        if (mesh_read(o.fixed, &fx) < 0) die("%s", cm_errmsg());
+        if (fx.nv != m.nv) die("cannot read '%s': %d vertices per piece, the animation has %d", o.fixed, fx.nv, m.nv);
+    }
+    int nfix = o.fixed ? fx.nframes : 0;
+    int *init = NULL, ninit = 0;
+    if (o.init_labels && labels_read(o.init_labels, m.nframes, "frames", 0, o.d - 1, &init, &ninit) < 0)
+        die("%s", cm_errmsg());
+    if (!o.sweep && o.max_error < 0) {
+        if (o.d < nfix) die("-d %d is less than the %d fixed pieces of '%s'", o.d, nfix, o.fixed);
+        if (o.d - nfix > m.nframes)
+            die("-d %d: only %d frames to learn %d pieces from", o.d, m.nframes, o.d - nfix);
+    }
+    if (o.sweep && sd2 - nfix > m.nframes) die("--sweep: D2 = %d but only %d frames", sd2, m.nframes);
+    if (o.sweep && sd1 < nfix) die("--sweep: D1 = %d is less than the %d fixed pieces", sd1, nfix);
+
+    struct replib_data D = {0};
+    D.n = m.nframes; D.nv = m.nv; D.X = m.V; D.nfix = nfix; D.Rfix = nfix ? fx.V : NULL;
+    D.w = o.weights ? wc.x : NULL; D.cut = m.cut; D.gram = o.gram;
+    if (replib_prepare(&D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
+    info(1, "%d frames, %d vertices, %d clips, %s back end, prepared in %.3f s", m.nframes, m.nv,
+         mesh_nclips(&m), D.K ? "Gram" : "direct", D.prep_seconds);
+
+    if (o.sweep) {
+        FILE *out = out_open(o.output);
+        fprintf(out, "# d energy mean_err max_err\n");
+        struct progress pg;
+        progress_start(&pg, "dict-learn", (sd2 - sd1) / sstep + 1);
+        for (int d = sd1, k = 1; d <= sd2; d += sstep, k++) {
+            struct run run;
+            learn(&D, &o, d, NULL, &m, D.w, &run);
+            fprintf(out, "%d %.10g %.10g %.10g\n", d, run.rep.energy, run.rep.mean_err, run.rep.max_err);
+            fflush(out);
+            replib_result_free(&run.res);
+            progress_step(&pg, k);
+        }
+        progress_end(&pg);
+        out_close(out);
+        replib_data_free(&D);
+        return 0;
+    }
+
+    struct run best;
+    int d = o.d;
+    if (o.max_error >= 0) {
+        /* doubling then bisection on d (max error is nearly monotone in d) */
+        int lo = nfix > 0 ? nfix : 1, hi = -1;
+        int dmax = m.nframes + nfix;
+        struct run cur;
+        int have = 0;
+        for (d = lo;; d = d * 2 > dmax ? dmax : d * 2) {
+            learn(&D, &o, d, NULL, &m, D.w, &cur);
+            if (cur.rep.max_err <= o.max_error || d == dmax) {
+                hi = d; best = cur; have = 1;
+                break;
+            }
+            replib_result_free(&cur.res);
+            lo = d + 1;
+        }
+        while (have && lo < hi) {
+            int mid = lo + (hi - lo) / 2;
+            learn(&D, &o, mid, NULL, &m, D.w, &cur);
+            if (cur.rep.max_err <= o.max_error) {
+                replib_result_free(&best.res);
+                best = cur; hi = mid;
+            } else {
+                replib_result_free(&cur.res);
+                lo = mid + 1;
+            }
+        }
+        d = hi;
+        if (best.rep.max_err > o.max_error)
+            warn("max error %g > %g even with one piece per frame", best.rep.max_err, o.max_error);
+        info(1, "--max-error %g: d = %d (max error %g)", o.max_error, d, best.rep.max_err);
+    } else {
+        learn(&D, &o, d, init, &m, D.w, &best);
+    }
+
+    /* everything computed: write outputs */
+    if (o.labels_out) {
+        FILE *f = out_open(o.labels_out);
+        if (labels_write(f, best.res.labels, m.nframes) < 0) die("cannot write '%s'", o.labels_out);
+        out_close(f);
+    }
+    if (o.report) {
+        FILE *f = out_open(o.report);
+        const struct replib_report *p = &best.rep;
+        const struct replib_result *r = &best.res;
+        fprintf(f, "# dict-learn report (energy = data + lambda/2 * velocity, Eq. 10)\n");
+        fprintf(f, "frames %d\nvertices %d\nclips %d\npieces %d\nfixed %d\nlambda %.10g\n",
+                m.nframes, m.nv, mesh_nclips(&m), d, nfix, o.lambda);
+        fprintf(f, "energy %.10g\ndata %.10g\nvelocity %.10g\n", p->energy, p->data, p->velocity);
+        fprintf(f, "mean_error %.10g\nmax_error %.10g\nworst_frame %d\n", p->mean_err, p->max_err, p->worst_frame);
+        fprintf(f, "mean_velocity_error %.10g\nmax_velocity_error %.10g\n", p->mean_verr, p->max_verr);
+        int used = 0;
+        int *cnt = calloc(d, sizeof(int));
+        for (int k = 0; k < m.nframes; k++) cnt[r->labels[k]]++;
+        for (int a = 0; a < d; a++) used += cnt[a] > 0;
+        free(cnt);
+        fprintf(f, "pieces_used %d\nrestarts %d\niterations %d\nbest_restart %d\nseed %ld\n",
+                used, r->restarts, r->iterations, r->best_restart, o.seed);
+        out_close(f);
+    }
+    FILE *out = out_open(o.output);
+    struct mesh lib = {m.nv, m.nf, d, m.F, best.res.R, NULL};
+    unsigned char *cut = calloc(d, 1);
+    lib.cut = cut;
+    if (mesh_write(out, &lib, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
+    out_close(out);
+    free(cut);
+    replib_result_free(&best.res);
+    replib_data_free(&D);
+    free(init);
+    columns_free(&wc);
+    if (o.fixed) mesh_free(&fx);
+    mesh_free(&m);
+    return 0;
+}
