@@ -1,0 +1,651 @@
+// anim_import.cpp -- morph-target animations through assimp; see anim_import.h.
+#include "anim_import.h"
+#include "cm_error.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <strings.h>
+#include <vector>
+
+extern "C" int anim_format_parse(const char *s)
+{
+    if (!s) return ANIM_NONE;
+    if (!strcasecmp(s, "gltf")) return ANIM_GLTF;
+    if (!strcasecmp(s, "glb")) return ANIM_GLB;
+    if (!strcasecmp(s, "fbx")) return ANIM_FBX;
+    return ANIM_NONE;
+}
+
+extern "C" int anim_format_from_name(const char *path)
+{
+    if (!path) return ANIM_NONE;
+    const char *slash = strrchr(path, '/');
+    const char *dot = strrchr(slash ? slash : path, '.');
+    return dot ? anim_format_parse(dot + 1) : ANIM_NONE;
+}
+
+namespace {
+
+/* ------------------------------------------------------------------ */
+/* A small JSON reader, only to decode glTF weight accessors that     */
+/* assimp 5.2 misreads (see the header).                              */
+
+struct JVal {
+    enum Type { NUL, BOOL, NUM, STR, ARR, OBJ } t = NUL;
+    double num = 0;
+    std::string str;
+    std::vector<JVal> arr;
+    std::vector<std::pair<std::string, JVal>> obj;
+    const JVal *get(const char *k) const
+    {
+        if (t != OBJ) return nullptr;
+        for (auto &kv : obj)
+            if (kv.first == k) return &kv.second;
+        return nullptr;
+    }
+    const JVal *at(size_t i) const { return t == ARR && i < arr.size() ? &arr[i] : nullptr; }
+    double number(const char *k, double def) const
+    {
+        const JVal *v = get(k);
+        return v && v->t == NUM ? v->num : def;
+    }
+};
+
+struct JParser {
+    const char *p, *end;
+    int depth = 0;
+    bool ws()
+    {
+        while (p < end && (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')) p++;
+        return p < end;
+    }
+    bool lit(const char *s)
+    {
+        size_t n = strlen(s);
+        if ((size_t)(end - p) < n || strncmp(p, s, n)) return false;
+        p += n;
+        return true;
+    }
+    bool string(std::string &out)
+    {
+        if (p >= end || *p != '"') return false;
+        p++;
+        while (p < end && *p != '"') {
+            if (*p == '\\') {
+                if (++p >= end) return false;
+                char c = *p++;
+                switch (c) {
+                case 'n': out += '\n'; break;
+                case 't': out += '\t'; break;
+                case 'r': out += '\r'; break;
+                case 'b': out += '\b'; break;
+                case 'f': out += '\f'; break;
+                case 'u':             /* names we compare are ASCII: keep a placeholder */
+                    if (end - p < 4) return false;
+                    p += 4;
+                    out += '?';
+                    break;
+                default: out += c;
+                }
+            } else {
+                out += *p++;
+            }
+        }
+        if (p >= end) return false;
+        p++;
+        return true;
+    }
+    bool value(JVal &v)
+    {
+        if (!ws() || ++depth > 200) return false;
+        bool ok = true;
+        if (*p == '{') {
+            v.t = JVal::OBJ;
+            p++;
+            if (!ws()) return false;
+            if (*p == '}') { p++; depth--; return true; }
+            for (;;) {
+                std::pair<std::string, JVal> kv;
+                if (!ws() || !string(kv.first) || !ws() || *p != ':') return false;
+                p++;
+                if (!value(kv.second)) return false;
+                v.obj.push_back(std::move(kv));
+                if (!ws()) return false;
+                if (*p == ',') { p++; continue; }
+                if (*p == '}') { p++; break; }
+                return false;
+            }
+        } else if (*p == '[') {
+            v.t = JVal::ARR;
+            p++;
+            if (!ws()) return false;
+            if (*p == ']') { p++; depth--; return true; }
+            for (;;) {
+                v.arr.emplace_back();
+                if (!value(v.arr.back())) return false;
+                if (!ws()) return false;
+                if (*p == ',') { p++; continue; }
+                if (*p == ']') { p++; break; }
+                return false;
+            }
+        } else if (*p == '"') {
+            v.t = JVal::STR;
+            ok = string(v.str);
+        } else if (lit("true")) {
+            v.t = JVal::BOOL; v.num = 1;
+        } else if (lit("false")) {
+            v.t = JVal::BOOL;
+        } else if (lit("null")) {
+            v.t = JVal::NUL;
+        } else {
+            char *e;
+            std::string tmp(p, std::min<size_t>(end - p, 64));
+            v.t = JVal::NUM;
+            v.num = strtod(tmp.c_str(), &e);
+            if (e == tmp.c_str()) return false;
+            p += e - tmp.c_str();
+        }
+        depth--;
+        return ok;
+    }
+};
+
+static bool read_file(const std::string &path, std::string &out)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    out = ss.str();
+    return true;
+}
+
+static uint32_t le32(const unsigned char *b)
+{
+    return b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
+}
+
+static int b64val(int c)
+{
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    if (c == '+' || c == '-') return 62;
+    if (c == '/' || c == '_') return 63;
+    return -1;
+}
+
+/* The parts of a glTF file needed to decode weight accessors. */
+struct Gltf {
+    JVal root;
+    std::string bin;                    /* GLB BIN chunk */
+    std::string dir;                    /* for external buffers */
+    std::map<size_t, std::string> buffers;
+
+    bool load(const std::string &path)
+    {
+        std::string data;
+        if (!read_file(path, data)) return false;
+        size_t slash = path.rfind('/');
+        dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+        const unsigned char *u = (const unsigned char *)data.data();
+        std::string json;
+        if (data.size() >= 20 && !memcmp(u, "glTF", 4)) {
+            size_t off = 12;
+            while (off + 8 <= data.size()) {
+                uint32_t len = le32(u + off), type = le32(u + off + 4);
+                if (off + 8 + (size_t)len > data.size()) return false;
+                if (type == 0x4E4F534A) json = data.substr(off + 8, len);
+                else if (type == 0x004E4942) bin = data.substr(off + 8, len);
+                off += 8 + ((len + 3) & ~3u);
+            }
+        } else {
+            json = data;
+        }
+        JParser P{json.data(), json.data() + json.size()};
+        return P.value(root) && root.t == JVal::OBJ;
+    }
+
+    const std::string *buffer(size_t i)
+    {
+        auto it = buffers.find(i);
+        if (it != buffers.end()) return &it->second;
+        const JVal *b = root.get("buffers") ? root.get("buffers")->at(i) : nullptr;
+        if (!b) return nullptr;
+        const JVal *uri = b->get("uri");
+        std::string out;
+        if (!uri) {
+            if (i != 0 || bin.empty()) return nullptr;
+            out = bin;
+        } else if (uri->t == JVal::STR && !uri->str.compare(0, 5, "data:")) {
+            size_t comma = uri->str.find(',');
+            if (comma == std::string::npos) return nullptr;
+            int acc = 0, nb = 0;
+            for (size_t k = comma + 1; k < uri->str.size(); k++) {
+                int v = b64val((unsigned char)uri->str[k]);
+                if (v < 0) continue;
+                acc = acc << 6 | v;
+                nb += 6;
+                if (nb >= 8) {
+                    nb -= 8;
+                    out += (char)((acc >> nb) & 0xFF);
+                }
+            }
+        } else if (uri->t == JVal::STR) {
+            if (!read_file(dir + uri->str, out)) return nullptr;
+        } else {
+            return nullptr;
+        }
+        return &(buffers[i] = out);
+    }
+
+    /* Scalar float accessor values (normalized integers decoded);
+     * *type gets the componentType.  false if unsupported. */
+    bool scalars(size_t ai, std::vector<double> &out, int *type)
+    {
+        const JVal *accs = root.get("accessors");
+        const JVal *a = accs ? accs->at(ai) : nullptr;
+        if (!a || a->get("sparse")) return false;
+        const JVal *ty = a->get("type");
+        if (!ty || ty->str != "SCALAR") return false;
+        int ct = (int)a->number("componentType", 0);
+        size_t count = (size_t)a->number("count", 0);
+        size_t csize = ct == 5126 ? 4 : ct == 5122 || ct == 5123 ? 2 : ct == 5120 || ct == 5121 ? 1 : 0;
+        if (!csize) return false;
+        *type = ct;
+        const JVal *bvi = a->get("bufferView");
+        if (!bvi) { out.assign(count, 0.0); return true; }
+        const JVal *bvs = root.get("bufferViews");
+        const JVal *bv = bvs ? bvs->at((size_t)bvi->num) : nullptr;
+        if (!bv) return false;
+        const std::string *buf = buffer((size_t)bv->number("buffer", 0));
+        if (!buf) return false;
+        size_t off = (size_t)bv->number("byteOffset", 0) + (size_t)a->number("byteOffset", 0);
+        size_t stride = (size_t)bv->number("byteStride", 0);
+        if (!stride) stride = csize;
+        size_t len = (size_t)bv->number("byteLength", 0);
+        if (count && ((count - 1) * stride + csize > len || off + (count - 1) * stride + csize > buf->size()))
+            return false;
+        bool norm = a->get("normalized") && a->get("normalized")->num != 0;
+        out.resize(count);
+        const unsigned char *u = (const unsigned char *)buf->data() + off;
+        for (size_t k = 0; k < count; k++) {
+            const unsigned char *e = u + k * stride;
+            double v;
+            switch (ct) {
+            case 5126: { float f; memcpy(&f, e, 4); v = f; break; }
+            case 5121: v = e[0]; if (norm) v /= 255.0; break;
+            case 5120: v = (int8_t)e[0]; if (norm) v = std::max(v / 127.0, -1.0); break;
+            case 5123: v = (uint16_t)(e[0] | e[1] << 8); if (norm) v /= 65535.0; break;
+            default: v = (int16_t)(e[0] | e[1] << 8); if (norm) v = std::max(v / 32767.0, -1.0); break;
+            }
+            out[k] = v;
+        }
+        return true;
+    }
+};
+
+/* ------------------------------------------------------------------ */
+/* scene helpers                                                       */
+
+static const aiNode *find_node_with_mesh(const aiNode *n, unsigned mesh)
+{
+    for (unsigned i = 0; i < n->mNumMeshes; i++)
+        if (n->mMeshes[i] == mesh) return n;
+    for (unsigned c = 0; c < n->mNumChildren; c++)
+        if (const aiNode *r = find_node_with_mesh(n->mChildren[c], mesh)) return r;
+    return nullptr;
+}
+
+static const aiNode *find_node_named(const aiNode *n, const char *name)
+{
+    if (!strcmp(n->mName.C_Str(), name)) return n;
+    for (unsigned c = 0; c < n->mNumChildren; c++)
+        if (const aiNode *r = find_node_named(n->mChildren[c], name)) return r;
+    return nullptr;
+}
+
+static int first_mesh_below(const aiNode *n)
+{
+    if (n->mNumMeshes) return (int)n->mMeshes[0];
+    for (unsigned c = 0; c < n->mNumChildren; c++) {
+        int r = first_mesh_below(n->mChildren[c]);
+        if (r >= 0) return r;
+    }
+    return -1;
+}
+
+static bool parse_index(const char *s, long *out)
+{
+    char *e;
+    errno = 0;
+    long v = strtol(s, &e, 10);
+    if (e == s || *e || errno) return false;
+    *out = v;
+    return true;
+}
+
+/* global rest-pose transform of node n (product of the local transforms
+ * up to the root) */
+static aiMatrix4x4 node_global(const aiNode *n)
+{
+    aiMatrix4x4 M;
+    for (const aiNode *q = n; q; q = q->mParent)
+        M = q->mTransformation * M;
+    return M;
+}
+
+static void copy_name(char *dst, size_t n, const char *src)
+{
+    size_t l = strlen(src);
+    if (l >= n) l = n - 1;
+    memcpy(dst, src, l);
+    dst[l] = '\0';
+}
+
+struct MorphTrack {
+    std::vector<double> time;      /* seconds, increasing */
+    std::vector<double> w;         /* nkeys by ntargets */
+    bool step = false;
+};
+
+static void weights_at(const MorphTrack &tr, int nt, double t, std::vector<double> &w)
+{
+    size_t n = tr.time.size();
+    w.assign(nt, 0.0);
+    if (n == 0) return;
+    if (t <= tr.time[0] || n == 1) {
+        std::copy(tr.w.begin(), tr.w.begin() + nt, w.begin());
+        return;
+    }
+    if (t >= tr.time[n - 1]) {
+        std::copy(tr.w.begin() + (n - 1) * nt, tr.w.begin() + n * nt, w.begin());
+        return;
+    }
+    size_t i = std::upper_bound(tr.time.begin(), tr.time.end(), t) - tr.time.begin() - 1;
+    double u = tr.step ? 0 : (t - tr.time[i]) / (tr.time[i + 1] - tr.time[i]);
+    for (int j = 0; j < nt; j++)
+        w[j] = (1 - u) * tr.w[i * nt + j] + u * tr.w[(i + 1) * nt + j];
+}
+
+} // namespace
+
+extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
+                           struct mesh *m, struct anim_import_info *info)
+{
+    struct anim_import_opts o0 = {};
+    const struct anim_import_opts *o = opt ? opt : &o0;
+    struct anim_import_info inf = {};
+    inf.anim_index = -1;
+    memset(m, 0, sizeof *m);
+
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return cm_seterr("cannot read '%s': %s", path, strerror(errno));
+    fclose(f);
+    int fmt = o->format ? o->format : anim_format_from_name(path);
+
+    Assimp::Importer imp;
+    /* no post-processing that merges or splits vertices: the file's vertex
+     * list is kept (glTF is indexed already); triangulate polygons only */
+    imp.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene *sc;
+    try {
+        sc = imp.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
+    } catch (const std::exception &e) {
+        return cm_seterr("cannot read '%s': %s", path, e.what());
+    }
+    if (!sc) {
+        std::string msg = imp.GetErrorString();
+        size_t nl = msg.find_first_of("\r\n");
+        if (nl != std::string::npos) msg = msg.substr(0, nl);
+        return cm_seterr("cannot read '%s': %s", path, msg.empty() ? "assimp could not import it" : msg.c_str());
+    }
+    if (!sc->mNumMeshes || !sc->mRootNode)
+        return cm_seterr("cannot read '%s': no mesh in the file", path);
+
+    /* ---- the mesh ---- */
+    int mi = -1;
+    if (o->mesh) {
+        long idx;
+        if (parse_index(o->mesh, &idx)) {
+            if (idx < 0 || idx >= (long)sc->mNumMeshes)
+                return cm_seterr("cannot read '%s': no mesh %ld (the file has %u)", path, idx, sc->mNumMeshes);
+            mi = (int)idx;
+        } else {
+            for (unsigned i = 0; i < sc->mNumMeshes && mi < 0; i++)
+                if (!strcmp(sc->mMeshes[i]->mName.C_Str(), o->mesh)) mi = (int)i;
+            if (mi < 0)
+                if (const aiNode *n = find_node_named(sc->mRootNode, o->mesh)) mi = first_mesh_below(n);
+            if (mi < 0)
+                return cm_seterr("cannot read '%s': no mesh or node named '%s'", path, o->mesh);
+        }
+    } else {
+        for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+            const aiMesh *a = sc->mMeshes[i];
+            if (!(a->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+            if (mi < 0) { mi = (int)i; continue; }
+            const aiMesh *b = sc->mMeshes[mi];
+            bool am = a->mNumAnimMeshes > 0, bm = b->mNumAnimMeshes > 0;
+            if ((am && !bm) || (am == bm && a->mNumVertices > b->mNumVertices)) mi = (int)i;
+        }
+        if (mi < 0)
+            return cm_seterr("cannot read '%s': no triangle mesh in the file", path);
+    }
+    const aiMesh *am = sc->mMeshes[mi];
+    const aiNode *node = find_node_with_mesh(sc->mRootNode, (unsigned)mi);
+    inf.mesh_index = mi;
+    {
+        const char *nm = am->mName.length ? am->mName.C_Str() : "";
+        /* a named parent node says more than "meshes[2]" / "nodes[2]" */
+        if (node && node->mParent && node->mParent != sc->mRootNode && node->mParent->mName.length &&
+            (!*nm || strchr(nm, '[')))
+            nm = node->mParent->mName.C_Str();
+        copy_name(inf.mesh_name, sizeof inf.mesh_name, nm);
+    }
+    int nv = (int)am->mNumVertices, nt = (int)am->mNumAnimMeshes;
+    inf.ntargets = nt;
+    std::vector<int> F;
+    for (unsigned t = 0; t < am->mNumFaces; t++) {
+        const aiFace &fc = am->mFaces[t];
+        for (unsigned k = 1; k + 1 < fc.mNumIndices; k++) {
+            F.push_back((int)fc.mIndices[0]);
+            F.push_back((int)fc.mIndices[k]);
+            F.push_back((int)fc.mIndices[k + 1]);
+        }
+    }
+    if (nv == 0 || F.empty())
+        return cm_seterr("cannot read '%s': mesh %d has no triangles", path, mi);
+    for (int v : F)
+        if (v < 0 || v >= nv)
+            return cm_seterr("cannot read '%s': mesh %d: vertex index %d out of range", path, mi, v);
+    for (int i = 0; i < nt; i++)
+        if (am->mAnimMeshes[i]->mNumVertices != (unsigned)nv || !am->mAnimMeshes[i]->mVertices)
+            return cm_seterr("cannot read '%s': mesh %d: morph target %d has no positions for all vertices",
+                             path, mi, i);
+
+    /* ---- the morph animation ---- */
+    const aiMeshMorphAnim *mc = nullptr;
+    const aiAnimation *anim = nullptr;
+    int want_anim = -1;
+    if (o->animation) {
+        long idx;
+        if (parse_index(o->animation, &idx)) {
+            if (idx < 0 || idx >= (long)sc->mNumAnimations)
+                return cm_seterr("cannot read '%s': no animation %ld (the file has %u)", path, idx,
+                                 sc->mNumAnimations);
+            want_anim = (int)idx;
+        } else {
+            for (unsigned a = 0; a < sc->mNumAnimations; a++)
+                if (!strcmp(sc->mAnimations[a]->mName.C_Str(), o->animation)) want_anim = (int)a;
+            if (want_anim < 0)
+                return cm_seterr("cannot read '%s': no animation named '%s'", path, o->animation);
+        }
+    }
+    if (nt > 0) {
+        for (unsigned a = 0; a < sc->mNumAnimations && !mc; a++) {
+            if (want_anim >= 0 && (int)a != want_anim) continue;
+            const aiAnimation *an = sc->mAnimations[a];
+            for (unsigned c = 0; c < an->mNumMorphMeshChannels; c++) {
+                const aiMeshMorphAnim *ch = an->mMorphMeshChannels[c];
+                const char *cn = ch->mName.C_Str();
+                /* assimp names the channel after the node (glTF) or mesh;
+                 * FBX appends "*<n>" */
+                bool match = (node && !strncmp(cn, node->mName.C_Str(), node->mName.length) &&
+                              (cn[node->mName.length] == '\0' || cn[node->mName.length] == '*')) ||
+                             !strcmp(cn, am->mName.C_Str());
+                if (match) { mc = ch; anim = an; inf.anim_index = (int)a; break; }
+            }
+        }
+        if (!mc) {     /* a single morph channel in the whole file: take it */
+            int count = 0;
+            for (unsigned a = 0; a < sc->mNumAnimations; a++) {
+                if (want_anim >= 0 && (int)a != want_anim) continue;
+                for (unsigned c = 0; c < sc->mAnimations[a]->mNumMorphMeshChannels; c++) {
+                    count++;
+                    mc = sc->mAnimations[a]->mMorphMeshChannels[c];
+                    anim = sc->mAnimations[a];
+                    inf.anim_index = (int)a;
+                }
+            }
+            if (count != 1) { mc = nullptr; anim = nullptr; inf.anim_index = -1; }
+        }
+    }
+    if (want_anim >= 0 && !mc)
+        return cm_seterr("cannot read '%s': animation %d does not drive the morph weights of mesh %d",
+                         path, want_anim, mi);
+
+    MorphTrack tr;
+    double tps = 25;
+    if (mc) {
+        copy_name(inf.anim_name, sizeof inf.anim_name, anim->mName.C_Str());
+        tps = anim->mTicksPerSecond > 0 ? anim->mTicksPerSecond : 25;
+        int nk = (int)mc->mNumKeys;
+        tr.time.resize(nk);
+        tr.w.assign((size_t)nk * nt, 0.0);
+        for (int k = 0; k < nk; k++) {
+            const aiMeshMorphKey &K = mc->mKeys[k];
+            tr.time[k] = K.mTime / tps;
+            if (k > 0 && !(tr.time[k] > tr.time[k - 1]))
+                return cm_seterr("cannot read '%s': morph key times not increasing at key %d", path, k);
+            for (unsigned q = 0; q < K.mNumValuesAndWeights; q++)
+                if (K.mValues[q] < (unsigned)nt) tr.w[(size_t)k * nt + K.mValues[q]] = K.mWeights[q];
+        }
+        /* glTF: decode non-float weight accessors ourselves */
+        if ((fmt == ANIM_GLTF || fmt == ANIM_GLB) && nk > 0) {
+            Gltf g;
+            if (g.load(path)) {
+                const JVal *anims = g.root.get("animations");
+                const JVal *ga = anims ? anims->at((size_t)inf.anim_index) : nullptr;
+                const JVal *chs = ga ? ga->get("channels") : nullptr;
+                const JVal *nodes = g.root.get("nodes");
+                for (size_t c = 0; chs && c < chs->arr.size(); c++) {
+                    const JVal &ch = chs->arr[c];
+                    const JVal *tg = ch.get("target");
+                    if (!tg || !tg->get("path") || tg->get("path")->str != "weights" || !tg->get("node"))
+                        continue;
+                    size_t ni = (size_t)tg->get("node")->num;
+                    const JVal *nd = nodes ? nodes->at(ni) : nullptr;
+                    std::string nname = nd && nd->get("name") ? nd->get("name")->str
+                                                              : "nodes[" + std::to_string(ni) + "]";
+                    if (nname != mc->mName.C_Str()) continue;
+                    const JVal *sm = ga->get("samplers") ? ga->get("samplers")->at((size_t)ch.number("sampler", -1))
+                                                         : nullptr;
+                    if (!sm) break;
+                    const JVal *ip = sm->get("interpolation");
+                    std::string interp = ip ? ip->str : "LINEAR";
+                    tr.step = interp == "STEP";
+                    std::vector<double> vals;
+                    int ct = 0;
+                    if (!g.scalars((size_t)sm->number("output", -1), vals, &ct) || ct == 5126)
+                        break;      /* float weights: assimp's are right */
+                    size_t per = interp == "CUBICSPLINE" ? 3 : 1;
+                    if (vals.size() != (size_t)nk * nt * per)
+                        return cm_seterr("cannot read '%s': weight accessor has %zu values, expected %zu",
+                                         path, vals.size(), (size_t)nk * nt * per);
+                    for (int k = 0; k < nk; k++)
+                        for (int j = 0; j < nt; j++)
+                            tr.w[(size_t)k * nt + j] = vals[((size_t)k * per + (per == 3 ? 1 : 0)) * nt + j];
+                    inf.decoded_weights = 1;
+                    break;
+                }
+            }
+        }
+        for (double w : tr.w)
+            if (!std::isfinite(w))
+                return cm_seterr("cannot read '%s': morph weight is not finite", path);
+        inf.nkeys = nk;
+        inf.duration = nk ? tr.time[nk - 1] : 0;
+    }
+
+    /* ---- sample times ---- */
+    std::vector<double> times;
+    if (!mc || tr.time.empty()) {
+        times.push_back(0);
+    } else if (o->fps > 0) {
+        double last = tr.time.back();
+        long n = (long)std::floor(last * o->fps + 1e-9) + 1;
+        if (n > 10000000)
+            return cm_seterr("cannot read '%s': %ld frames at %g fps is too many", path, n, o->fps);
+        for (long k = 0; k < n; k++) times.push_back(k / o->fps);
+    } else {
+        times = tr.time;
+    }
+
+    if (mesh_alloc(m, nv, (int)(F.size() / 3), (int)times.size()) < 0)
+        return -1;
+    memcpy(m->F, F.data(), F.size() * sizeof(int));
+    std::vector<double> w, D((size_t)nt * nv * 3);
+    for (int i = 0; i < nt; i++)
+        for (int v = 0; v < nv; v++) {
+            const aiVector3D &T = am->mAnimMeshes[i]->mVertices[v], &B = am->mVertices[v];
+            D[((size_t)i * nv + v) * 3 + 0] = (double)T.x - B.x;
+            D[((size_t)i * nv + v) * 3 + 1] = (double)T.y - B.y;
+            D[((size_t)i * nv + v) * 3 + 2] = (double)T.z - B.z;
+        }
+    for (size_t k = 0; k < times.size(); k++) {
+        double *X = mesh_frame(m, (int)k);
+        for (int v = 0; v < nv; v++) {
+            X[3 * v] = am->mVertices[v].x;
+            X[3 * v + 1] = am->mVertices[v].y;
+            X[3 * v + 2] = am->mVertices[v].z;
+        }
+        if (mc) {
+            weights_at(tr, nt, times[k], w);
+            for (int i = 0; i < nt; i++) {
+                if (w[i] == 0) continue;
+                const double *Di = D.data() + (size_t)i * nv * 3;
+                for (int c = 0; c < 3 * nv; c++) X[c] += w[i] * Di[c];
+            }
+        }
+        if (o->world && node) {
+            aiMatrix4x4 M = node_global(node);
+            for (int v = 0; v < nv; v++) {
+                double x = X[3 * v], y = X[3 * v + 1], z = X[3 * v + 2];
+                X[3 * v] = M.a1 * x + M.a2 * y + M.a3 * z + M.a4;
+                X[3 * v + 1] = M.b1 * x + M.b2 * y + M.b3 * z + M.b4;
+                X[3 * v + 2] = M.c1 * x + M.c2 * y + M.c3 * z + M.c4;
+            }
+        }
+        for (int c = 0; c < 3 * nv; c++)
+            if (!std::isfinite(X[c])) {
+                mesh_free(m);
+                return cm_seterr("cannot read '%s': non-finite position in frame %zu", path, k);
+            }
+    }
+    if (info) *info = inf;
+    return 0;
+}

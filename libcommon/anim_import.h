@@ -1,0 +1,84 @@
+/* anim_import.h -- morph-target (blend shape) animations from glTF 2.0
+ * (.gltf, .glb) and FBX files, through assimp, as a MESH animation.
+ *
+ * One mesh of the file is chosen (by default the one with morph targets,
+ * the largest if several; else the largest mesh) and its positions are
+ * evaluated at every sample time t:
+ *
+ *     X(t) = B + sum_i w_i(t) (T_i - B)
+ *
+ * with B the base positions, T_i the morph targets, and w_i(t) the weights
+ * of the morph animation, interpolated linearly between keys (STEP keys
+ * hold).  Samples are the keyframe times of the animation by default, or
+ * t = k / fps for k = 0, 1, ... up to the last key.
+ *
+ * Vertices are kept exactly as the file indexes them: no joining of
+ * identical vertices and no splitting (glTF meshes are indexed, so a vertex
+ * that lies on a UV seam is already stored twice in the file and stays so;
+ * mesh_weld() merges such copies).  Positions are in the mesh's own
+ * coordinates (what a baked per-frame OBJ export of the mesh holds) unless
+ * `world` is set, in which case the node's global rest-pose transform is
+ * applied.  Node (rigid) animations are not applied: assimp 5.2 misreads
+ * quantized rotation keys just like the weights below, and the rigid head
+ * motion is not part of a deformation anyway.
+ *
+ * assimp 5.2 reads normalized-integer morph weights (glTF
+ * KHR_mesh_quantization, e.g. the uint8 weights that glTF-Transform writes)
+ * as raw bytes into floats, leaving tiny denormal garbage.  For glTF files
+ * whose weight accessor is not FLOAT, the weights are therefore decoded
+ * here from the file's accessor (byte / 255, short / 65535, ...).
+ *
+ * Returns < 0 with cm_errmsg() naming the file on any failure.
+ */
+#ifndef CM_ANIM_IMPORT_H
+#define CM_ANIM_IMPORT_H
+#include "mesh.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum anim_format {
+    ANIM_NONE = 0,
+    ANIM_GLTF,     /* .gltf: JSON with external or embedded buffers */
+    ANIM_GLB,      /* .glb: binary glTF */
+    ANIM_FBX       /* .fbx */
+};
+
+/* Format from a file name's extension (case-insensitive), ANIM_NONE if none. */
+int anim_format_from_name(const char *path);
+/* Format from its name ("gltf", "glb", "fbx"), ANIM_NONE if unknown. */
+int anim_format_parse(const char *name);
+
+struct anim_import_opts {
+    int format;              /* ANIM_GLTF ... or ANIM_NONE: from the extension */
+    const char *mesh;        /* NULL: automatic; else a mesh index ("2"), a
+                                mesh name, or a node name (first mesh below it) */
+    const char *animation;   /* NULL: the animation driving the mesh's morph
+                                weights; else an index or a name */
+    double fps;              /* <= 0: sample at the keyframes */
+    int world;               /* apply the node's global rest-pose transform */
+};
+
+struct anim_import_info {
+    int mesh_index;          /* index of the chosen mesh in the file */
+    char mesh_name[128];     /* its mesh (or node) name */
+    int ntargets;            /* morph targets of the mesh */
+    int anim_index;          /* chosen animation, -1 if none */
+    char anim_name[128];
+    int nkeys;               /* keys of the morph channel (0: static mesh) */
+    double duration;         /* seconds from 0 to the last key */
+    int decoded_weights;     /* 1 if weights were decoded from the glTF accessor */
+};
+
+/* Read the animation of one mesh.
+ *   path  file name
+ *   o     options (NULL: all defaults)
+ *   m     out: #V, #F, frames (1 if the mesh has no morph animation)
+ *   info  out (may be NULL): what was chosen */
+int anim_import(const char *path, const struct anim_import_opts *o,
+                struct mesh *m, struct anim_import_info *info);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

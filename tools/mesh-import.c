@@ -1,0 +1,290 @@
+/* mesh-import -- OBJ, OFF, PLY, STL meshes, OBJ frame sequences and
+ * glTF/GLB/FBX morph-target animations to a MESH stream.
+ *
+ * One static file gives a one-frame stream; several OBJ files (or a quoted
+ * glob, or --list FILE) give one frame each and must share one
+ * connectivity; one animated file (glTF, GLB, FBX) gives its morph-target
+ * animation sampled at its keyframes or at --fps.  Everything is read and
+ * checked before the first byte is written.
+ */
+#include "anim_import.h"
+#include "cm_error.h"
+#include "mesh.h"
+#include "meshio.h"
+#include "progress.h"
+#include "tool.h"
+#include "weld.h"
+#include <errno.h>
+#include <getopt.h>
+#include <glob.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+static const char help[] =
+"Usage: mesh-import [options] FILE...\n"
+"Convert meshes and animations to a MESH stream on stdout.\n"
+"\n"
+"  one FILE.obj|.off|.ply|.stl       a static mesh (one frame)\n"
+"  one FILE.glb|.gltf|.fbx           its morph-target animation\n"
+"  several OBJ files, a quoted glob ('frames/*.obj') or --list FILE:\n"
+"                                    one frame per file, same connectivity\n"
+"\n"
+"Options:\n"
+"  -l, --list FILE      read frame file names from FILE, one per line ('-': stdin)\n"
+"  -F, --format FMT     input format: obj, off, ply, stl, gltf, glb, fbx\n"
+"                       (default: from each file's extension)\n"
+"      --fps F          animations: sample at F frames per second\n"
+"                       (default: at the keyframes of the animation)\n"
+"      --mesh NAME|I    animations: which mesh to take (default: the one with\n"
+"                       morph targets, the largest if several)\n"
+"      --animation NAME|I  animations: which animation (default: the one\n"
+"                       that drives the mesh's morph weights)\n"
+"      --world          animations: apply the mesh's node transform\n"
+"                       (default: mesh coordinates, like a baked OBJ export)\n"
+"      --weld [EPS]     merge vertices within EPS in every frame (default 0:\n"
+"                       identical positions), e.g. copies split at UV seams\n"
+"      --raw            write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
+"  -v, --verbose        print what was read, counts and timings to stderr\n"
+"  -h, --help           show this help\n"
+"      --version        show the version\n"
+"\n"
+"Examples:\n"
+"  mesh-import spot.obj > spot.mesh\n"
+"  mesh-import 'frames/frame_*.obj' > anim.mesh\n"
+"  mesh-import --fps 24 facecap.glb > face.mesh\n";
+
+struct options {
+    const char *list, *format, *mesh, *animation;
+    double fps, weld_eps;
+    int weld, world, raw;
+    char **files;
+    int nfiles;
+};
+
+static int is_number(const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end || errno) return 0;
+    *out = v;
+    return 1;
+}
+
+static int file_exists(const char *p)
+{
+    struct stat st;
+    return stat(p, &st) == 0;
+}
+
+static void add_file(struct options *o, int *cap, const char *p)
+{
+    if (o->nfiles == *cap) {
+        *cap = *cap ? 2 * *cap : 64;
+        o->files = realloc(o->files, *cap * sizeof *o->files);
+        if (!o->files) die("out of memory");
+    }
+    o->files[o->nfiles++] = strdup(p);
+}
+
+/* A name with glob characters that is not itself a file is expanded
+ * (sorted, as glob(3) does); a pattern that matches nothing is bad input. */
+static void add_arg(struct options *o, int *cap, const char *p)
+{
+    if (strpbrk(p, "*?[") && !file_exists(p)) {
+        glob_t g;
+        int r = glob(p, 0, NULL, &g);
+        if (r == GLOB_NOMATCH)
+            die("cannot read '%s': no file matches this pattern", p);
+        if (r != 0)
+            die("cannot read '%s': pattern expansion failed", p);
+        for (size_t i = 0; i < g.gl_pathc; i++) add_file(o, cap, g.gl_pathv[i]);
+        globfree(&g);
+    } else {
+        add_file(o, cap, p);
+    }
+}
+
+static void read_list(struct options *o, int *cap, const char *path)
+{
+    FILE *f = strcmp(path, "-") ? fopen(path, "r") : stdin;
+    if (!f) die("cannot read '%s': %s", path, strerror(errno));
+    char *line = NULL;
+    size_t n = 0;
+    ssize_t len;
+    while ((len = getline(&line, &n, f)) >= 0) {
+        while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r')) line[--len] = '\0';
+        char *s = line;
+        while (*s == ' ' || *s == '\t') s++;
+        if (!*s || *s == '#') continue;
+        add_arg(o, cap, s);
+    }
+    if (ferror(f)) die("cannot read '%s': %s", path, strerror(errno));
+    free(line);
+    if (f != stdin) fclose(f);
+}
+
+static void parse_args(int argc, char **argv, struct options *o)
+{
+    static const struct option lo[] = {
+        {"list", 1, 0, 'l'}, {"format", 1, 0, 'F'}, {"fps", 1, 0, 'P'}, {"mesh", 1, 0, 'M'},
+        {"animation", 1, 0, 'A'}, {"world", 0, 0, 'W'}, {"weld", 2, 0, 'w'}, {"raw", 0, 0, 'R'},
+        {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
+    memset(o, 0, sizeof *o);
+    int c, cap = 0;
+    while ((c = getopt_long(argc, argv, "l:F:vh", lo, NULL)) != -1) {
+        switch (c) {
+        case 'l': o->list = optarg; break;
+        case 'F': o->format = optarg; break;
+        case 'P':
+            o->fps = arg_double(optarg, "--fps");
+            if (o->fps <= 0 || o->fps > 10000) usage_error("--fps must be in (0, 10000]");
+            break;
+        case 'M': o->mesh = optarg; break;
+        case 'A': o->animation = optarg; break;
+        case 'W': o->world = 1; break;
+        case 'w': {
+            double e;
+            o->weld = 1;
+            if (optarg) {
+                o->weld_eps = arg_double(optarg, "--weld");
+            } else if (optind < argc && is_number(argv[optind], &e) && !file_exists(argv[optind])) {
+                o->weld_eps = e;       /* "--weld 1e-6" */
+                optind++;
+            }
+            if (o->weld_eps < 0) usage_error("--weld: EPS must not be negative");
+            break;
+        }
+        case 'R': o->raw = 1; break;
+        case 'v': verbose++; break;
+        case 'h': print_help_and_exit(help);
+        case 'V': print_version_and_exit();
+        default: usage_error("unknown option");
+        }
+    }
+    if (o->format && !meshio_format_parse(o->format) && !anim_format_parse(o->format))
+        usage_error("unknown format '%s' (obj, off, ply, stl, gltf, glb, fbx)", o->format);
+    if (o->list && optind < argc)
+        usage_error("give either --list FILE or FILE arguments, not both");
+    if (!o->list && optind >= argc)
+        usage_error("expected at least one FILE");
+    if (o->list) read_list(o, &cap, o->list);
+    for (int i = optind; i < argc; i++) add_arg(o, &cap, argv[i]);
+    if (o->nfiles == 0)
+        die("cannot read '%s': no file names in it", o->list);
+}
+
+/* which reader a file goes to */
+enum kind { K_STATIC, K_ANIM, K_UNKNOWN };
+
+static enum kind file_kind(const struct options *o, const char *path, int *fmt)
+{
+    const char *name = o->format ? o->format : NULL;
+    if (name) {
+        if ((*fmt = meshio_format_parse(name))) return K_STATIC;
+        if ((*fmt = anim_format_parse(name))) return K_ANIM;
+        return K_UNKNOWN;
+    }
+    if ((*fmt = meshio_format_from_name(path))) return K_STATIC;
+    if ((*fmt = anim_format_from_name(path))) return K_ANIM;
+    return K_UNKNOWN;
+}
+
+/* several static files -> one animation with one frame each */
+static void read_frames(const struct options *o, struct mesh *out)
+{
+    struct mesh first;
+    struct progress p;
+    double t0 = now_seconds();
+    progress_start(&p, "mesh-import", o->nfiles);
+    for (int k = 0; k < o->nfiles; k++) {
+        const char *path = o->files[k];
+        int fmt;
+        enum kind kd = file_kind(o, path, &fmt);
+        if (kd == K_ANIM)
+            die("cannot read '%s': an animation file cannot be a frame of a sequence", path);
+        if (kd == K_UNKNOWN)
+            die("cannot read '%s': unknown mesh format (expected .obj, .off, .ply or .stl)", path);
+        struct mesh m;
+        if (meshio_read(path, fmt, &m) < 0)
+            die("%s", cm_errmsg());
+        if (k == 0) {
+            first = m;
+            if (mesh_alloc(out, m.nv, m.nf, o->nfiles) < 0)
+                die("%s", cm_errmsg());
+            memcpy(out->F, m.F, (size_t)m.nf * 3 * sizeof *m.F);
+        } else if (m.nv != first.nv || m.nf != first.nf ||
+                   memcmp(m.F, first.F, (size_t)m.nf * 3 * sizeof *m.F)) {
+            if (m.nv != first.nv || m.nf != first.nf)
+                die("cannot read '%s': connectivity differs from '%s' (%d vertices, %d triangles instead of %d, %d)",
+                    path, o->files[0], m.nv, m.nf, first.nv, first.nf);
+            int t = 0;
+            while (!memcmp(m.F + 3 * t, first.F + 3 * t, 3 * sizeof *m.F)) t++;
+            die("cannot read '%s': connectivity differs from '%s' (triangle %d differs)",
+                path, o->files[0], t);
+        }
+        memcpy(mesh_frame(out, k), m.V, (size_t)m.nv * 3 * sizeof *m.V);
+        if (k > 0) mesh_free(&m);
+        progress_step(&p, k + 1);
+    }
+    progress_end(&p);
+    info(1, "read %d file%s: %d vertices, %d triangles, %.2f s", o->nfiles, o->nfiles > 1 ? "s" : "",
+         out->nv, out->nf, now_seconds() - t0);
+    mesh_free(&first);
+}
+
+static void read_animation(const struct options *o, const char *path, int fmt, struct mesh *out)
+{
+    struct anim_import_opts ao = {0};
+    struct anim_import_info ai;
+    ao.format = fmt;
+    ao.mesh = o->mesh;
+    ao.animation = o->animation;
+    ao.fps = o->fps;
+    ao.world = o->world;
+    double t0 = now_seconds();
+    if (anim_import(path, &ao, out, &ai) < 0)
+        die("%s", cm_errmsg());
+    info(1, "%s: mesh %d '%s' (%d morph targets), animation '%s' (%d keys, %.3f s): "
+         "%d frames, %d vertices, %d triangles, %.2f s",
+         path, ai.mesh_index, ai.mesh_name, ai.ntargets, ai.anim_name, ai.nkeys, ai.duration,
+         out->nframes, out->nv, out->nf, now_seconds() - t0);
+}
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    struct options o;
+    parse_args(argc, argv, &o);
+
+    struct mesh m;
+    int fmt;
+    enum kind kd = file_kind(&o, o.files[0], &fmt);
+    if (o.nfiles == 1 && kd == K_ANIM)
+        read_animation(&o, o.files[0], fmt, &m);
+    else if (o.nfiles == 1 && kd == K_UNKNOWN)
+        die("cannot read '%s': unknown file format (expected .obj, .off, .ply, .stl, .gltf, .glb or .fbx)",
+            o.files[0]);
+    else
+        read_frames(&o, &m);
+
+    if (o.weld) {
+        int merged, dropped;
+        if (mesh_weld(&m, o.weld_eps, &merged, &dropped) < 0)
+            die("%s", cm_errmsg());
+        info(1, "weld: merged %d vertices, dropped %d degenerate triangles: %d vertices, %d triangles",
+             merged, dropped, m.nv, m.nf);
+        if (m.nf == 0)
+            die("cannot read '%s': no triangle left after welding", o.files[0]);
+    }
+    if (mesh_write(stdout, &m, want_raw(o.raw)) < 0 || fflush(stdout) != 0 || ferror(stdout))
+        die("cannot write output: %s", cm_errmsg());
+    if (fclose(stdout) != 0)
+        die("cannot write output: %s", strerror(errno));
+    mesh_free(&m);
+    for (int i = 0; i < o.nfiles; i++) free(o.files[i]);
+    free(o.files);
+    return 0;
+}
