@@ -13,6 +13,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -117,10 +118,11 @@ static int soup_to_mesh(soup &s, const char *path, struct mesh *m)
     return 0;
 }
 
-/* Whole file into memory (NUL terminated). */
-static int slurp(const char *path, std::string &buf)
+/* Whole file (path "-": stdin) into memory; text != 0 rejects NUL bytes. */
+static int slurp(const char *path, std::string &buf, int text)
 {
-    FILE *f = fopen(path, "rb");
+    int is_stdin = !strcmp(path, "-");
+    FILE *f = is_stdin ? stdin : fopen(path, "rb");
     if (!f)
         return cm_seterr("cannot read '%s': %s", path, strerror(errno));
     char tmp[1 << 16];
@@ -129,10 +131,10 @@ static int slurp(const char *path, std::string &buf)
         buf.append(tmp, n);
     int bad = ferror(f);
     int e = errno;
-    fclose(f);
+    if (!is_stdin) fclose(f);
     if (bad)
         return cm_seterr("cannot read '%s': %s", path, strerror(e));
-    if (memchr(buf.data(), '\0', buf.size()))
+    if (text && memchr(buf.data(), '\0', buf.size()))
         return cm_seterr("cannot read '%s': binary data in a text format", path);
     return 0;
 }
@@ -189,7 +191,7 @@ static int is_ignored_obj_keyword(const char *k, size_t n)
 static int read_obj(const char *path, struct mesh *m)
 {
     std::string buf;
-    if (slurp(path, buf) < 0)
+    if (slurp(path, buf, 1) < 0)
         return -1;
     soup s;
     lines L = {&buf[0], &buf[0] + buf.size(), 0};
@@ -262,7 +264,7 @@ static int off_keyword(const char *k, size_t n)
 static int read_off(const char *path, struct mesh *m)
 {
     std::string buf;
-    if (slurp(path, buf) < 0)
+    if (slurp(path, buf, 1) < 0)
         return -1;
     soup s;
     lines L = {&buf[0], &buf[0] + buf.size(), 0};
@@ -434,17 +436,12 @@ public:
 
 static int read_openmesh(const char *path, int fmt, struct mesh *m)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return cm_seterr("cannot read '%s': %s", path, strerror(errno));
-    unsigned char head[5] = {0};
-    size_t got = fread(head, 1, 4, f);
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    fclose(f);
-    if (fmt == MESHIO_PLY && (got < 3 || memcmp(head, "ply", 3)))
+    std::string buf;
+    if (slurp(path, buf, 0) < 0)
+        return -1;
+    if (fmt == MESHIO_PLY && buf.compare(0, 3, "ply"))
         return cm_seterr("cannot read '%s': not a PLY file (no 'ply' magic)", path);
-    if (fmt == MESHIO_STL && size < 15)
+    if (fmt == MESHIO_STL && buf.size() < 15)
         return cm_seterr("cannot read '%s': not an STL file (too short)", path);
     SoupImporter imp;
     OpenMesh::IO::Options opt;
@@ -452,17 +449,17 @@ static int read_openmesh(const char *path, int fmt, struct mesh *m)
     std::string said;
     try {
         OmCapture cap;
-        /* OpenMesh picks the reader by extension; give it ours */
-        std::string name(path);
-        int real = meshio_format_from_name(path);
-        if (real != fmt) {
-            /* reading a file whose extension does not say the format:
-             * OpenMesh reads streams too, given the extension */
-            std::ifstream in(path, std::ios::binary);
-            ok = OpenMesh::IO::IOManager().read(in, std::string(".") + meshio_format_name(fmt), imp, opt);
-        } else {
-            ok = OpenMesh::IO::IOManager().read(name, imp, opt);
+        /* read from memory (works for stdin and any extension); OpenMesh
+         * is told the format, and for STL whether it is binary: 80-byte
+         * header, uint32 count n, then exactly 50 n bytes */
+        if (fmt == MESHIO_STL && buf.size() >= 84) {
+            const unsigned char *u = (const unsigned char *)buf.data();
+            uint32_t n = u[80] | (uint32_t)u[81] << 8 | (uint32_t)u[82] << 16 | (uint32_t)u[83] << 24;
+            if (buf.size() == 84 + 50 * (size_t)n)
+                opt += OpenMesh::IO::Options::Binary;
         }
+        std::istringstream in(buf);
+        ok = OpenMesh::IO::IOManager().read(in, fmt == MESHIO_PLY ? "ply" : "stl", imp, opt);
         said = cap.first();
     } catch (const std::exception &e) {
         return cm_seterr("cannot read '%s': %s", path, e.what());

@@ -11,8 +11,9 @@
  * OpenMesh 9's OBJ and OFF readers store positions as float (measured:
  * 0.12345678901234567 comes back as 0.12345679104328156, 1.6e-8 relative),
  * which breaks the OBJ -> MESH -> OBJ round trip to 1e-9.  PLY and STL are
- * read through OpenMesh (both are float32 in practice; STL's vertex soup is
- * merged into shared vertices by OpenMesh's STL reader).
+ * read through OpenMesh from memory (both are float32 in practice; STL's
+ * vertex soup is merged into shared vertices by OpenMesh's STL reader;
+ * binary STL is recognized by its size, 84 + 50 n bytes).
  *
  * Writing: OBJ and OFF as text with shortest round-trip decimals; PLY and
  * STL through OpenMesh, binary unless MESHIO_ASCII is given (binary STL is
@@ -49,7 +50,7 @@ int meshio_format_parse(const char *name);
 const char *meshio_format_name(int fmt);
 
 /* Read a static mesh.
- *   path  file name (not stdin: the format comes from the file)
+ *   path  file name, or "-" for stdin (then fmt must be given)
  *   fmt   MESHIO_OBJ ... or MESHIO_NONE to take it from the extension
  *   m     out: one frame; m->V #V by 3, m->F #F by 3 (triangles)
  * Fails on a missing or unreadable file, an unknown extension, a malformed

@@ -154,6 +154,12 @@ test_expect_success '--weld merges vertices split at a seam' '
 	mesh-import --weld=1e-6 seam2.obj >w2.mesh && test_cmp w1.mesh w2.mesh
 '
 
+test_expect_success 'stdin with --format' '
+	mesh-import --format obj - <a.obj >stdin.mesh && test_cmp a.mesh stdin.mesh &&
+	mesh-import -F stl - <s.stl >stdin2.mesh && test_cmp s2.mesh stdin2.mesh &&
+	test_must_fail_usage mesh-import - <a.obj
+'
+
 test_expect_success 'raw output' '
 	mesh-import --raw a.obj >a.raw && head -1 a.raw >magic &&
 	echo "MESH 1 raw" >expect && test_cmp expect magic

@@ -174,6 +174,13 @@ static void parse_args(int argc, char **argv, struct options *o)
     for (int i = optind; i < argc; i++) add_arg(o, &cap, argv[i]);
     if (o->nfiles == 0)
         die("cannot read '%s': no file names in it", o->list);
+    for (int i = 0; i < o->nfiles; i++)
+        if (!strcmp(o->files[i], "-")) {
+            if (!o->format || !meshio_format_parse(o->format))
+                usage_error("reading stdin ('-') needs --format obj, off, ply or stl");
+            if (o->list && !strcmp(o->list, "-"))
+                usage_error("stdin cannot be both the list and a frame");
+        }
 }
 
 /* which reader a file goes to */
@@ -247,10 +254,15 @@ static void read_animation(const struct options *o, const char *path, int fmt, s
     double t0 = now_seconds();
     if (anim_import(path, &ao, out, &ai) < 0)
         die("%s", cm_errmsg());
-    info(1, "%s: mesh %d '%s' (%d morph targets), animation '%s' (%d keys, %.3f s): "
-         "%d frames, %d vertices, %d triangles, %.2f s",
-         path, ai.mesh_index, ai.mesh_name, ai.ntargets, ai.anim_name, ai.nkeys, ai.duration,
-         out->nframes, out->nv, out->nf, now_seconds() - t0);
+    if (ai.nkeys > 0)
+        info(1, "%s: mesh %d '%s' (%d morph targets), animation %d '%s' (%d keys, %.3f s%s): "
+             "%d frames, %d vertices, %d triangles, %.2f s",
+             path, ai.mesh_index, ai.mesh_name, ai.ntargets, ai.anim_index, ai.anim_name, ai.nkeys,
+             ai.duration, ai.decoded_weights ? ", weights decoded from the glTF accessor" : "",
+             out->nframes, out->nv, out->nf, now_seconds() - t0);
+    else
+        info(1, "%s: mesh %d '%s' (%d morph targets, no morph animation): %d vertices, %d triangles, %.2f s",
+             path, ai.mesh_index, ai.mesh_name, ai.ntargets, out->nv, out->nf, now_seconds() - t0);
 }
 
 int main(int argc, char **argv)
