@@ -68,3 +68,20 @@ closed() {
 count() {
     awk -v k="$1" '$1 == k { print $2; exit }' "$2"
 }
+
+# max_diff A B: the largest coordinate difference between two plain MESH
+# streams with the same counts, relative to the bounding-box diagonal of A
+max_diff() {
+    awk 'FNR == 1 { file++; i = 0 }
+         /^MESH|^vertices|^faces|^frames|^f |^frame / { next }
+         file == 1 { x[i] = $1; y[i] = $2; z[i] = $3; i++
+                     if (!init) { lo1 = hi1 = $1; lo2 = hi2 = $2; lo3 = hi3 = $3; init = 1 }
+                     if ($1 < lo1) lo1 = $1; if ($1 > hi1) hi1 = $1
+                     if ($2 < lo2) lo2 = $2; if ($2 > hi2) hi2 = $2
+                     if ($3 < lo3) lo3 = $3; if ($3 > hi3) hi3 = $3; next }
+         { e = $1 - x[i]; if (e < 0) e = -e; if (e > d) d = e
+           e = $2 - y[i]; if (e < 0) e = -e; if (e > d) d = e
+           e = $3 - z[i]; if (e < 0) e = -e; if (e > d) d = e; i++; n2 = i }
+         END { if (n2 != length(x)) { print "different sizes" > "/dev/stderr"; exit 1 }
+               printf "%.3g\n", d / sqrt((hi1 - lo1)^2 + (hi2 - lo2)^2 + (hi3 - lo3)^2) }' "$1" "$2"
+}
