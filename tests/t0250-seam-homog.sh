@@ -45,6 +45,11 @@ test_expect_success 'standard input (spooled) gives the same bytes as a file' '
 	seam-homog -l cyl.lab <cyl.mesh >stdin.out &&
 	test_cmp cyl.out stdin.out
 '
+test_expect_success 'a streamed header (frames ?) on stdin: the real count is written' '
+	sed "s/^frames .*/frames ?/" cyl.mesh >q.mesh &&
+	seam-homog -l cyl.lab <q.mesh >q.out &&
+	test_cmp cyl.out q.out
+'
 test_expect_success 'raw input and output give the same numbers' '
 	STOPMO_RAW=1 mesh-gen -f 12 -a wave -n 16 -m 12 --caps cylinder >cyl.raw &&
 	seam-homog -l cyl.lab --raw cyl.raw >out.raw &&

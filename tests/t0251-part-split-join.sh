@@ -40,8 +40,27 @@ test_expect_success 'join top of frame 2 with bottom of frame 7: no gap, closed'
 	part-join -v --strict -f 7,2 p_0.mesh p_0.map p_1.mesh p_1.map >mix.mesh 2>mix.err &&
 	grep "seam gap: max 0 " mix.err &&
 	test "$(closed mix.mesh)" = closed &&
+	mesh-info --check closed --check manifold mix.mesh &&
 	test "$(count vertices mix.mesh)" = "$(count vertices cyl.mesh)" &&
 	test "$(count faces mix.mesh)" = "$(count faces cyl.mesh)"
+'
+test_expect_success 'three parts with triple junctions: frames 1, 4, 7 mix without gap' '
+	mesh-gen -f 8 -a wave -s 3 icosphere >ico.mesh &&
+	awk "/^f /     { nf++; a[nf] = \$2; b[nf] = \$3; c[nf] = \$4; next }
+	     /^frame / { if (\$2 + 0 > 0) exit; rd = 1; i = 0; next }
+	     rd        { x[i] = \$1; z[i++] = \$3 }
+	     END       { for (f = 1; f <= nf; f++) {
+	                     cx = x[a[f]] + x[b[f]] + x[c[f]]; cz = z[a[f]] + z[b[f]] + z[c[f]]
+	                     print (cz > 0 ? 0 : (cx > 0 ? 1 : 2)) } }" ico.mesh >ico.lab &&
+	test "$(sort -u ico.lab | wc -l)" = 3 &&
+	seam-homog -l ico.lab ico.mesh >ico.h &&
+	part-split -l ico.lab -o "i_%d.mesh" -m "i_%d.map" ico.h &&
+	part-join -v --strict -f 1,4,7 i_0.mesh i_0.map i_1.mesh i_1.map i_2.mesh i_2.map >ico.mix 2>ico.err &&
+	grep "seam gap: max 0 " ico.err &&
+	test "$(closed ico.mix)" = closed &&
+	mesh-info --check closed ico.mix &&
+	part-split -l ico.lab -o "u_%d.mesh" -m "u_%d.map" ico.mesh &&
+	test_fails_cleanly part-join --strict -f 1,4,7 u_0.mesh u_0.map u_1.mesh u_1.map u_2.mesh u_2.map
 '
 test_expect_success 'joining all parts of one frame gives that frame back' '
 	part-join -f 4 p_0.mesh p_0.map p_1.mesh p_1.map >j4.mesh &&
