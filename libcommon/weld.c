@@ -1,20 +1,43 @@
-/* weld.c -- see weld.h.  Candidates come from a sweep over frame 0 sorted
- * by x (O(#V log #V) for well-spread data); each candidate pair is then
- * confirmed in every frame and joined with union-find. */
+/* weld.c -- see weld.h.  Candidates come from frame 0: every vertex gets a
+ * cell key (its exact position when eps = 0, else floor(p / eps) per
+ * coordinate); keys are sorted, and each vertex looks up its own and (for
+ * eps > 0) the 26 neighbouring cells by binary search, so the cost is
+ * O(#V log #V) whatever the shape (a sweep along one axis is quadratic on a
+ * grid aligned with it).  Each candidate pair is then confirmed in every
+ * frame and joined with union-find. */
 #include "weld.h"
 #include "cm_error.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const double *sort_X;
+struct key { double c[3]; int v; };
 
-static int by_x(const void *a, const void *b)
+static int key_cmp3(const double *a, const double *b)
 {
-    double xa = sort_X[3 * *(const int *)a], xb = sort_X[3 * *(const int *)b];
-    if (xa < xb) return -1;
-    if (xa > xb) return 1;
-    return *(const int *)a - *(const int *)b;
+    for (int d = 0; d < 3; d++) {
+        if (a[d] < b[d]) return -1;
+        if (a[d] > b[d]) return 1;
+    }
+    return 0;
+}
+
+static int by_key(const void *pa, const void *pb)
+{
+    const struct key *a = pa, *b = pb;
+    int c = key_cmp3(a->c, b->c);
+    return c ? c : a->v - b->v;
+}
+
+/* first index in K[0..n) whose cell is >= c */
+static int lower(const struct key *K, int n, const double *c)
+{
+    int lo = 0, hi = n;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (key_cmp3(K[mid].c, c) < 0) lo = mid + 1; else hi = mid;
+    }
+    return lo;
 }
 
 static int find(int *p, int i)
@@ -44,29 +67,39 @@ static int close_in_all_frames(const struct mesh *m, int a, int b, double eps2)
 int mesh_weld(struct mesh *m, double eps, int *nmerged, int *ndropped)
 {
     int nv = m->nv;
-    int *order = malloc((size_t)nv * sizeof *order);
-    int *parent = malloc((size_t)nv * sizeof *parent);
-    int *newidx = malloc((size_t)nv * sizeof *newidx);
-    if (!order || !parent || !newidx) {
-        free(order); free(parent); free(newidx);
+    struct key *K = malloc((size_t)nv * sizeof *K + 1);
+    int *parent = malloc((size_t)nv * sizeof *parent + 1);
+    int *newidx = malloc((size_t)nv * sizeof *newidx + 1);
+    if (!K || !parent || !newidx) {
+        free(K); free(parent); free(newidx);
         return cm_seterr("out of memory welding %d vertices", nv);
     }
-    for (int i = 0; i < nv; i++) order[i] = parent[i] = i;
-    sort_X = m->V;
-    qsort(order, nv, sizeof *order, by_x);
-    double eps2 = eps * eps;
-    for (int a = 0; a < nv; a++) {
-        int i = order[a];
-        for (int b = a + 1; b < nv; b++) {
-            int j = order[b];
-            if (m->V[3 * j] - m->V[3 * i] > eps) break;
-            if (close_in_all_frames(m, i, j, eps2)) {
-                int ri = find(parent, i), rj = find(parent, j);
-                if (ri != rj) {      /* the smaller index represents the group */
-                    if (ri < rj) parent[rj] = ri; else parent[ri] = rj;
-                }
-            }
+    for (int i = 0; i < nv; i++) {
+        parent[i] = i;
+        K[i].v = i;
+        for (int d = 0; d < 3; d++) {
+            double x = m->V[3 * i + d];
+            K[i].c[d] = eps > 0 ? floor(x / eps) : x;
         }
+    }
+    qsort(K, nv, sizeof *K, by_key);
+    double eps2 = eps * eps;
+    int span = eps > 0 ? 1 : 0;
+    for (int a = 0; a < nv; a++) {
+        int i = K[a].v;
+        for (int dx = -span; dx <= span; dx++)
+            for (int dy = -span; dy <= span; dy++)
+                for (int dz = -span; dz <= span; dz++) {
+                    double c[3] = {K[a].c[0] + dx, K[a].c[1] + dy, K[a].c[2] + dz};
+                    for (int b = lower(K, nv, c); b < nv && !key_cmp3(K[b].c, c); b++) {
+                        int j = K[b].v;
+                        if (j <= i || !close_in_all_frames(m, i, j, eps2)) continue;
+                        int ri = find(parent, i), rj = find(parent, j);
+                        if (ri != rj) {      /* the smaller index represents the group */
+                            if (ri < rj) parent[rj] = ri; else parent[ri] = rj;
+                        }
+                    }
+                }
     }
     int n = 0;
     for (int i = 0; i < nv; i++)
@@ -95,7 +128,7 @@ int mesh_weld(struct mesh *m, double eps, int *nmerged, int *ndropped)
     }
     m->nv = n;
     m->nf = nf;
-    free(order); free(parent); free(newidx);
+    free(K); free(parent); free(newidx);
     if (nmerged) *nmerged = merged;
     if (ndropped) *ndropped = dropped;
     return 0;
