@@ -1,0 +1,500 @@
+/* seg-graphcut -- cut a mesh animation into parts along a short, motionless
+ * seam (StopShop Sec. 3.1, Eq. 1-3): per-triangle part labels from seeds.
+ *
+ * Two streaming passes over the frames (memory O(one frame + topology); a
+ * pipe is spooled to a temporary raw file, see mesh_spool.h): the first
+ * accumulates the average mesh, the second the per-edge motion cost of
+ * Eq. 3.  Geodesic distances to the seeds on the average mesh give the
+ * unary cost (Eq. 2); alpha-expansion on BK max-flow minimizes Eq. 1.
+ */
+#include "alpha_expansion.h"
+#include "cm_error.h"
+#include "geodesic.h"
+#include "geometry.h"
+#include "mesh.h"
+#include "mesh_spool.h"
+#include "columns.h"
+#include "progress.h"
+#include "tool.h"
+#include "topology.h"
+#include "coincident.h"
+#include <ctype.h>
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char help[] =
+"Usage: seg-graphcut [options] [FILE]\n"
+"Per-triangle part labels (one integer 0..s-1 per line) for a MESH animation,\n"
+"cut along a short seam where the mesh moves little (StopShop Eq. 1-3).\n"
+"\n"
+"Seeds (at least one per part; parts are numbered 0..s-1):\n"
+"      --seed PART:FACE     a seed triangle (repeatable)\n"
+"      --seeds FILE         lines 'PART FACE' or 'PART X Y Z' (a point, snapped\n"
+"                           to the nearest triangle of the average mesh)\n"
+"\n"
+"Options:\n"
+"  -g, --gamma G            weight of the seam cost (default 100, for the model\n"
+"                           scaled to a unit bounding-box diagonal)\n"
+"  -m, --motion K           weight of motion in the seam cost: an edge costs its\n"
+"                           length times 1 + K (d_a + d_b) / d_max, d = mean\n"
+"                           displacement from the average (default 3)\n"
+"  -p, --parts S            number of parts (default: largest seed part + 1)\n"
+"      --one-pass           one pass, RMS displacement instead of Eq. 3's sum\n"
+"                           (no second read, no temporary file for pipes)\n"
+"      --max-cycles N       limit alpha-expansion cycles (default: to convergence)\n"
+"      --no-weld            do not join vertices that share a position in every\n"
+"                           frame (UV-seam duplicates; joined by default)\n"
+"  -o, --output FILE        write the labels to FILE instead of stdout\n"
+"  -v, --verbose            print energies (unary, binary) and timings\n"
+"  -h, --help               show this help\n"
+"      --version            show the version\n"
+"\n"
+"Example: mesh-gen -f 20 -m 20 cylinder | seg-graphcut --seed 0:0 --seed 1:399 > parts.txt\n";
+
+/* The unary term is area-weighted and scaled as if the model had this many
+ * triangles of equal area, so gamma means the same on coarse and fine
+ * meshes of one shape (Eq. 1 sums over triangles: its balance would
+ * otherwise change with the resolution).  5000 is facecap's resolution. */
+#define UNARY_TRIANGLES 5000.0
+#define DEFAULT_MOTION 3.0
+
+struct seed { int part, face; double p[3]; int is_point; long line; };
+
+struct options {
+    const char *input, *seeds_file, *output;
+    double gamma, motion;
+    int parts, one_pass, max_cycles, no_weld;
+    struct seed *seeds;
+    int nseeds, cap;
+};
+
+static void add_seed(struct options *o, struct seed s)
+{
+    if (o->nseeds == o->cap) {
+        o->cap = o->cap ? 2 * o->cap : 16;
+        o->seeds = realloc(o->seeds, o->cap * sizeof *o->seeds);
+        if (!o->seeds) die("out of memory");
+    }
+    o->seeds[o->nseeds++] = s;
+}
+
+static void parse_args(int argc, char **argv, struct options *o)
+{
+    static const struct option lo[] = {
+        {"seed", 1, 0, 'S'}, {"seeds", 1, 0, 'F'}, {"gamma", 1, 0, 'g'}, {"motion", 1, 0, 'm'}, {"parts", 1, 0, 'p'},
+        {"one-pass", 0, 0, '1'}, {"no-weld", 0, 0, 'W'}, {"max-cycles", 1, 0, 'M'}, {"output", 1, 0, 'o'},
+        {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
+    memset(o, 0, sizeof *o);
+    o->gamma = 100;
+    o->motion = DEFAULT_MOTION;
+    int c;
+    while ((c = getopt_long(argc, argv, "g:m:p:o:vh", lo, NULL)) != -1) {
+        switch (c) {
+        case 'S': {
+            char *colon = strchr(optarg, ':');
+            if (!colon) usage_error("--seed wants PART:FACE, got '%s'", optarg);
+            *colon = 0;
+            struct seed s = {0};
+            s.part = (int)arg_long(optarg, "--seed PART");
+            s.face = (int)arg_long(colon + 1, "--seed FACE");
+            if (s.part < 0) usage_error("--seed: part must be >= 0");
+            add_seed(o, s);
+            break;
+        }
+        case 'F': o->seeds_file = optarg; break;
+        case 'g': o->gamma = arg_double(optarg, "--gamma"); break;
+        case 'm': o->motion = arg_double(optarg, "--motion"); break;
+        case 'p': o->parts = (int)arg_long(optarg, "--parts"); break;
+        case '1': o->one_pass = 1; break;
+        case 'W': o->no_weld = 1; break;
+        case 'M': o->max_cycles = (int)arg_long(optarg, "--max-cycles"); break;
+        case 'o': o->output = optarg; break;
+        case 'v': verbose++; break;
+        case 'h': print_help_and_exit(help);
+        case 'V': print_version_and_exit();
+        default: usage_error("unknown option");
+        }
+    }
+    if (optind < argc - 1) usage_error("at most one input FILE");
+    o->input = optind < argc ? argv[optind] : NULL;
+    if (!(o->gamma >= 0) || !isfinite(o->gamma)) usage_error("--gamma must be >= 0");
+    if (!(o->motion >= 0) || !isfinite(o->motion)) usage_error("--motion must be >= 0");
+    if (o->parts && o->parts < 2) usage_error("--parts must be at least 2");
+    if (o->max_cycles < 0) usage_error("--max-cycles must be >= 0");
+    if (!o->seeds_file && o->nseeds == 0) usage_error("no seeds (--seed PART:FACE or --seeds FILE)");
+}
+
+/* "PART FACE" or "PART X Y Z" per line, '#' comments */
+static void read_seeds(const char *path, struct options *o)
+{
+    FILE *f = !strcmp(path, "-") ? stdin : fopen(path, "r");
+    if (!f) die("cannot read '%s': %s", path, strerror(errno));
+    char line[1024];
+    long ln = 0;
+    while (fgets(line, sizeof line, f)) {
+        ln++;
+        char *h = strchr(line, '#');
+        if (h) *h = 0;
+        double x[5];
+        int n = 0;
+        char *p = line, *e;
+        while (n < 5) {
+            while (isspace((unsigned char)*p)) p++;
+            if (!*p) break;
+            x[n] = strtod(p, &e);
+            if (e == p || !isfinite(x[n]))
+                die("cannot read '%s': line %ld: expected numbers 'PART FACE' or 'PART X Y Z'", path, ln);
+            n++; p = e;
+        }
+        while (isspace((unsigned char)*p)) p++;
+        if (n == 0) continue;
+        if ((n != 2 && n != 4) || *p)
+            die("cannot read '%s': line %ld: expected 'PART FACE' or 'PART X Y Z'", path, ln);
+        struct seed s = {0};
+        s.line = ln;
+        if (x[0] != floor(x[0]) || x[0] < 0 || x[0] > 1e6)
+            die("cannot read '%s': line %ld: part must be an integer >= 0", path, ln);
+        s.part = (int)x[0];
+        if (n == 2) {
+            if (x[1] != floor(x[1]) || fabs(x[1]) > 2e9)
+                die("cannot read '%s': line %ld: face must be an integer", path, ln);
+            s.face = (int)x[1];
+        } else {
+            s.is_point = 1;
+            s.p[0] = x[1]; s.p[1] = x[2]; s.p[2] = x[3];
+        }
+        add_seed(o, s);
+    }
+    if (ferror(f)) die("cannot read '%s': %s", path, strerror(errno));
+    if (f != stdin) fclose(f);
+}
+
+/* squared distance from p to triangle abc (Ericson, Real-Time Collision
+ * Detection 5.1.5) */
+static double point_triangle_d2(const double *p, const double *a, const double *b, const double *c)
+{
+    double ab[3], ac[3], ap[3], q[3];
+    sub3(b, a, ab); sub3(c, a, ac); sub3(p, a, ap);
+    double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
+    if (d1 <= 0 && d2 <= 0) { memcpy(q, a, sizeof q); goto done; }
+    double bp[3]; sub3(p, b, bp);
+    double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+    if (d3 >= 0 && d4 <= d3) { memcpy(q, b, sizeof q); goto done; }
+    double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        double v = d1 / (d1 - d3);
+        for (int k = 0; k < 3; k++) q[k] = a[k] + v * ab[k];
+        goto done;
+    }
+    double cp[3]; sub3(p, c, cp);
+    double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+    if (d6 >= 0 && d5 <= d6) { memcpy(q, c, sizeof q); goto done; }
+    double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        double w = d2 / (d2 - d6);
+        for (int k = 0; k < 3; k++) q[k] = a[k] + w * ac[k];
+        goto done;
+    }
+    double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+        double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int k = 0; k < 3; k++) q[k] = b[k] + w * (c[k] - b[k]);
+        goto done;
+    }
+    {
+        double den = 1 / (va + vb + vc), v = vb * den, w = vc * den;
+        for (int k = 0; k < 3; k++) q[k] = a[k] + ab[k] * v + ac[k] * w;
+    }
+done:
+    return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+}
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    struct options o;
+    parse_args(argc, argv, &o);
+    if (o.seeds_file) read_seeds(o.seeds_file, &o);
+    if (o.nseeds == 0) die("cannot read '%s': no seeds", o.seeds_file);
+    double t0 = now_seconds();
+
+    struct mesh_reader r;
+    if (mesh_reader_open(&r, o.input) < 0) die("%s", cm_errmsg());
+    int nv = r.nv, nf = r.nf;
+    const char *name = r.name;
+    int *F = malloc(sizeof(int) * 3 * (nf ? nf : 1));
+    if (!F) die("out of memory");
+    memcpy(F, r.F, sizeof(int) * 3 * nf);
+
+    /* everything that can be checked before reading frames */
+    int s = 0;
+    for (int i = 0; i < o.nseeds; i++) {
+        if (o.seeds[i].part + 1 > s) s = o.seeds[i].part + 1;
+        if (!o.seeds[i].is_point && (o.seeds[i].face < 0 || o.seeds[i].face >= nf))
+            die("seed face %d out of range (the mesh has faces 0..%d)", o.seeds[i].face, nf - 1);
+    }
+    if (o.parts) {
+        if (s > o.parts) die("seed part %d out of range (--parts %d)", s - 1, o.parts);
+        s = o.parts;
+    }
+    if (s < 2) die("need seeds for at least 2 parts (parts are 0..s-1), got only part 0");
+    int *nseed_of = calloc(s, sizeof *nseed_of);
+    for (int i = 0; i < o.nseeds; i++) nseed_of[o.seeds[i].part]++;
+    for (int p = 0; p < s; p++)
+        if (!nseed_of[p]) die("part %d has no seed (parts are 0..%d)", p, s - 1);
+    struct topology t;
+    if (topology_build(F, nf, nv, &t) < 0) die("%s", cm_errmsg());
+    if (t.nnonmanifold > 0) {
+        int e = 0;
+        while (t.EFn[e] <= 2) e++;
+        die("cannot segment '%s': non-manifold edge %d-%d (%d faces)", name, t.E[2 * e],
+            t.E[2 * e + 1], t.EFn[e]);
+    }
+
+    /* pass 1: average (and, for --one-pass, variance and mean edge lengths) */
+    double *X = malloc(sizeof(double) * 3 * (nv ? nv : 1));
+    double *avg = calloc(3 * (size_t)nv + 1, sizeof *avg);
+    double *m2 = o.one_pass ? calloc((size_t)nv + 1, sizeof *m2) : NULL;
+    double *elenF = o.one_pass ? calloc(3 * (size_t)nf + 1, sizeof *elenF) : NULL;
+    int *rep = malloc(sizeof(int) * (nv ? nv : 1));
+    if (!X || !avg || !rep || (o.one_pass && (!m2 || !elenF))) die("out of memory");
+    struct mesh_spool sp;
+    if (!o.one_pass && mesh_spool_begin(&sp, o.input, &r) < 0) die("%s", cm_errmsg());
+    struct progress pr;
+    progress_start(&pr, "seg-graphcut: pass 1", r.nframes);
+    int n = 0, rc, cut;
+    while ((rc = mesh_reader_next(&r, X, &cut)) == 1) {
+        n++;
+        if (n == 1) {
+            if (coincident_find(X, nv, rep) < 0) die("out of memory");
+        } else
+            coincident_refine(X, nv, rep);
+        if (!o.one_pass) {
+            if (mesh_spool_frame(&sp, X, cut) < 0) die("%s", cm_errmsg());
+            for (int i = 0; i < 3 * nv; i++) avg[i] += X[i];
+        } else {   /* Welford: stable running mean and squared deviation */
+            for (int v = 0; v < nv; v++) {
+                double d[3], d2 = 0;
+                for (int k = 0; k < 3; k++) {
+                    d[k] = X[3 * v + k] - avg[3 * v + k];
+                    avg[3 * v + k] += d[k] / n;
+                    d2 += d[k] * (X[3 * v + k] - avg[3 * v + k]);
+                }
+                m2[v] += d2;
+            }
+            for (int f = 0; f < nf; f++)
+                for (int c = 0; c < 3; c++)
+                    elenF[3 * f + c] += dist3(X + 3 * F[3 * f + c], X + 3 * F[3 * f + (c + 1) % 3]);
+        }
+        progress_step(&pr, n);
+    }
+    progress_end(&pr);
+    if (rc < 0) die("%s", cm_errmsg());
+    mesh_reader_close(&r);
+    if (!o.one_pass)
+        for (int i = 0; i < 3 * nv; i++) avg[i] /= n;
+    double diag = bbox_diagonal(avg, nv);
+    if (!(diag > 0)) die("cannot segment '%s': the average mesh has an empty bounding box", name);
+    double t1 = now_seconds();
+
+    /* join UV-seam duplicates (same position in every frame) so geodesics
+     * and the seam can cross texture seams; keep the input faces when the
+     * joined mesh would not be a manifold */
+    int *Fw = malloc(sizeof(int) * 3 * (nf ? nf : 1));
+    if (!Fw) die("out of memory");
+    int nwelded = 0;
+    for (int v = 0; v < nv; v++) nwelded += rep[v] != v;
+    if (o.no_weld || nwelded == 0) {
+        memcpy(Fw, F, sizeof(int) * 3 * nf);
+    } else {
+        coincident_faces(F, nf, rep, Fw);
+        struct topology tw;
+        int built = topology_build(Fw, nf, nv, &tw) == 0, bad = !built;
+        for (int f = 0; f < nf && !bad; f++)
+            bad = Fw[3 * f] == Fw[3 * f + 1] || Fw[3 * f + 1] == Fw[3 * f + 2] || Fw[3 * f] == Fw[3 * f + 2];
+        if (!bad) bad = tw.nnonmanifold > 0 || nonmanifold_vertices(&tw, Fw) > 0;
+        if (bad) {
+            info(1, "joining %d coincident vertices would make the mesh non-manifold: not joined", nwelded);
+            memcpy(Fw, F, sizeof(int) * 3 * nf);
+            nwelded = 0;
+            if (built) topology_free(&tw);
+        } else {
+            info(1, "joined %d vertices that coincide in every frame (UV seams)", nwelded);
+            topology_free(&t);
+            t = tw;
+        }
+    }
+
+    /* seed points -> nearest triangle of the average mesh */
+    for (int i = 0; i < o.nseeds; i++) {
+        if (!o.seeds[i].is_point) continue;
+        double best = INFINITY;
+        for (int f = 0; f < nf; f++) {
+            double d2 = point_triangle_d2(o.seeds[i].p, avg + 3 * F[3 * f], avg + 3 * F[3 * f + 1],
+                                          avg + 3 * F[3 * f + 2]);
+            if (d2 < best) { best = d2; o.seeds[i].face = f; }
+        }
+        info(2, "seed point line %ld -> face %d (distance %g)", o.seeds[i].line, o.seeds[i].face, sqrt(best));
+    }
+    int *seed_part = malloc(sizeof(int) * (nf ? nf : 1));
+    for (int f = 0; f < nf; f++) seed_part[f] = -1;
+    for (int i = 0; i < o.nseeds; i++) {
+        int f = o.seeds[i].face, p = o.seeds[i].part;
+        if (seed_part[f] >= 0 && seed_part[f] != p)
+            die("face %d is a seed of both part %d and part %d", f, seed_part[f], p);
+        seed_part[f] = p;
+    }
+
+    /* pass 2: Eq. 3 per interior edge, normalized to a unit bbox diagonal and
+     * averaged over frames:
+     *   w_e = 1/n sum_f |e_f| (1 + |x_fa - avg_a| + |x_fb - avg_b|) */
+    double *w = calloc((size_t)t.ne + 1, sizeof *w);
+    double *wm = calloc((size_t)t.ne + 1, sizeof *wm);
+    double *dmean = calloc((size_t)nv + 1, sizeof *dmean);   /* per vertex */
+    if (!w || !wm || !dmean) die("out of memory");
+    if (!o.one_pass) {
+        struct mesh_reader r2;
+        if (mesh_spool_rewind(&sp, &r2) < 0) die("%s", cm_errmsg());
+        double *dv = malloc(sizeof(double) * (nv ? nv : 1));
+        if (!dv) die("out of memory");
+        progress_start(&pr, "seg-graphcut: pass 2", n);
+        int k = 0;
+        while ((rc = mesh_reader_next(&r2, X, NULL)) == 1) {
+            for (int v = 0; v < nv; v++) {
+                dv[v] = dist3(X + 3 * v, avg + 3 * v) / diag;
+                dmean[v] += dv[v];
+            }
+            for (int e = 0; e < t.ne; e++) {
+                int a = t.E[2 * e], b = t.E[2 * e + 1];
+                {
+                    double l = dist3(X + 3 * a, X + 3 * b) / diag;
+                    w[e] += l;
+                    wm[e] += l * (dv[a] + dv[b]);
+                }
+            }
+            progress_step(&pr, ++k);
+        }
+        progress_end(&pr);
+        if (rc < 0) die("%s", cm_errmsg());
+        if (k != n) die("cannot read '%s' again: %d frames, first pass had %d", name, k, n);
+        mesh_reader_close(&r2);
+        mesh_spool_free(&sp);
+        free(dv);
+        for (int e = 0; e < t.ne; e++) { w[e] /= n; wm[e] /= n; }
+        for (int v = 0; v < nv; v++) dmean[v] /= n;
+    } else {
+        for (int v = 0; v < nv; v++) dmean[v] = sqrt(m2[v] / n) / diag;
+        /* sum_f |x_f - avg| ~ n * rms (equal when the displacement magnitude
+         * is constant in time; larger motions weigh more) */
+        for (int f = 0; f < nf; f++)
+            for (int c = 0; c < 3; c++) {
+                int e = t.FE[3 * f + c], a = t.E[2 * e], b = t.E[2 * e + 1];
+                double ra = sqrt(m2[a] / n), rb = sqrt(m2[b] / n);
+                w[e] = elenF[3 * f + c] / n / diag;
+                wm[e] = w[e] * (ra + rb) / diag;
+            }
+    }
+    double t2 = now_seconds();
+    double dmax = 0, dsum = 0;
+    for (int v = 0; v < nv; v++) { dsum += dmean[v]; if (dmean[v] > dmax) dmax = dmean[v]; }
+    info(2, "displacement from the average (bbox diagonals): mean %g, max %g", dsum / nv, dmax);
+    /* the motion term, normalized by the largest mean displacement */
+    double mu = dmax > 0 ? o.motion / dmax : 0;
+    info(1, "largest mean displacement %g bbox diagonals (Eq. 3 literally = --motion %g)", dmax, dmax);
+    for (int e = 0; e < t.ne; e++) w[e] += mu * wm[e];
+
+    /* unary (Eq. 2): geodesic distance on the average mesh from each
+     * triangle (mean of its corner distances) to the part's seed triangles,
+     * in units of the bbox diagonal; seed triangles are fixed to their part */
+    struct geodesic *g = geodesic_new(avg, Fw, nv, nf);
+    if (!g) die("cannot segment '%s': %s", name, cm_errmsg());
+    double *U = malloc(sizeof(double) * (size_t)nf * s);
+    double *D = malloc(sizeof(double) * (nv ? nv : 1));
+    int *S = malloc(sizeof(int) * 3 * o.nseeds);
+    if (!U || !D || !S) die("out of memory");
+    for (int p = 0; p < s; p++) {
+        int ns = 0;
+        for (int f = 0; f < nf; f++)
+            if (seed_part[f] == p)
+                for (int k = 0; k < 3; k++) S[ns++] = Fw[3 * f + k];
+        if (geodesic_solve(g, S, ns, D) < 0) die("cannot segment '%s': %s", name, cm_errmsg());
+        for (int f = 0; f < nf; f++) {
+            const int *T = Fw + 3 * f;
+            U[(size_t)f * s + p] = (D[T[0]] + D[T[1]] + D[T[2]]) / 3 / diag;
+        }
+    }
+    geodesic_free(g);
+    double *A = malloc(sizeof(double) * (nf ? nf : 1)), atot = 0;
+    if (!A) die("out of memory");
+    face_areas(avg, F, nf, A);
+    for (int f = 0; f < nf; f++) atot += A[f];
+    if (!(atot > 0)) die("cannot segment '%s': the average mesh has zero area", name);
+    int unreachable = 0;
+    for (int f = 0; f < nf; f++) {
+        const int *T = F + 3 * f;
+        int any = 0;
+        for (int p = 0; p < s; p++) any |= isfinite(U[(size_t)f * s + p]);
+        if (!any) {
+            /* a connected component without seeds: straight-line distance
+             * from the centroid to the nearest seed corner of each part */
+            double c[3];
+            for (int k = 0; k < 3; k++)
+                c[k] = (avg[3 * T[0] + k] + avg[3 * T[1] + k] + avg[3 * T[2] + k]) / 3;
+            for (int p = 0; p < s; p++) U[(size_t)f * s + p] = INFINITY;
+            for (int g2 = 0; g2 < nf; g2++)
+                if (seed_part[g2] >= 0)
+                    for (int k = 0; k < 3; k++) {
+                        double d = dist3(c, avg + 3 * F[3 * g2 + k]) / diag;
+                        double *u = &U[(size_t)f * s + seed_part[g2]];
+                        if (d < *u) *u = d;
+                    }
+            unreachable++;
+        }
+        /* area weight: as if the surface had UNARY_TRIANGLES equal triangles */
+        for (int p = 0; p < s; p++) U[(size_t)f * s + p] *= UNARY_TRIANGLES * A[f] / atot;
+        if (seed_part[f] >= 0)
+            for (int p = 0; p < s; p++) U[(size_t)f * s + p] = p == seed_part[f] ? 0 : INFINITY;
+    }
+    free(A);
+    if (unreachable)
+        info(1, "%d triangles in components without seeds: straight-line distances used", unreachable);
+    double t3 = now_seconds();
+
+    /* Eq. 1 by alpha-expansion over the dual graph (interior edges) */
+    int ne = 0;
+    int *E = malloc(sizeof(int) * 2 * (t.ne ? t.ne : 1));
+    double *W = malloc(sizeof(double) * (t.ne ? t.ne : 1));
+    for (int e = 0; e < t.ne; e++)
+        if (t.EFn[e] == 2) {
+            E[2 * ne] = t.EF[2 * e]; E[2 * ne + 1] = t.EF[2 * e + 1];
+            W[ne++] = o.gamma * w[e];
+        }
+    int *L = malloc(sizeof(int) * (nf ? nf : 1));
+    struct alpha_expansion_stats st;
+    if (alpha_expansion(nf, s, U, ne, E, W, L, 0, o.max_cycles, &st) < 0)
+        die("cannot segment '%s': %s", name, cm_errmsg());
+    double t4 = now_seconds();
+    int *count = calloc(s, sizeof *count);
+    for (int f = 0; f < nf; f++) count[L[f]]++;
+    for (int p = 0; p < s; p++)
+        if (!count[p]) warn("part %d is empty", p);
+
+    info(1, "%d vertices, %d triangles, %d frames, %d parts, bbox diagonal %g", nv, nf, n, s, diag);
+    info(1, "energy %.9g = unary %.9g + binary %.9g (gamma %g), %d cycles, %d moves",
+         st.unary + st.binary, st.unary, st.binary, o.gamma, st.cycles, st.moves);
+    for (int p = 0; p < s; p++) info(1, "part %d: %d triangles", p, count[p]);
+    info(1, "time: frames %.3f s, edge costs %.3f s, geodesics %.3f s, alpha-expansion %.3f s, total %.3f s",
+         t1 - t0, t2 - t1, t3 - t2, t4 - t3, t4 - t0);
+
+    FILE *out = out_open(o.output);
+    if (labels_write(out, L, nf) < 0) die("cannot write output: %s", cm_errmsg());
+    out_close(out);
+    free(X); free(avg); free(m2); free(elenF); free(rep); free(Fw); free(w); free(wm); free(dmean); free(U); free(D); free(S);
+    free(E); free(W); free(L); free(count); free(seed_part); free(nseed_of);
+    free(o.seeds); free(F);
+    topology_free(&t);
+    return 0;
+}
