@@ -1,0 +1,578 @@
+/* anim-render -- a film strip / contact sheet of chosen frames of one or
+ * more MESH streams, or one image per frame.
+ *
+ * One fixed camera is fitted to every chosen frame of every input, so the
+ * tiles are directly comparable; each tile is stamped with its frame
+ * number.  Several inputs are drawn as rows (e.g. the input animation above
+ * its stop-motion result), optionally titled.
+ */
+#include "cm_error.h"
+#include "colormap.h"
+#include "image.h"
+#include "mesh.h"
+#include "meshcolor.h"
+#include "progress.h"
+#include "raster.h"
+#include "tool.h"
+#include <getopt.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char help[] =
+"Usage: anim-render [options] [file...] > sheet.png\n"
+"Render chosen frames of MESH streams as a contact sheet: one row (or block of\n"
+"rows) per input, tiles stamped with their frame numbers, one fixed camera.\n"
+"\n"
+"Frames (per input; default --count 8):\n"
+"      --frames LIST      comma separated frame indices (negative: from the end)\n"
+"      --every K          frames 0, K, 2K, ...\n"
+"  -n, --count N          N frames evenly spaced from first to last\n"
+"      --all              every frame\n"
+"Layout:\n"
+"  -C, --columns C        tiles per row (default: the number of chosen frames, at most 8)\n"
+"  -s, --size WxH         size of one tile in pixels (default 320x320)\n"
+"      --gap N            pixels between tiles (default 4)\n"
+"  -t, --titles LIST      comma separated titles, one per input, drawn left of its rows\n"
+"      --no-stamp         do not stamp frame numbers\n"
+"      --each PATTERN     write one image per frame to PATTERN (e.g. 'out_%04d.png',\n"
+"                         one integer conversion); inputs side by side\n"
+"Camera and look (as mesh-render):\n"
+"  -V, --view NAME        front, back, left, right, top, bottom, iso (default front)\n"
+"  -a, --azimuth DEG      -e, --elevation DEG      --up x|y|z (default y)\n"
+"      --perspective      --fov DEG (default 30)\n"
+"  -l, --labels FILE      integer label per face or vertex: categorical colours\n"
+"      --scalars FILE     scalar per vertex or face: viridis; --range MIN,MAX\n"
+"  -w, --wireframe        --flat        --supersample N (default 2)\n"
+"  -c, --color COLOR      -b, --background COLOR   (R,G,B or #rrggbb)\n"
+"Output:\n"
+"  -f, --format FMT       png or ppm (default from the -o extension, else png)\n"
+"  -o, --output FILE      write the sheet to FILE (atomically) instead of stdout\n"
+"  -v, --verbose          print counts and timings to stderr\n"
+"  -h, --help             show this help\n"
+"      --version          show the version\n"
+"\n"
+"Example: anim-render --count 6 -t input,result in.mesh out.mesh > compare.png\n";
+
+enum { SEL_COUNT, SEL_EVERY, SEL_LIST, SEL_ALL };
+
+struct options {
+    const char **inputs;
+    int ninputs;
+    const char *output, *labels, *scalars, *format, *each, *titles_arg;
+    int sel, count, every, nlist, *list;
+    int columns, w, h, gap, stamp, up, perspective, wireframe, flat, ss, have_range;
+    double azimuth, elevation, fov, range[2];
+    unsigned char color[3], background[3];
+    char **titles;
+    int ntitles;
+};
+
+enum { O_UP = 256, O_PERSP, O_FOV, O_SCALARS, O_RANGE, O_FLAT, O_SS, O_VERSION, O_FRAMES,
+       O_EVERY, O_ALL, O_GAP, O_NOSTAMP, O_EACH };
+
+static int parse_axis(const char *s)
+{
+    if (!strcmp(s, "x")) return 0;
+    if (!strcmp(s, "y")) return 1;
+    if (!strcmp(s, "z")) return 2;
+    usage_error("--up: '%s' is not x, y or z", s);
+}
+
+static const char *format_from_name(const char *path)
+{
+    const char *dot = path ? strrchr(path, '.') : NULL;
+    if (dot && (!strcmp(dot, ".ppm") || !strcmp(dot, ".pnm")))
+        return "ppm";
+    return "png";
+}
+
+/* PATTERN must hold exactly one integer conversion %[0][width]d (and %%). */
+static int check_pattern(const char *p)
+{
+    int n = 0;
+    for (; *p; p++) {
+        if (*p != '%')
+            continue;
+        p++;
+        if (*p == '%')
+            continue;
+        if (*p == '0') p++;
+        while (*p >= '0' && *p <= '9') p++;
+        if (*p != 'd')
+            return -1;
+        n++;
+    }
+    return n == 1 ? 0 : -1;
+}
+
+static char **split_titles(const char *s, int *n)
+{
+    int cap = 4, k = 0;
+    char **v = malloc(cap * sizeof *v);
+    const char *p = s;
+    for (;;) {
+        const char *q = strchr(p, ',');
+        size_t len = q ? (size_t)(q - p) : strlen(p);
+        if (k == cap) v = realloc(v, (cap *= 2) * sizeof *v);
+        v[k] = malloc(len + 1);
+        memcpy(v[k], p, len);
+        v[k][len] = 0;
+        k++;
+        if (!q) break;
+        p = q + 1;
+    }
+    *n = k;
+    return v;
+}
+
+static void parse_args(int argc, char **argv, struct options *o)
+{
+    static const struct option lo[] = {
+        {"frames", 1, 0, O_FRAMES}, {"every", 1, 0, O_EVERY}, {"count", 1, 0, 'n'},
+        {"all", 0, 0, O_ALL}, {"columns", 1, 0, 'C'}, {"size", 1, 0, 's'},
+        {"gap", 1, 0, O_GAP}, {"titles", 1, 0, 't'}, {"no-stamp", 0, 0, O_NOSTAMP},
+        {"each", 1, 0, O_EACH}, {"view", 1, 0, 'V'}, {"azimuth", 1, 0, 'a'},
+        {"elevation", 1, 0, 'e'}, {"up", 1, 0, O_UP}, {"perspective", 0, 0, O_PERSP},
+        {"fov", 1, 0, O_FOV}, {"labels", 1, 0, 'l'}, {"scalars", 1, 0, O_SCALARS},
+        {"range", 1, 0, O_RANGE}, {"wireframe", 0, 0, 'w'}, {"flat", 0, 0, O_FLAT},
+        {"color", 1, 0, 'c'}, {"colour", 1, 0, 'c'}, {"background", 1, 0, 'b'},
+        {"supersample", 1, 0, O_SS}, {"format", 1, 0, 'f'}, {"output", 1, 0, 'o'},
+        {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
+        {0, 0, 0, 0}};
+    struct render_style def;
+    render_style_default(&def);
+    memset(o, 0, sizeof *o);
+    o->sel = SEL_COUNT;
+    o->count = 8;
+    o->w = o->h = 320;
+    o->gap = 4;
+    o->stamp = 1;
+    o->up = 1;
+    o->fov = 30;
+    o->ss = def.ss;
+    memcpy(o->color, def.color, 3);
+    memcpy(o->background, def.background, 3);
+    const char *view = "front";
+    int have_az = 0, have_el = 0, nsel = 0;
+    double az = 0, el = 0;
+    int c;
+    while ((c = getopt_long(argc, argv, "n:C:s:t:V:a:e:l:wc:b:f:o:vh", lo, NULL)) != -1) {
+        switch (c) {
+        case O_FRAMES: o->sel = SEL_LIST; nsel++; o->nlist = arg_intlist(optarg, "--frames", &o->list); break;
+        case O_EVERY: o->sel = SEL_EVERY; nsel++; o->every = (int)arg_long(optarg, "--every"); break;
+        case 'n': o->sel = SEL_COUNT; nsel++; o->count = (int)arg_long(optarg, "--count"); break;
+        case O_ALL: o->sel = SEL_ALL; nsel++; break;
+        case 'C':
+            o->columns = (int)arg_long(optarg, "--columns");
+            if (o->columns < 1)
+                usage_error("--columns must be at least 1");
+            break;
+        case 's':
+            if (image_parse_size(optarg, &o->w, &o->h) < 0)
+                usage_error("--size: '%s' is not WxH (e.g. 320x240, at most 16384)", optarg);
+            break;
+        case O_GAP: o->gap = (int)arg_long(optarg, "--gap"); break;
+        case 't': o->titles_arg = optarg; break;
+        case O_NOSTAMP: o->stamp = 0; break;
+        case O_EACH: o->each = optarg; break;
+        case 'V': view = optarg; break;
+        case 'a': az = arg_double(optarg, "--azimuth"); have_az = 1; break;
+        case 'e': el = arg_double(optarg, "--elevation"); have_el = 1; break;
+        case O_UP: o->up = parse_axis(optarg); break;
+        case O_PERSP: o->perspective = 1; break;
+        case O_FOV: o->fov = arg_double(optarg, "--fov"); break;
+        case 'l': o->labels = optarg; break;
+        case O_SCALARS: o->scalars = optarg; break;
+        case O_RANGE: {
+            char *end;
+            o->range[0] = strtod(optarg, &end);
+            if (end == optarg || *end != ',')
+                usage_error("--range: '%s' is not MIN,MAX", optarg);
+            o->range[1] = arg_double(end + 1, "--range");
+            if (!(o->range[1] > o->range[0]))
+                usage_error("--range: MAX must be greater than MIN");
+            o->have_range = 1;
+            break;
+        }
+        case 'w': o->wireframe = 1; break;
+        case O_FLAT: o->flat = 1; break;
+        case 'c':
+            if (color_parse(optarg, o->color) < 0)
+                usage_error("--color: '%s' is not R,G,B (0..255) or #rrggbb", optarg);
+            break;
+        case 'b':
+            if (color_parse(optarg, o->background) < 0)
+                usage_error("--background: '%s' is not R,G,B (0..255) or #rrggbb", optarg);
+            break;
+        case O_SS: o->ss = (int)arg_long(optarg, "--supersample"); break;
+        case 'f': o->format = optarg; break;
+        case 'o': o->output = optarg; break;
+        case 'v': verbose++; break;
+        case 'h': print_help_and_exit(help);
+        case O_VERSION: print_version_and_exit();
+        default: usage_error("unknown option");
+        }
+    }
+    static const char *stdin_only[] = {"-"};
+    if (optind < argc) {
+        o->inputs = (const char **)argv + optind;
+        o->ninputs = argc - optind;
+    } else {
+        o->inputs = stdin_only;
+        o->ninputs = 1;
+    }
+    int nstdin = 0;
+    for (int i = 0; i < o->ninputs; i++) nstdin += !strcmp(o->inputs[i], "-");
+    if (nstdin > 1)
+        usage_error("stdin ('-') can be read only once");
+    if (nsel > 1)
+        usage_error("choose frames with one of --frames, --every, --count, --all");
+    if (o->sel == SEL_COUNT && o->count < 1)
+        usage_error("--count must be at least 1");
+    if (o->sel == SEL_EVERY && o->every < 1)
+        usage_error("--every must be at least 1");
+    if (o->gap < 0 || o->gap > 1000)
+        usage_error("--gap must be in 0..1000");
+    if (camera_named_view(view, &o->azimuth, &o->elevation) < 0)
+        usage_error("unknown view '%s' (front, back, left, right, top, bottom, iso)", view);
+    if (have_az) o->azimuth = az;
+    if (have_el) o->elevation = el;
+    if (o->elevation < -90 || o->elevation > 90)
+        usage_error("--elevation must be in -90..90");
+    if (!(o->fov > 1 && o->fov < 170))
+        usage_error("--fov must be in 1..170 degrees");
+    if (o->ss < 1 || o->ss > 8)
+        usage_error("--supersample must be in 1..8");
+    if (o->labels && o->scalars)
+        usage_error("--labels and --scalars exclude each other");
+    if (o->have_range && !o->scalars)
+        usage_error("--range needs --scalars");
+    if (o->titles_arg) {
+        o->titles = split_titles(o->titles_arg, &o->ntitles);
+        if (o->ntitles != o->ninputs)
+            usage_error("--titles: %d title%s for %d input%s", o->ntitles,
+                        o->ntitles == 1 ? "" : "s", o->ninputs, o->ninputs == 1 ? "" : "s");
+    }
+    if (o->each) {
+        if (check_pattern(o->each) < 0)
+            usage_error("--each: '%s' needs exactly one integer conversion like %%04d", o->each);
+        if (o->output)
+            usage_error("--each and --output exclude each other");
+    }
+    if (!o->format)
+        o->format = format_from_name(o->each ? o->each : o->output);
+    if (strcmp(o->format, "png") && strcmp(o->format, "ppm"))
+        usage_error("--format: '%s' is not png or ppm", o->format);
+}
+
+/* one input: its chosen frames, kept in memory */
+struct input {
+    const char *name;
+    int nv, nf, nframes;
+    int *F;                /* #F by 3 */
+    int nsel;
+    int *sel;              /* chosen frame indices, ascending as given */
+    double **X;            /* nsel frames, #V by 3 each */
+};
+
+/* Choose frame indices of a stream of n frames; -1 entries are skipped
+ * tiles (an index this input does not have). */
+static int choose(const struct options *o, int n, int **out)
+{
+    int *s;
+    int k = 0;
+    switch (o->sel) {
+    case SEL_LIST:
+        s = malloc((size_t)o->nlist * sizeof *s);
+        for (int i = 0; i < o->nlist; i++) {
+            int f = o->list[i] < 0 ? n + o->list[i] : o->list[i];
+            s[k++] = f >= 0 && f < n ? f : -1;
+        }
+        break;
+    case SEL_EVERY:
+        s = malloc(((size_t)n / o->every + 1) * sizeof *s);
+        for (int f = 0; f < n; f += o->every) s[k++] = f;
+        break;
+    case SEL_ALL:
+        s = malloc(((size_t)n + 1) * sizeof *s);
+        for (int f = 0; f < n; f++) s[k++] = f;
+        break;
+    default: {
+        int c = o->count < n ? o->count : n;
+        s = malloc(((size_t)c + 1) * sizeof *s);
+        for (int i = 0; i < c; i++)
+            s[k++] = c == 1 ? 0 : (int)((double)i * (n - 1) / (c - 1) + 0.5);
+        break;
+    }
+    }
+    *out = s;
+    return k;
+}
+
+/* Read one input, keeping the chosen frames only when the frame count is
+ * announced; with "frames ?" every frame is kept until the count is known. */
+static void read_input(const struct options *o, const char *path, struct input *in)
+{
+    struct mesh_reader r;
+    if (mesh_reader_open(&r, path) < 0)
+        die("%s", cm_errmsg());
+    memset(in, 0, sizeof *in);
+    in->name = strdup(r.name);
+    in->nv = r.nv;
+    in->nf = r.nf;
+    in->F = malloc(((size_t)r.nf + 1) * 3 * sizeof *in->F);
+    memcpy(in->F, r.F, (size_t)r.nf * 3 * sizeof *in->F);
+    size_t fsz = ((size_t)r.nv + 1) * 3 * sizeof(double);
+    int known = r.nframes >= 0;
+    int *want = NULL, nwant = 0;
+    char *keep = NULL;
+    if (known) {
+        nwant = choose(o, r.nframes, &want);
+        keep = calloc((size_t)r.nframes + 1, 1);
+        for (int i = 0; i < nwant; i++)
+            if (want[i] >= 0) keep[want[i]] = 1;
+    }
+    double **frames = NULL;   /* indexed by frame number */
+    int cap = 0, k = 0, rc;
+    double *scratch = malloc(fsz);
+    if (!scratch)
+        die("out of memory");
+    for (;;) {
+        double *dst = scratch;
+        if (!known || keep[k < r.nframes ? k : r.nframes]) {
+            dst = malloc(fsz);
+            if (!dst)
+                die("out of memory keeping the frames of '%s'", r.name);
+        }
+        rc = mesh_reader_next(&r, dst, NULL);
+        if (rc <= 0) {
+            if (dst != scratch) free(dst);
+            break;
+        }
+        if (k == cap) {
+            cap = cap ? 2 * cap : 64;
+            frames = realloc(frames, (size_t)cap * sizeof *frames);
+        }
+        frames[k++] = dst != scratch ? dst : NULL;
+    }
+    if (rc < 0)
+        die("%s", cm_errmsg());
+    if (k == 0)
+        die("cannot read '%s': no frames", r.name);
+    in->nframes = k;
+    if (!known)
+        nwant = choose(o, k, &want);
+    in->nsel = nwant;
+    in->sel = want;
+    in->X = calloc((size_t)nwant + 1, sizeof *in->X);
+    for (int i = 0; i < nwant; i++)
+        if (want[i] >= 0) in->X[i] = frames[want[i]];
+    /* frames kept but not chosen (only with "frames ?") */
+    for (int f = 0; f < k; f++) {
+        int used = 0;
+        for (int i = 0; i < nwant && !used; i++) used = want[i] == f;
+        if (!used) free(frames[f]);
+    }
+    free(frames);
+    free(keep);
+    free(scratch);
+    mesh_reader_close(&r);
+}
+
+/* the colour between tiles: the background, a little darker (lighter if dark) */
+static void gap_colour(const unsigned char bg[3], unsigned char out[3])
+{
+    int lum = (299 * bg[0] + 587 * bg[1] + 114 * bg[2]) / 1000;
+    for (int k = 0; k < 3; k++)
+        out[k] = (unsigned char)(lum > 128 ? bg[k] * 0.85 : bg[k] + (255 - bg[k]) * 0.2);
+}
+
+/* dark text on a light background, light text on a dark one */
+static void text_colour(const unsigned char bg[3], unsigned char fg[3])
+{
+    int lum = (299 * bg[0] + 587 * bg[1] + 114 * bg[2]) / 1000;
+    fg[0] = fg[1] = fg[2] = lum > 128 ? 40 : 225;
+}
+
+static void render_tile(const struct options *o, const struct input *in, int i,
+                        const struct camera *cam, struct render_style *st,
+                        const struct mesh_colors *mc, const char *label, struct image *tile)
+{
+    if (o->labels || o->scalars)
+        mesh_colors_apply(mc, st);
+    if (raster_render(in->X[i], in->F, in->nv, in->nf, cam, st, o->w, o->h, tile) < 0)
+        die("%s", cm_errmsg());
+    if (label) {
+        int sc = o->h >= 480 ? 3 : o->h >= 200 ? 2 : 1;
+        unsigned char fg[3];
+        text_colour(o->background, fg);
+        image_text(tile, 2 * sc, 2 * sc, label, sc, fg, o->background);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    struct options o;
+    parse_args(argc, argv, &o);
+    double t0 = now_seconds();
+
+    struct input *in = calloc((size_t)o.ninputs, sizeof *in);
+    for (int j = 0; j < o.ninputs; j++) read_input(&o, o.inputs[j], &in[j]);
+
+    /* validate the choice and fit one camera to every chosen frame */
+    struct camera cam;
+    camera_init(&cam, o.azimuth, o.elevation, o.up);
+    cam.perspective = o.perspective;
+    cam.fov = o.fov;
+    int maxsel = 0, tiles = 0;
+    for (int j = 0; j < o.ninputs; j++) {
+        if (in[j].nsel > maxsel) maxsel = in[j].nsel;
+        for (int i = 0; i < in[j].nsel; i++)
+            if (in[j].X[i]) {
+                camera_fit(&cam, in[j].X[i], in[j].nv);
+                tiles++;
+            }
+    }
+    if (o.sel == SEL_LIST)
+        for (int i = 0; i < o.nlist; i++) {
+            int any = 0;
+            for (int j = 0; j < o.ninputs; j++) any |= in[j].sel[i] >= 0;
+            if (!any) {
+                if (o.ninputs == 1)
+                    die("cannot read '%s': no frame %d (the stream has %d frame%s)", in[0].name,
+                        o.list[i], in[0].nframes, in[0].nframes == 1 ? "" : "s");
+                die("no input has frame %d", o.list[i]);
+            }
+        }
+    if (tiles == 0)
+        die("no frames to draw");
+
+    struct render_style st;
+    render_style_default(&st);
+    memcpy(st.color, o.color, 3);
+    memcpy(st.background, o.background, 3);
+    st.wireframe = o.wireframe;
+    st.flat = o.flat;
+    st.ss = o.ss;
+    struct mesh_colors mc;
+    memset(&mc, 0, sizeof mc);
+    if (o.labels && mesh_colors_labels(o.labels, in[0].nv, in[0].nf, &mc) < 0)
+        die("%s", cm_errmsg());
+    if (o.scalars &&
+        mesh_colors_scalars(o.scalars, in[0].nv, in[0].nf, o.have_range ? o.range : NULL, &mc) < 0)
+        die("%s", cm_errmsg());
+    if (o.labels || o.scalars)
+        for (int j = 1; j < o.ninputs; j++) {
+            char what[512];
+            snprintf(what, sizeof what, "cannot colour '%s'", in[j].name);
+            if (mesh_colors_check(&mc, in[j].nv, in[j].nf, what) < 0)
+                die("%s", cm_errmsg());
+        }
+    double t1 = now_seconds();
+    info(1, "%d input%s, %d tiles of %dx%d; read %.1f ms", o.ninputs, o.ninputs == 1 ? "" : "s",
+         tiles, o.w, o.h, 1e3 * (t1 - t0));
+
+    char label[64];
+    unsigned char gapc[3];
+    gap_colour(o.background, gapc);
+    if (o.each) {
+        /* one image per chosen frame slot: inputs side by side */
+        struct progress pr;
+        progress_start(&pr, progname, maxsel);
+        struct image *row = calloc((size_t)o.ninputs, sizeof *row);
+        for (int i = 0; i < maxsel; i++) {
+            int fnum = -1;   /* file number: the frame of the first input drawn */
+            for (int j = 0; j < o.ninputs && fnum < 0; j++)
+                if (i < in[j].nsel && in[j].X[i]) fnum = in[j].sel[i];
+            for (int j = 0; j < o.ninputs; j++) {
+                image_free(&row[j]);
+                if (i >= in[j].nsel || !in[j].X[i]) {
+                    if (image_alloc(&row[j], o.w, o.h, o.background) < 0)
+                        die("%s", cm_errmsg());
+                    continue;
+                }
+                const char *lab = NULL;
+                if (o.stamp || o.titles) {
+                    if (o.titles && o.stamp)
+                        snprintf(label, sizeof label, "%.40s %d", o.titles[j], in[j].sel[i]);
+                    else if (o.titles)
+                        snprintf(label, sizeof label, "%.60s", o.titles[j]);
+                    else
+                        snprintf(label, sizeof label, "%d", in[j].sel[i]);
+                    lab = label;
+                }
+                render_tile(&o, &in[j], i, &cam, &st, &mc, lab, &row[j]);
+            }
+            struct image im;
+            if (o.ninputs == 1) {
+                im = row[0];
+                row[0].rgb = NULL;
+            } else if (image_grid(row, o.ninputs, o.ninputs, o.gap, gapc, &im) < 0)
+                die("%s", cm_errmsg());
+            size_t n = strlen(o.each) + 32;
+            char *path = malloc(n);
+            snprintf(path, n, o.each, fnum);
+            FILE *f = out_open(path);
+            if (image_write(f, &im, o.format) < 0)
+                die("cannot write '%s': %s", path, cm_errmsg());
+            out_close(f);
+            info(2, "wrote %s", path);
+            free(path);
+            image_free(&im);
+            progress_step(&pr, i + 1);
+        }
+        progress_end(&pr);
+        for (int j = 0; j < o.ninputs; j++) image_free(&row[j]);
+        free(row);
+    } else {
+        /* contact sheet: each input starts a new row; titles in a left margin */
+        int C = o.columns > 0 ? o.columns : maxsel < 8 ? maxsel : 8;
+        int nrows = 0;
+        for (int j = 0; j < o.ninputs; j++) nrows += (in[j].nsel + C - 1) / C;
+        int tsc = o.h >= 480 ? 3 : o.h >= 200 ? 2 : 1;
+        int margin = 0;
+        if (o.titles)
+            for (int j = 0; j < o.ninputs; j++) {
+                int tw = text_width(o.titles[j], tsc) + 2 * tsc + o.gap;
+                if (tw > margin) margin = tw;
+            }
+        struct image sheet;
+        if (image_alloc(&sheet, margin + C * o.w + (C + 1) * o.gap,
+                        nrows * o.h + (nrows + 1) * o.gap, gapc) < 0)
+            die("%s", cm_errmsg());
+        unsigned char fg[3];
+        text_colour(gapc, fg);
+        struct progress pr;
+        progress_start(&pr, progname, tiles);
+        int r0 = 0, done = 0;
+        for (int j = 0; j < o.ninputs; j++) {
+            if (o.titles)
+                image_text(&sheet, o.gap + tsc, o.gap + r0 * (o.h + o.gap) + (o.h - text_height(tsc)) / 2,
+                           o.titles[j], tsc, fg, NULL);
+            for (int i = 0; i < in[j].nsel; i++) {
+                if (!in[j].X[i])
+                    continue;
+                struct image tile;
+                snprintf(label, sizeof label, "%d", in[j].sel[i]);
+                render_tile(&o, &in[j], i, &cam, &st, &mc, o.stamp ? label : NULL, &tile);
+                int r = r0 + i / C, c = i % C;
+                image_blit(&sheet, &tile, margin + o.gap + c * (o.w + o.gap), o.gap + r * (o.h + o.gap));
+                image_free(&tile);
+                progress_step(&pr, ++done);
+            }
+            r0 += (in[j].nsel + C - 1) / C;
+        }
+        progress_end(&pr);
+        double t2 = now_seconds();
+        FILE *out = out_open(o.output);
+        if (image_write(out, &sheet, o.format) < 0)
+            die("cannot write output: %s", cm_errmsg());
+        out_close(out);
+        info(1, "sheet %dx%d (%d columns, %d rows): render %.1f ms, write %s %.1f ms", sheet.w,
+             sheet.h, C, nrows, 1e3 * (t2 - t1), o.format, 1e3 * (now_seconds() - t2));
+        image_free(&sheet);
+    }
+    mesh_colors_free(&mc);
+    return 0;
+}
