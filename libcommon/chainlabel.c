@@ -36,15 +36,30 @@ double chain_energy(const struct chain *p, const int *l, double *unary, double *
     return eu + ep;
 }
 
+/* Vn[b] = min_a (h[a] + T[a][b]) for a symmetric T: a vectorizable
+ * min-plus product (no argmin in the hot loop; the backtrack recomputes it). */
+__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
+static void minplus(const double *restrict h, const double *restrict T, int d, double *restrict Vn)
+{
+    for (int b = 0; b < d; b++) Vn[b] = INFINITY;
+    for (int a = 0; a < d; a++) {
+        const double *restrict Ta = T + (size_t)a * d;
+        double ha = h[a];
+        for (int b = 0; b < d; b++) {
+            double v = ha + Ta[b];
+            Vn[b] = v < Vn[b] ? v : Vn[b];
+        }
+    }
+}
+
 double chain_dp(const struct chain *p, int *l)
 {
     int n = p->n, d = p->d;
-    double *V = malloc(sizeof(double) * d);      /* best energy ending in label a */
-    double *h = malloc(sizeof(double) * d);
+    double *V = malloc(sizeof(double) * d);
     double *Vn = malloc(sizeof(double) * d);
-    int *back = malloc(sizeof(int) * (size_t)n * d);
-    if (!V || !h || !Vn || !back) {
-        free(V); free(h); free(Vn); free(back);
+    double *hs = malloc(sizeof(double) * (size_t)n * d);   /* h of every frame, for the backtrack */
+    if (!V || !Vn || !hs) {
+        free(V); free(Vn); free(hs);
         cm_seterr("chain_dp: out of memory (%d frames, %d labels)", n, d);
         return NAN;
     }
@@ -55,27 +70,16 @@ double chain_dp(const struct chain *p, int *l)
         while (linked(p, end)) end++;
         for (int a = 0; a < d; a++) V[a] = p->U[(size_t)start * d + a];
         for (int f = start; f < end; f++) {
-            /* Vn[b] = U[f+1][b] + c + H[f][b] + min_a (V[a] - H[f][a] + T[a][b]) */
+            /* V'[b] = U[f+1][b] + c + H[f][b] + min_a (V[a] - H[f][a] + T[a][b]) */
             const double *Hf = p->H ? p->H + (size_t)f * d : NULL;
+            double *h = hs + (size_t)f * d;
             for (int a = 0; a < d; a++) h[a] = V[a] - (Hf ? Hf[a] : 0);
             double cf = p->c ? p->c[f] : 0;
-            int *bk = back + (size_t)(f + 1) * d;
-            if (p->T) {
-                for (int b = 0; b < d; b++) Vn[b] = INFINITY;
-                for (int b = 0; b < d; b++) bk[b] = 0;
-                /* loop order a outer for a contiguous T row (T symmetric) */
-                for (int a = 0; a < d; a++) {
-                    const double *Ta = p->T + (size_t)a * d;
-                    double ha = h[a];
-                    for (int b = 0; b < d; b++) {
-                        double v = ha + Ta[b];
-                        if (v < Vn[b]) { Vn[b] = v; bk[b] = a; }
-                    }
-                }
-            } else {
-                int am = 0;
-                for (int a = 1; a < d; a++) if (h[a] < h[am]) am = a;
-                for (int b = 0; b < d; b++) { Vn[b] = h[am]; bk[b] = am; }
+            if (p->T) minplus(h, p->T, d, Vn);
+            else {
+                double m = h[0];
+                for (int a = 1; a < d; a++) if (h[a] < m) m = h[a];
+                for (int b = 0; b < d; b++) Vn[b] = m;
             }
             const double *Un = p->U + (size_t)(f + 1) * d;
             for (int b = 0; b < d; b++) V[b] = Vn[b] + Un[b] + cf + (Hf ? Hf[b] : 0);
@@ -84,10 +88,20 @@ double chain_dp(const struct chain *p, int *l)
         for (int a = 1; a < d; a++) if (V[a] < V[best]) best = a;
         total += V[best];
         l[end] = best;
-        for (int f = end; f > start; f--) l[f - 1] = back[(size_t)f * d + l[f]];
+        for (int f = end - 1; f >= start; f--) {
+            /* argmin_a h_f[a] + T[a][l_{f+1}], lowest a on ties */
+            const double *h = hs + (size_t)f * d;
+            int b = l[f + 1], am = 0;
+            double m = INFINITY;
+            for (int a = 0; a < d; a++) {
+                double v = h[a] + (p->T ? p->T[(size_t)a * d + b] : 0);
+                if (v < m) { m = v; am = a; }
+            }
+            l[f] = am;
+        }
         start = end + 1;
     }
-    free(V); free(h); free(Vn); free(back);
+    free(V); free(Vn); free(hs);
     return total;
 }
 

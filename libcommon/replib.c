@@ -260,27 +260,6 @@ static int lstate_apply(const struct lstate *s, const double *Y1, int n1, const 
     return 0;
 }
 
-/* Coefficients C (d by N): r_a = sum_g C_ag z_g. */
-static int lstate_coeffs(const struct lstate *s, int N, double *C)
-{
-    int d = s->d, nf = s->nfree;
-    memset(C, 0, sizeof(double) * (size_t)d * N);
-    for (int a = 0; a < d; a++)
-        if (s->src[a] >= 0) C[(size_t)a * N + s->src[a]] = 1;
-    if (nf == 0) return 0;
-    double *tmp = calloc((size_t)nf * N, sizeof(double));
-    if (!tmp) return cm_seterr("replib: out of memory");
-    for (int k = 0; k < s->nnz; k++) tmp[(size_t)s->ri[k] * N + s->ci[k]] += s->v[k];
-    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, N, 1.0,
-                s->Uf, nf, tmp, N);
-    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, N, 1.0,
-                s->Uf, nf, tmp, N);
-    for (int p = 0; p < nf; p++)
-        memcpy(C + (size_t)s->fidx[p] * N, tmp + (size_t)p * N, sizeof(double) * N);
-    free(tmp);
-    return 0;
-}
-
 /* ---- costs: P (N by d, z_g . r_a) and Q (d by d, r_a . r_b) ---- */
 
 struct work {
@@ -316,13 +295,51 @@ static int work_init(struct work *w, const struct replib_data *D, int d)
     return 0;
 }
 
+/* Gram back end: with r_a = sum_g C_ag z_g, P = K C^T and Q = C K C^T.
+ * Row copies read K directly; solved pieces need only the sparse B:
+ * P_F^T = A_FF^-1 (B K) (nnz N flops + two triangular solves), and
+ * Q_F = A_FF^-1 (B P) -- never a dense N x N x d product. */
+static int gram_costs(const struct replib_data *D, const struct lstate *s, struct work *w)
+{
+    int N = D->N, d = w->d, nf = s->nfree;
+    const double *K = D->K;
+    double *PT = w->C;      /* d by N: PT[a][g] = z_g . r_a */
+    for (int a = 0; a < d; a++)
+        if (s->src[a] >= 0) memcpy(PT + (size_t)a * N, K + (size_t)s->src[a] * N, sizeof(double) * N);
+    double *tmp = NULL, *M = NULL;
+    if (nf > 0) {
+        tmp = calloc((size_t)nf * N, sizeof(double));
+        M = calloc((size_t)nf * d, sizeof(double));
+        if (!tmp || !M) { free(tmp); free(M); return cm_seterr("replib: out of memory"); }
+        for (int k = 0; k < s->nnz; k++)
+            cblas_daxpy(N, s->v[k], K + (size_t)s->ci[k] * N, 1, tmp + (size_t)s->ri[k] * N, 1);
+        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, N, 1.0, s->Uf, nf, tmp, N);
+        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, N, 1.0, s->Uf, nf, tmp, N);
+        for (int p = 0; p < nf; p++)
+            memcpy(PT + (size_t)s->fidx[p] * N, tmp + (size_t)p * N, sizeof(double) * N);
+    }
+    for (int g = 0; g < N; g++)
+        for (int a = 0; a < d; a++) w->P[(size_t)g * d + a] = PT[(size_t)a * N + g];
+    /* Q rows: a row copy a reads P at its source; solved rows via B P */
+    for (int a = 0; a < d; a++)
+        if (s->src[a] >= 0) memcpy(w->Q + (size_t)a * d, w->P + (size_t)s->src[a] * d, sizeof(double) * d);
+    if (nf > 0) {
+        for (int k = 0; k < s->nnz; k++)
+            cblas_daxpy(d, s->v[k], w->P + (size_t)s->ci[k] * d, 1, M + (size_t)s->ri[k] * d, 1);
+        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, d, 1.0, s->Uf, nf, M, d);
+        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, d, 1.0, s->Uf, nf, M, d);
+        for (int p = 0; p < nf; p++)
+            memcpy(w->Q + (size_t)s->fidx[p] * d, M + (size_t)p * d, sizeof(double) * d);
+    }
+    free(tmp); free(M);
+    return 0;
+}
+
 static int compute_costs(const struct replib_data *D, const struct lstate *s, double mu, struct work *w)
 {
     int N = D->N, n = D->n, d = w->d, m3 = D->m3;
     if (D->K) {
-        if (lstate_coeffs(s, N, w->C) < 0) return -1;
-        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, N, d, N, 1.0, D->K, N, w->C, N, 0.0, w->P, d);
-        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, d, d, N, 1.0, w->C, N, w->P, d, 0.0, w->Q, d);
+        if (gram_costs(D, s, w) < 0) return -1;
     } else {
         if (lstate_apply(s, D->Z, N, NULL, m3, w->Rw) < 0) return -1;
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, m3, 1.0, D->Z, m3, w->Rw, m3, 0.0, w->P, d);

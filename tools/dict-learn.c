@@ -7,6 +7,7 @@
  * Size selection: --max-error (Fig. 16) and --sweep (Fig. 8).
  */
 #include "replib.h"
+#include "blas_tune.h"
 #include "mesh.h"
 #include "columns.h"
 #include "tool.h"
@@ -160,6 +161,7 @@ static void parse_sweep(const char *s, int *d1, int *d2, int *step)
 
 int main(int argc, char **argv)
 {
+    blas_tune(argv);
     tool_init(argc, argv);
     struct options o;
     parse_args(argc, argv, &o);
@@ -193,8 +195,8 @@ int main(int argc, char **argv)
     D.n = m.nframes; D.nv = m.nv; D.X = m.V; D.nfix = nfix; D.Rfix = nfix ? fx.V : NULL;
     D.w = o.weights ? wc.x : NULL; D.cut = m.cut; D.gram = o.gram;
     if (replib_prepare(&D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
-    info(1, "%d frames, %d vertices, %d clips, %s back end, prepared in %.3f s", m.nframes, m.nv,
-         mesh_nclips(&m), D.K ? "Gram" : "direct", D.prep_seconds);
+    info(1, "%d frames, %d vertices, %d clips, %s back end (OpenBLAS %s), prepared in %.3f s", m.nframes, m.nv,
+         mesh_nclips(&m), D.K ? "Gram" : "direct", blas_corename(), D.prep_seconds);
 
     if (o.sweep) {
         FILE *out = out_open(o.output);

@@ -1,0 +1,29 @@
+/* blas_tune.h -- pick a fast OpenBLAS kernel (tools only: program harness,
+ * like tool.h).
+ *
+ * Debian's OpenBLAS 0.3.21 does not recognise recent Intel CPUs (Sapphire
+ * Rapids) and falls back to its generic "Prescott" SSE3 kernels; the
+ * AVX-512 kernels are 1.4-4x faster there (measured on dict-learn's Gram
+ * matrix).  OpenBLAS reads OPENBLAS_CORETYPE only when it is loaded, so the
+ * fix has to happen before main(): blas_tune() re-executes the program once
+ * (/proc/self/exe, same argv and environment) with OPENBLAS_CORETYPE set to
+ * SkylakeX (AVX-512F) or Haswell (AVX2).  It does nothing when the user set
+ * OPENBLAS_CORETYPE, when STOPMO_BLAS_TUNE=0, when OpenBLAS already chose a
+ * specific kernel, or when re-execution fails.  Call it first in main(),
+ * before reading any input.
+ */
+#ifndef CM_BLAS_TUNE_H
+#define CM_BLAS_TUNE_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+void blas_tune(char **argv);
+
+/* The kernel OpenBLAS uses ("SkylakeX", "Prescott", ...). */
+const char *blas_corename(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
