@@ -36,7 +36,7 @@ int main(int argc, char **argv)
         {"every", 1, 0, 'k'}, {"pieces", 1, 0, 'd'}, {"labels-out", 1, 0, 'L'},
         {"output", 1, 0, 'o'}, {"raw", 0, 0, 'R'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
-    long k = 0, d = 0;
+    long k = 0, d = -1;
     const char *labels_out = NULL, *output = NULL;
     int raw = 0, c;
     while ((c = getopt_long(argc, argv, "k:d:o:h", lo, NULL)) != -1) {
@@ -52,8 +52,8 @@ int main(int argc, char **argv)
         }
     }
     if (optind < argc - 1) usage_error("expected at most one input FILE");
-    if (k && d) usage_error("give -k or -d, not both");
-    if (!k && !d) d = 20;
+    if (k && d >= 0) usage_error("give -k or -d, not both");
+    if (!k && d < 0) d = 20;
     if (!k && d < 1) die("-d %ld: the library needs at least one piece", d);
     const char *input = optind < argc ? argv[optind] : NULL;
     struct mesh m;
