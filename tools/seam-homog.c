@@ -11,25 +11,25 @@
  * is spooled to a temporary raw MESH file first.
  */
 #include "bilaplacian.h"
+#include "blas_tune.h"
 #include "cm_error.h"
 #include "columns.h"
 #include "geometry.h"
 #include "mesh.h"
+#include "mesh_spool.h"
 #include "progress.h"
 #include "rng.h"
 #include "seam.h"
 #include "spd.h"
 #include "tool.h"
 #include "topology.h"
-#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
-#include <sys/stat.h>
+
 #include <time.h>
-#include <unistd.h>
 
 static const char help[] =
 "Usage: seam-homog [options] -l LABELS [file]\n"
@@ -125,62 +125,26 @@ static double cpu_seconds(void)
     return (double)clock() / CLOCKS_PER_SEC;
 }
 
-/* ---- the temporary spool for standard input ---- */
-static char *spool_path;
-
-static void remove_spool(void)
-{
-    if (spool_path) unlink(spool_path);
-}
-
-static int is_regular_file(const char *path)
-{
-    struct stat st;
-    return strcmp(path, "-") && stat(path, &st) == 0 && S_ISREG(st.st_mode);
-}
-
-/* Pass 1: read every frame (validating the whole stream), sum the
- * positions into S (#V by 3), spool to a raw temporary file when `spool`.
- * Returns the number of frames. */
-static int pass_average(struct mesh_reader *r, int spool, double *S)
+/* Pass 1: read every frame (validating the whole stream) and sum the
+ * positions into S (#V by 3); the spool keeps a copy when the input is not
+ * a regular file.  Returns the number of frames. */
+static int pass_average(struct mesh_reader *r, struct mesh_spool *sp, double *S)
 {
     size_t n3 = (size_t)r->nv * 3;
     double *X = malloc((n3 + 1) * sizeof *X);
-    struct mesh_writer w;
-    FILE *sf = NULL;
-    if (spool) {
-        const char *dir = getenv("TMPDIR");
-        if (!dir || !*dir) dir = "/tmp";
-        size_t n = strlen(dir) + 32;
-        spool_path = malloc(n);
-        snprintf(spool_path, n, "%s/seam-homog.XXXXXX", dir);
-        int fd = mkstemp(spool_path);
-        if (fd < 0) {
-            int e = errno;
-            free(spool_path);
-            spool_path = NULL;
-            die("cannot create a temporary file in '%s': %s", dir, strerror(e));
-        }
-        atexit(remove_spool);
-        sf = fdopen(fd, "wb");
-        if (!sf || mesh_writer_open(&w, sf, r->nv, r->nf, r->F, -1, 1) < 0)
-            die("cannot write temporary file '%s': %s", spool_path, cm_errmsg());
-    }
     memset(S, 0, n3 * sizeof *S);
     struct progress p;
     progress_start(&p, "seam-homog: average", r->nframes);
     int n = 0, cut, rc;
     while ((rc = mesh_reader_next(r, X, &cut)) > 0) {
         for (size_t i = 0; i < n3; i++) S[i] += X[i];
-        if (sf && mesh_writer_frame(&w, X, cut) < 0)
-            die("cannot write temporary file '%s': %s", spool_path, cm_errmsg());
+        if (mesh_spool_frame(sp, X, cut) < 0)
+            die("%s", cm_errmsg());
         progress_step(&p, ++n);
     }
     progress_end(&p);
     if (rc < 0)
         die("%s", cm_errmsg());
-    if (sf && (mesh_writer_close(&w) < 0 || fclose(sf) != 0))
-        die("cannot write temporary file '%s': %s", spool_path, strerror(errno));
     free(X);
     return n;
 }
@@ -223,6 +187,7 @@ static double check_minimal(const cholmod_sparse *Q, const double *D, const unsi
 
 int main(int argc, char **argv)
 {
+    blas_tune(argv);            /* CHOLMOD's supernodal kernels are BLAS */
     tool_init(argc, argv);
     struct options o;
     parse_args(argc, argv, &o);
@@ -253,10 +218,13 @@ int main(int argc, char **argv)
 
     /* pass 1: average (and validate every frame before writing anything) */
     double t0 = now_seconds(), c0 = cpu_seconds();
-    int spool = !is_regular_file(o.input);
+    struct mesh_spool sp;
+    if (mesh_spool_begin(&sp, o.input, &r) < 0)
+        die("%s", cm_errmsg());
+    int spool = sp.temp;
     size_t n3 = (size_t)nv * 3;
     double *A = malloc((n3 + 1) * sizeof *A);
-    int nframes = pass_average(&r, spool, A);
+    int nframes = pass_average(&r, &sp, A);
     mesh_reader_close(&r);
     for (size_t i = 0; i < n3; i++) A[i] /= nframes;
     double t1 = now_seconds();
@@ -273,14 +241,8 @@ int main(int argc, char **argv)
          (size_t)((int *)Q->p)[nv], t2 - t1);
 
     /* pass 2: solve each frame and stream it out */
-    const char *src = spool ? spool_path : o.input;
-    if (mesh_reader_open(&r, src) < 0)
+    if (mesh_spool_rewind(&sp, &r) < 0)
         die("%s", cm_errmsg());
-    if (spool) {               /* the spool stays readable through r */
-        unlink(spool_path);
-        free(spool_path);
-        spool_path = NULL;
-    }
     if (r.nv != nv || r.nf != nf || memcmp(r.F, F, (size_t)nf * 3 * sizeof *F))
         die("cannot read '%s': the file changed between the two passes", o.input);
     FILE *out = out_open(o.output);
@@ -376,6 +338,7 @@ int main(int argc, char **argv)
     if (verbose && getrusage(RUSAGE_SELF, &ru) == 0)
         info(1, "peak memory (max resident set): %.1f MB", ru.ru_maxrss / 1024.0);
     mesh_reader_close(&r);
+    mesh_spool_free(&sp);
     quad_solver_free(S);
     cholmod_free_sparse(&Q, cm_cholmod());
     topology_free(&t);
