@@ -41,12 +41,13 @@ void camera_init(struct camera *c, double azimuth, double elevation, int up)
     /* y-up frame from world: P (rows) maps world coordinates to it */
     double P[9];
     memset(P, 0, sizeof P);
-    if (up == 2) {          /* x' = x, y' = z, z' = -y */
-        P[0] = 1; P[5] = 1; P[7] = -1;
-    } else if (up == 0) {   /* x' = -y, y' = x, z' = z */
-        P[1] = -1; P[3] = 1; P[8] = 1;
-    } else {
-        P[0] = P[4] = P[8] = 1;
+    switch (up) {
+    case 0: P[1] = -1; P[3] = 1; P[8] = 1; break;    /* +x: x' = -y, y' = x, z' = z */
+    case 2: P[0] = 1; P[5] = 1; P[7] = -1; break;    /* +z: x' = x, y' = z, z' = -y */
+    case 3: P[1] = 1; P[3] = -1; P[8] = 1; break;    /* -x: x' = y, y' = -x, z' = z */
+    case 4: P[0] = 1; P[4] = -1; P[8] = -1; break;   /* -y: x' = x, y' = -y, z' = -z */
+    case 5: P[0] = 1; P[5] = -1; P[7] = 1; break;    /* -z: x' = x, y' = -z, z' = y */
+    default: P[0] = P[4] = P[8] = 1; break;          /* +y */
     }
     const double *M[3] = {r, u, d};
     for (int i = 0; i < 3; i++)
@@ -227,6 +228,25 @@ static int64_t edge_bias(int64_t dx, int64_t dy)
     return (dy > 0 || (dy == 0 && dx < 0)) ? 0 : -1;
 }
 
+/* Narrow [lo, hi] to the steps k with w + e k >= 0 (exact integers);
+ * returns 0 if none is left. */
+static inline int span(int64_t w, int64_t e, int64_t *lo, int64_t *hi)
+{
+    if (e > 0) {
+        if (w < 0) {
+            int64_t k = (-w + e - 1) / e;   /* ceil(-w / e) */
+            if (k > *lo) *lo = k;
+        }
+    } else if (e < 0) {
+        if (w < 0)
+            return 0;
+        int64_t k = w / -e;                 /* floor(w / -e) */
+        if (k < *hi) *hi = k;
+    } else if (w < 0)
+        return 0;
+    return *lo <= *hi;
+}
+
 /* sample bounding box of face f, clipped to [0, W) x [0, H); 0 if empty */
 static int face_bbox(const int32_t *XY, const int *t, int W, int H, int *x0, int *x1, int *y0,
                      int *y1)
@@ -295,13 +315,14 @@ static void rasterize_face(int f, const int *t, const int32_t *XY, const float *
     for (int y = ya; y <= yb; y++, r0 += e0y, r1 += e1y, r2 += e2y, zrow += dzdy) {
         int64_t w0 = r0, w1 = r1, w2 = r2;
         double z = zrow;
-        int x = xa;
-        /* skip to the first covered sample, then run while covered */
-        while (x <= xb && (w0 | w1 | w2) < 0) {
-            x++; w0 += e0x; w1 += e1x; w2 += e2x; z += dzdx;
-        }
-        size_t i = (size_t)(y - ty) * TW + (x - tx);
-        for (; x <= xb && (w0 | w1 | w2) >= 0; x++, i++, w0 += e0x, w1 += e1x, w2 += e2x, z += dzdx) {
+        (void)w0; (void)w1; (void)w2;
+        /* the covered span of this row, exactly: w_i + e_ix * k >= 0 */
+        int64_t lo = 0, hi = xb - xa;
+        if (!span(w0, e0x, &lo, &hi) || !span(w1, e1x, &lo, &hi) || !span(w2, e2x, &lo, &hi))
+            continue;
+        z += dzdx * (double)lo;
+        size_t i = (size_t)(y - ty) * TW + (xa + lo - tx);
+        for (int64_t k = lo; k <= hi; k++, i++, z += dzdx) {
             float zf = (float)z;
             if (zf > zb[i]) {
                 zb[i] = zf;

@@ -1,7 +1,7 @@
 /* raster.h -- a small z-buffer triangle rasterizer for looking at meshes.
  *
  * Camera: orbit angles around the fitted points.  World up is one axis
- * (y by default, as in OBJ and glTF; z for Z-up data).  With up = y the
+ * (y by default, as in OBJ and glTF; z for Z-up data; or a negative axis).  With up = y the
  * view direction for azimuth a and elevation e (degrees) points from the
  * object towards the camera along
  *     d = (cos e sin a, sin e, cos e cos a),
@@ -33,7 +33,7 @@ extern "C" {
 
 struct camera {
     double azimuth, elevation;  /* degrees */
-    int up;                     /* world up axis: 0 = x, 1 = y, 2 = z */
+    int up;                     /* world up axis: 0, 1, 2 = +x, +y, +z; 3, 4, 5 = -x, -y, -z */
     int perspective;            /* 0: orthographic */
     double fov;                 /* perspective vertical field of view, degrees */
     double margin;              /* free border, fraction of the image side */
@@ -49,7 +49,7 @@ struct camera {
 int camera_named_view(const char *name, double *azimuth, double *elevation);
 
 /* Set up an orthographic camera with no fitted points yet.
- *   up  world up axis (0, 1, 2) */
+ *   up  world up axis: 0, 1, 2 = +x, +y, +z; 3, 4, 5 = -x, -y, -z */
 void camera_init(struct camera *c, double azimuth, double elevation, int up);
 
 /* Extend the fit by points.

@@ -64,6 +64,12 @@ test_expect_success 'the sphere covers the expected fraction and is shaded' '
 	test_le 0.55 $(stat_field "$st" 3) && test_le $(stat_field "$st" 3) 0.75 &&
 	test_le 20 $(stat_field "$st" 4) && test_le 15 $(stat_field "$st" 5)
 '
+test_expect_success '--compact writes a smaller PNG of the same size' '
+	mesh-render -s 200x200 ico.mesh >fast.png &&
+	mesh-render -s 200x200 --compact ico.mesh >small.png &&
+	png_size small.png >size && echo "200 200" >expect && test_cmp expect size &&
+	test_le $(wc -c <small.png) $(wc -c <fast.png)
+'
 test_expect_success 'same input, same bytes' '
 	mesh-render -s 100x100 --view iso -w ico.mesh >r1.png &&
 	mesh-render -s 100x100 --view iso -w ico.mesh >r2.png && test_cmp r1.png r2.png
@@ -99,6 +105,10 @@ test_expect_success 'views, up axis and perspective all render' '
 	for v in front back left right top bottom iso; do
 		mesh-render -s 40x40 --view $v --up z --perspective ico.mesh >v.png || return 1
 	done &&
+	for u in x y z -x -y -z +z; do
+		mesh-render -s 40x40 --up $u --view iso ico.mesh >v.png || return 1
+	done &&
+	test_must_fail_usage mesh-render --up w ico.mesh &&
 	mesh-render -s 40x40 -a 30 -e -20 ico.mesh >v.png
 '
 test_expect_success 'a later frame and --fit-all' '
