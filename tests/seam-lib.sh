@@ -85,3 +85,13 @@ max_diff() {
          END { if (n2 != length(x)) { print "different sizes" > "/dev/stderr"; exit 1 }
                printf "%.3g\n", d / sqrt((hi1 - lo1)^2 + (hi2 - lo2)^2 + (hi3 - lo3)^2) }' "$1" "$2"
 }
+
+# coincident_count MESH: the smallest number, over the frames, of vertices
+# sharing their exact position with a lower-numbered vertex
+coincident_count() {
+    awk '/^MESH|^vertices|^faces|^frames|^f / { next }
+         /^frame / { if (started) done(); started = 1; delete seen; n = 0; next }
+         { k = $1 " " $2 " " $3; if (k in seen) n++; seen[k] = 1 }
+         function done() { if (min == "" || n < min) min = n }
+         END { done(); print min + 0 }' "$1"
+}

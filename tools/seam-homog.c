@@ -13,6 +13,7 @@
 #include "bilaplacian.h"
 #include "blas_tune.h"
 #include "cm_error.h"
+#include "coincident.h"
 #include "columns.h"
 #include "geometry.h"
 #include "mesh.h"
@@ -44,6 +45,8 @@ static const char help[] =
 "      --mass TYPE       voronoi | barycentric mass matrix (default voronoi)\n"
 "      --energy FILE     write the energy tr(D^T Q D) of each frame, one per line\n"
 "      --batch K         frames solved together (default 8; memory O(K frames))\n"
+"      --no-weld         do not join vertices that share a position in every\n"
+"                        frame (UV-seam duplicates; joined by default)\n"
 "      --raw             write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
 "  -v, --verbose         per-frame energy, factor time and frames/s on stderr\n"
 "  -h, --help            show this help\n"
@@ -61,7 +64,7 @@ static const char help[] =
 
 struct options {
     const char *input, *labels, *output, *energy;
-    int rings, raw, check, refactor, batch;
+    int rings, raw, check, refactor, batch, no_weld;
     long seed;
     enum mass_type mass;
 };
@@ -72,7 +75,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"labels", 1, 0, 'l'}, {"output", 1, 0, 'o'}, {"rings", 1, 0, 'r'},
         {"mass", 1, 0, 'M'}, {"energy", 1, 0, 'E'}, {"raw", 0, 0, 'R'},
         {"verbose", 0, 0, 'v'}, {"check", 1, 0, 'C'}, {"seed", 1, 0, 'S'},
-        {"refactor-each-frame", 0, 0, 'F'}, {"batch", 1, 0, 'B'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'},
+        {"refactor-each-frame", 0, 0, 'F'}, {"batch", 1, 0, 'B'}, {"no-weld", 0, 0, 'W'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->rings = 1;
@@ -96,6 +99,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'C': o->check = (int)arg_long(optarg, "--check"); break;
         case 'S': o->seed = arg_long(optarg, "--seed"); break;
         case 'F': o->refactor = 1; break;
+        case 'W': o->no_weld = 1; break;
         case 'B': o->batch = (int)arg_long(optarg, "--batch"); break;
         case 'h': print_help_and_exit(help);
         case 'V': print_version_and_exit();
@@ -128,7 +132,7 @@ static double cpu_seconds(void)
 /* Pass 1: read every frame (validating the whole stream) and sum the
  * positions into S (#V by 3); the spool keeps a copy when the input is not
  * a regular file.  Returns the number of frames. */
-static int pass_average(struct mesh_reader *r, struct mesh_spool *sp, double *S)
+static int pass_average(struct mesh_reader *r, struct mesh_spool *sp, double *S, int *rep)
 {
     size_t n3 = (size_t)r->nv * 3;
     double *X = malloc((n3 + 1) * sizeof *X);
@@ -138,6 +142,8 @@ static int pass_average(struct mesh_reader *r, struct mesh_spool *sp, double *S)
     int n = 0, cut, rc;
     while ((rc = mesh_reader_next(r, X, &cut)) > 0) {
         for (size_t i = 0; i < n3; i++) S[i] += X[i];
+        if (n == 0 ? coincident_find(X, r->nv, rep) < 0 : coincident_refine(X, r->nv, rep) < 0)
+            die("out of memory");
         if (mesh_spool_frame(sp, X, cut) < 0)
             die("%s", cm_errmsg());
         progress_step(&p, ++n);
@@ -204,17 +210,12 @@ int main(int argc, char **argv)
     struct topology t;
     if (topology_build(F, nf, nv, &t) < 0)
         die("%s", cm_errmsg());
+    /* fail fast: a non-manifold edge at a seam stays one after the
+     * UV-seam weld below (welding only adds faces around edges) */
     unsigned char *is_seam = malloc((size_t)nv + 1), *role = malloc((size_t)nv + 1);
-    int nseam = seam_vertices(&t, P, is_seam);
+    seam_vertices(&t, P, is_seam);
     if (seam_check_manifold(&t, is_seam) < 0)
         die("%s", cm_errmsg());
-    int nfixed = seam_roles(&t, F, is_seam, o.rings, role);
-    int nfree = 0;
-    for (int v = 0; v < nv; v++) nfree += role[v] == SEAM_FREE;
-    info(1, "%d vertices, %d faces: %d seam vertices, %d fixed (%d ring%s), %d free",
-         nv, nf, nseam, nfixed, o.rings, o.rings == 1 ? "" : "s", nfree);
-    if (nseam == 0)
-        warn("the labels have no seam (one part): the animation passes unchanged");
 
     /* pass 1: average (and validate every frame before writing anything) */
     double t0 = now_seconds(), c0 = cpu_seconds();
@@ -224,15 +225,57 @@ int main(int argc, char **argv)
     int spool = sp.temp;
     size_t n3 = (size_t)nv * 3;
     double *A = malloc((n3 + 1) * sizeof *A);
-    int nframes = pass_average(&r, &sp, A);
+    int *rep = malloc(((size_t)nv + 1) * sizeof *rep);
+    int nframes = pass_average(&r, &sp, A, rep);
     mesh_reader_close(&r);
     for (size_t i = 0; i < n3; i++) A[i] /= nframes;
     double t1 = now_seconds();
     info(1, "pass 1: %d frames averaged in %.3f s%s", nframes, t1 - t0,
          spool ? " (spooled to a temporary file)" : "");
 
+    /* UV-seam duplicates (the same position in every frame) are joined so
+     * the seam and the Laplacian cross texture seams; the duplicates follow
+     * their representative.  Kept apart if joining breaks manifoldness. */
+    int nwelded = 0;
+    for (int v = 0; v < nv; v++) nwelded += rep[v] != v;
+    int *W = F;                 /* the faces the math works on */
+    if (o.no_weld || nwelded == 0) {
+        nwelded = 0;
+    } else {
+        int *Fw = malloc(((size_t)nf * 3 + 1) * sizeof *Fw);
+        coincident_faces(F, nf, rep, Fw);
+        struct topology tw;
+        int built = topology_build(Fw, nf, nv, &tw) == 0, bad = !built;
+        for (int f = 0; f < nf && !bad; f++)
+            bad = Fw[3 * f] == Fw[3 * f + 1] || Fw[3 * f + 1] == Fw[3 * f + 2] ||
+                  Fw[3 * f] == Fw[3 * f + 2];
+        if (!bad) bad = tw.nnonmanifold > 0 || nonmanifold_vertices(&tw, Fw) > 0;
+        if (bad) {
+            info(1, "joining %d coincident vertices would make the mesh non-manifold: not joined",
+                 nwelded);
+            nwelded = 0;
+            free(Fw);
+            if (built) topology_free(&tw);
+        } else {
+            info(1, "joined %d vertices that coincide in every frame (UV seams)", nwelded);
+            topology_free(&t);
+            t = tw;
+            W = Fw;
+        }
+    }
+    int nseam = seam_vertices(&t, P, is_seam);
+    if (seam_check_manifold(&t, is_seam) < 0)
+        die("%s", cm_errmsg());
+    int nfixed = seam_roles(&t, W, is_seam, o.rings, role);
+    int nfree = 0;
+    for (int v = 0; v < nv; v++) nfree += role[v] == SEAM_FREE;
+    info(1, "%d vertices, %d faces: %d seam vertices, %d fixed (%d ring%s), %d free",
+         nv, nf, nseam, nfixed, o.rings, o.rings == 1 ? "" : "s", nfree);
+    if (nseam == 0)
+        warn("the labels have no seam (one part): the animation passes unchanged");
+
     /* Q = L^T M^-1 L of the average mesh; factor the free block once */
-    cholmod_sparse *Q = bilaplacian(A, F, nv, nf, o.mass);
+    cholmod_sparse *Q = bilaplacian(A, W, nv, nf, o.mass);
     if (!Q)
         die("%s", cm_errmsg());
     struct quad_solver *S = factor(Q, role, nv);
@@ -301,6 +344,9 @@ int main(int argc, char **argv)
             for (int v = 0; v < nv; v++)
                 for (int d = 0; d < 3; d++)
                     Y[3 * v + d] = role[v] == SEAM_FIXED ? A[3 * v + d] : Y[3 * v + d] + D[3 * v + d];
+            if (nwelded)            /* rep[v] <= v: one forward sweep */
+                for (int v = 0; v < nv; v++)
+                    if (rep[v] != v) memcpy(Y + 3 * v, Y + 3 * rep[v], 3 * sizeof *Y);
             if (mesh_writer_frame(&w, Y, cuts[b]) < 0)
                 die("cannot write output: %s", cm_errmsg());
             if (ef) {
@@ -342,6 +388,8 @@ int main(int argc, char **argv)
     quad_solver_free(S);
     cholmod_free_sparse(&Q, cm_cholmod());
     topology_free(&t);
+    if (W != F) free(W);
+    free(rep);
     free(A); free(Y); free(D); free(Yb); free(Db); free(cuts); free(F); free(P); free(is_seam); free(role);
     return 0;
 }
