@@ -7,12 +7,105 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <math.h>
+#include <string.h>
 
 static const double pow10tab[23] = {
     1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
     1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
-const char *parse_double(const char *s, double *out)
+#if LDBL_MANT_DIG == 64
+static const long double pow10tabl[28] = {
+    1e0L, 1e1L, 1e2L, 1e3L, 1e4L, 1e5L, 1e6L, 1e7L, 1e8L, 1e9L, 1e10L, 1e11L, 1e12L, 1e13L,
+    1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L, 1e20L, 1e21L, 1e22L, 1e23L, 1e24L, 1e25L,
+    1e26L, 1e27L};
+/* 10^-k rounded to extended precision */
+static const long double inv10tabl[28] = {
+    1e-0L, 1e-1L, 1e-2L, 1e-3L, 1e-4L, 1e-5L, 1e-6L, 1e-7L, 1e-8L, 1e-9L, 1e-10L, 1e-11L,
+    1e-12L, 1e-13L, 1e-14L, 1e-15L, 1e-16L, 1e-17L, 1e-18L, 1e-19L, 1e-20L, 1e-21L, 1e-22L,
+    1e-23L, 1e-24L, 1e-25L, 1e-26L, 1e-27L};
+#endif
+
+/* Append the decimal digits at *pp to m (m wraps past 19 digits; callers
+ * count the digits and give up then).  This loop is most of the cost of
+ * reading a plain MESH stream.  With `padded` (the caller guarantees 8
+ * readable bytes past any position of the string, its NUL included),
+ * eight digits at a time are checked and converted in one 64-bit word
+ * (SWAR, as in fast_float); the rest byte by byte. */
+static inline uint64_t scan_digits(const char **pp, uint64_t m, int padded)
+{
+    const char *p = *pp;
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    if (padded) {
+        static const uint64_t p10[9] = {1, 10, 100, 1000, 10000, 100000, 1000000,
+                                        10000000, 100000000};
+        for (;;) {
+            uint64_t v;
+            memcpy(&v, p, sizeof v);
+            /* high bit of every byte that is not a digit ('0' ^ 0x30 = 0,
+             * digits 0..9; 0x76 pushes 10..127 over 127, no carries) */
+            uint64_t x = v ^ 0x3030303030303030ULL;
+            uint64_t nd = (((x & 0x7F7F7F7F7F7F7F7FULL) + 0x7676767676767676ULL) | x) &
+                          0x8080808080808080ULL;
+            int n = nd ? __builtin_ctzll(nd) >> 3 : 8;
+            if (n == 0)
+                break;
+            /* right-align the n digits behind '0' fill: 8 digits in one word */
+            if (n < 8)
+                v = (v << (64 - 8 * n)) | (0x3030303030303030ULL >> (8 * n));
+            v -= 0x3030303030303030ULL;
+            v = v * 10 + (v >> 8);
+            v = (((v & 0x000000FF000000FFULL) * 0x000F424000000064ULL) +
+                 (((v >> 16) & 0x000000FF000000FFULL) * 0x0000271000000001ULL)) >> 32;
+            m = m * p10[n] + (uint32_t)v;
+            p += n;
+            if (n < 8)
+                break;
+        }
+        *pp = p;
+        return m;
+    }
+#else
+    (void)padded;
+#endif
+    while ((unsigned)(*p - '0') < 10) { m = m * 10 + (uint64_t)(*p - '0'); p++; }
+    *pp = p;
+    return m;
+}
+
+#if LDBL_MANT_DIG == 64 && defined(__SIZEOF_INT128__)
+typedef unsigned __int128 u128;
+
+/* sign of X - Y * 2^s, exactly */
+static int cmp_shift(u128 X, u128 Y, int s)
+{
+    if (s < 0)
+        return -cmp_shift(Y, X, -s);
+    u128 q = s >= 128 ? 0 : X >> s;
+    u128 rem = s >= 128 ? X : X & (((u128)1 << s) - 1);
+    if (q != Y)
+        return q > Y ? 1 : -1;
+    return rem != 0;
+}
+
+/* sign of m * 10^e - D * 2^Q (|e| <= 27, D < 2^54): which side of the
+ * midpoint D 2^Q the decimal m 10^e lies on */
+static int tie_side(uint64_t m, int e, uint64_t D, int Q)
+{
+    static const uint64_t pow5[28] = {
+        1ULL, 5ULL, 25ULL, 125ULL, 625ULL, 3125ULL, 15625ULL, 78125ULL, 390625ULL,
+        1953125ULL, 9765625ULL, 48828125ULL, 244140625ULL, 1220703125ULL, 6103515625ULL,
+        30517578125ULL, 152587890625ULL, 762939453125ULL, 3814697265625ULL,
+        19073486328125ULL, 95367431640625ULL, 476837158203125ULL, 2384185791015625ULL,
+        11920928955078125ULL, 59604644775390625ULL, 298023223876953125ULL,
+        1490116119384765625ULL, 7450580596923828125ULL};
+    if (e < 0)   /* m / (5^k 2^k) vs D 2^Q  <=>  m vs D 5^k 2^(Q+k) */
+        return cmp_shift(m, (u128)D * pow5[-e], Q - e);
+    /* m 5^e 2^e vs D 2^Q  <=>  m 5^e vs D 2^(Q-e) */
+    return cmp_shift((u128)m * pow5[e], D, Q - e);
+}
+#endif
+
+static inline const char *parse_double_impl(const char *s, double *out, int padded)
 {
     while (*s == ' ' || *s == '\t' || *s == '\r')
         s++;
@@ -20,23 +113,30 @@ const char *parse_double(const char *s, double *out)
     int neg = 0;
     if (*p == '-' || *p == '+')
         neg = (*p++ == '-');
+    /* Scan the digits with as little work per digit as possible (this loop
+     * is most of the cost of reading a plain MESH stream): m may wrap when
+     * there are more than 19 significant digits, but those go to strtod. */
     uint64_t m = 0;
-    int digits = 0, exp10 = 0, any = 0;
-    while (*p == '0') { p++; any = 1; }           /* leading zeros do not count */
-    while (*p >= '0' && *p <= '9') {
-        if (digits < 19) m = m * 10 + (uint64_t)(*p - '0');
-        else exp10++;
-        digits++; any = 1; p++;
-    }
+    int digits, exp10 = 0, any;
+    const char *d0 = p;
+    while (*p == '0') p++;                          /* leading zeros do not count */
+    const char *i0 = p;
+    m = scan_digits(&p, 0, padded);
+    digits = (int)(p - i0);
+    any = p > d0;
     if (*p == '.') {
         p++;
+        const char *f0 = p;
         if (digits == 0)
-            while (*p == '0') { p++; exp10--; any = 1; }
-        while (*p >= '0' && *p <= '9') {
-            if (digits < 19) { m = m * 10 + (uint64_t)(*p - '0'); exp10--; }
-            digits++; any = 1; p++;
-        }
+            while (*p == '0') p++;                  /* 0.000ddd: zeros only scale */
+        const char *f1 = p;
+        m = scan_digits(&p, m, padded);
+        digits += (int)(p - f1);
+        exp10 = -(int)(p - f0);
+        any |= p > f0;
     }
+    if (digits > 19)
+        goto slow;
     if (!any)
         goto slow;                                 /* inf, nan, junk */
     if (*p == 'e' || *p == 'E') {
@@ -53,18 +153,86 @@ const char *parse_double(const char *s, double *out)
         exp10 += eneg ? -e : e;
         p = q;
     }
-    if (digits > 15 || m > (1ULL << 53))
-        goto slow;
-    double v = (double)m;
-    if (exp10 < 0) {
-        if (exp10 < -22) goto slow;
-        v /= pow10tab[-exp10];
-    } else if (exp10 > 0) {
-        if (exp10 > 22) goto slow;
-        v *= pow10tab[exp10];
+    if (digits <= 15 && exp10 >= -22 && exp10 <= 22) {
+        /* Clinger's fast path: m and 10^|e| are exact doubles, one
+         * correctly rounded multiply or divide */
+        double v = (double)m;
+        if (exp10 < 0) v /= pow10tab[-exp10];
+        else if (exp10 > 0) v *= pow10tab[exp10];
+        *out = neg ? -v : v;
+        return p;
     }
-    *out = neg ? -v : v;
-    return p;
+    {
+#if LDBL_MANT_DIG == 64
+        /* 16..19 digits (what %.17g prints for computed coordinates): m is
+         * exact in x87 extended precision, so is 10^k for k <= 27, and one
+         * multiply or divide rounds once to 64 bits.  Rounding that to
+         * double gives the correctly rounded result unless the extended
+         * value is exactly a midpoint between two doubles (the only
+         * 64-bit number that can separate the true value from its
+         * 64-bit rounding); those rare ties go to strtod. */
+        if (exp10 < 0 && exp10 >= -27 && digits <= 19) {
+            /* the common case of coordinates: multiply by the rounded
+             * reciprocal instead of dividing (x87 fdiv is slow); two
+             * roundings leave r within 2 units of its last place of the
+             * exact value, which rounds correctly to double unless r is
+             * that close to a midpoint; those take the exact division */
+            long double r = (long double)m * inv10tabl[-exp10];
+            uint64_t sig;
+            memcpy(&sig, &r, sizeof sig);
+            unsigned low = (unsigned)(sig & 0x7ff);
+            if (low < 0x3fe || low > 0x402) {
+                double d = (double)r;
+                *out = neg ? -d : d;
+                return p;
+            }
+        }
+        if (digits <= 19 && exp10 >= -27 && exp10 <= 27) {
+            long double r = (long double)m;
+            if (exp10 < 0) r /= pow10tabl[-exp10];
+            else if (exp10 > 0) r *= pow10tabl[exp10];
+            /* x87 layout: the 64-bit significand (explicit leading 1)
+             * first; r lies in the normal double range, so it is a
+             * midpoint iff its low 11 bits are 100 0000 0000 */
+            uint64_t sig;
+            memcpy(&sig, &r, sizeof sig);
+            double d = (double)r;
+            if ((sig & 0x7ff) == 0x400) {
+#ifdef __SIZEOF_INT128__
+                /* r is a midpoint: (double)r rounded to even; decide
+                 * exactly on which side of r the decimal lies */
+                uint16_t ex;
+                memcpy(&ex, (const char *)&r + 8, sizeof ex);
+                int c = tie_side(m, exp10, sig >> 10, (int)(ex & 0x7fff) - 16383 - 63 + 10);
+                if (c != 0 && (c > 0) != ((long double)d > r))
+                    d = nextafter(d, c > 0 ? INFINITY : -INFINITY);
+#else
+                goto slow;
+#endif
+            }
+            *out = neg ? -d : d;
+            return p;
+        }
+        if (digits <= 19 && exp10 >= -54 && exp10 <= 54) {
+            /* tiny roundoff values like 1.5e-19 and huge ones: two exact
+             * powers, two roundings, so r may be up to 2 units of its last
+             * place from the exact value; it rounds correctly unless it is
+             * that close to a midpoint (then strtod) */
+            long double r = (long double)m;
+            if (exp10 < 0) r = r / pow10tabl[27] / pow10tabl[-exp10 - 27];
+            else r = r * pow10tabl[27] * pow10tabl[exp10 - 27];
+            uint64_t sig;
+            memcpy(&sig, &r, sizeof sig);
+            unsigned low = (unsigned)(sig & 0x7ff);
+            if (low >= 0x3fe && low <= 0x402)
+                goto slow;
+            double d = (double)r;
+            *out = neg ? -d : d;
+            return p;
+        }
+#endif
+        goto slow;
+    }
 slow:;
     char *end;
     double v2 = strtod(start, &end);
@@ -72,6 +240,16 @@ slow:;
         return NULL;
     *out = v2;
     return end;
+}
+
+const char *parse_double(const char *s, double *out)
+{
+    return parse_double_impl(s, out, 0);
+}
+
+const char *parse_double_padded(const char *s, double *out)
+{
+    return parse_double_impl(s, out, 1);
 }
 
 const char *parse_long(const char *s, long *out)
@@ -95,6 +273,78 @@ const char *parse_long(const char *s, long *out)
     return p;
 }
 
+#if LDBL_MANT_DIG == 64
+/* Lay out the decimal N * 10^(e - P + 1) (N has exactly P digits) the way
+ * printf's %.Pg does: trailing zeros dropped, scientific notation when
+ * e < -4 or e >= P.  Returns the length. */
+static int layout_g(char *buf, int neg, uint64_t N, int P, int e)
+{
+    char d[24];
+    for (int i = P - 1; i >= 0; i--) { d[i] = (char)('0' + N % 10); N /= 10; }
+    int nd = P;
+    while (nd > 1 && d[nd - 1] == '0') nd--;
+    char *o = buf;
+    if (neg) *o++ = '-';
+    if (e < -4 || e >= P) {
+        *o++ = d[0];
+        if (nd > 1) { *o++ = '.'; for (int i = 1; i < nd; i++) *o++ = d[i]; }
+        *o++ = 'e';
+        *o++ = e < 0 ? '-' : '+';
+        int ae = e < 0 ? -e : e;
+        if (ae >= 100) *o++ = (char)('0' + ae / 100);
+        *o++ = (char)('0' + ae / 10 % 10);
+        *o++ = (char)('0' + ae % 10);
+    } else if (e >= 0) {
+        for (int i = 0; i <= e; i++) *o++ = i < nd ? d[i] : '0';
+        if (nd > e + 1) { *o++ = '.'; for (int i = e + 1; i < nd; i++) *o++ = d[i]; }
+    } else {
+        *o++ = '0'; *o++ = '.';
+        for (int i = 0; i < -e - 1; i++) *o++ = '0';
+        for (int i = 0; i < nd; i++) *o++ = d[i];
+    }
+    *o = 0;
+    return (int)(o - buf);
+}
+
+/* Shortest of the 15, 16, 17 digit decimals of x that reads back to x,
+ * without printf: |x| is scaled by 10^(P-1-e) in extended precision and
+ * rounded to a P-digit integer, and every candidate is verified with
+ * parse_double.  Returns 0 when no candidate verified (near-ties of the
+ * scaling; the caller then asks snprintf). */
+static int format_fast(char *buf, double x)
+{
+    long double a = fabs(x);
+    int e2;
+    frexp(x, &e2);
+    int e = (int)floor((e2 - 1) * 0.30102999566398120);   /* ~floor(log10 |x|) */
+    if (e < -280 || e > 280)
+        return 0;
+    for (int P = 15; P <= 17; P++) {
+        int s = P - 1 - e, ee = e;
+        long double y;
+        for (int tries = 0; tries < 2; tries++) {
+            if (s >= 0 && s <= 27) y = a * pow10tabl[s];
+            else if (s < 0 && s >= -27) y = a / pow10tabl[-s];
+            else y = a * powl(10.0L, (long double)s);
+            if (y >= pow10tabl[P]) { s--; ee++; continue; }       /* e was low */
+            if (y < pow10tabl[P - 1]) { s++; ee--; continue; }    /* e was high */
+            break;
+        }
+        if (y >= pow10tabl[P] || y < pow10tabl[P - 1])
+            return 0;
+        uint64_t N = (uint64_t)llrintl(y);
+        if ((long double)N >= pow10tabl[P]) { N /= 10; ee++; }
+        int n = layout_g(buf, x < 0, N, P, ee);
+        double back;
+        const char *end = parse_double(buf, &back);
+        if (end && *end == 0 && back == x)
+            return n;
+        e = ee;
+    }
+    return 0;
+}
+#endif
+
 int format_double(char *buf, double x)
 {
     if (x == 0) {                      /* keep the sign of -0 bit-exact */
@@ -106,6 +356,13 @@ int format_double(char *buf, double x)
      * prints (it is the nearest 15-digit decimal); subnormals have fewer
      * significant bits, so search them from 1 digit */
     int first = fabs(x) < DBL_MIN ? 1 : 15;
+#if LDBL_MANT_DIG == 64
+    if (first == 15 && isfinite(x)) {
+        int n = format_fast(buf, x);
+        if (n > 0)
+            return n;
+    }
+#endif
     for (int prec = first; prec <= 17; prec++) {
         int n = snprintf(buf, 32, "%.*g", prec, x);
         double y;

@@ -28,6 +28,18 @@ static int agrees(const char *s, char *why, size_t n)
         snprintf(why, n, "'%s': %.17g vs strtod %.17g", s, a, b);
         return 0;
     }
+    /* the padded variant (8 readable bytes past the NUL) agrees too */
+    char pad[160];
+    memset(pad, 0, sizeof pad);
+    if (strlen(s) < 140) {
+        strcpy(pad, s);
+        double c = 0;
+        const char *q = parse_double_padded(pad, &c);
+        if (q - pad != end - s || (!same(c, b) && !(isnan(c) && isnan(b)))) {
+            snprintf(why, n, "'%s': padded %.17g vs strtod %.17g", s, c, b);
+            return 0;
+        }
+    }
     return 1;
 }
 
@@ -78,6 +90,38 @@ int main(void)
         }
     }
     ok(bad == 0, "parse_double: equals strtod on %ld printed doubles (%d differ)", tried, bad);
+
+    /* 16..19 significant digits with exponents from -60 to 60: the x87
+     * paths, their tie breaking and their fallbacks */
+    bad = 0;
+    tried = 0;
+    for (int it = 0; it < 100000; it++) {
+        int nd = 16 + rng_int(&r, 4), k = 0;
+        if (rng_int(&r, 2)) buf[k++] = '-';
+        buf[k++] = (char)('1' + rng_int(&r, 9));
+        buf[k++] = '.';
+        for (int d = 1; d < nd; d++) buf[k++] = (char)('0' + rng_int(&r, 10));
+        k += sprintf(buf + k, "e%d", rng_int(&r, 121) - 60);
+        tried++;
+        if (!agrees(buf, why, sizeof why) && bad++ < 5) diag("%s", why);
+    }
+    ok(bad == 0, "parse_double: equals strtod on %ld long mantissas, wide exponents (%d differ)",
+       tried, bad);
+    /* exact midpoints between doubles and their neighbours: 17+ digit
+     * decimals of (d1 + d2) / 2, the tie breaking's hard cases */
+    bad = 0;
+    tried = 0;
+    for (int it = 0; it < 20000; it++) {
+        double x = rng_uniform(&r) * pow(10, rng_int(&r, 20) - 10);
+        double y = nextafter(x, INFINITY);
+        long double mid = ((long double)x + y) / 2;
+        for (int prec = 17; prec <= 19; prec++) {
+            snprintf(buf, sizeof buf, "%.*Le", prec - 1, mid);
+            tried++;
+            if (!agrees(buf, why, sizeof why) && bad++ < 5) diag("%s", why);
+        }
+    }
+    ok(bad == 0, "parse_double: equals strtod near midpoints (%ld strings, %d differ)", tried, bad);
 
     /* hand-picked hard and edge cases */
     static const char *edge[] = {
