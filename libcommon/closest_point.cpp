@@ -78,14 +78,39 @@ extern "C" double closest_point_query(const struct closest_point_tree *T, const 
     return std::sqrt(CGAL::squared_distance(q, x));
 }
 
+static double query_hinted(const closest_point_tree *T, const double p[3], int h, double c[3],
+                           int *face, double bary[3])
+{
+    Point q(p[0], p[1], p[2]);
+    Tree::Point_and_primitive_id pp;
+    if (h >= 0 && h < (int)T->tris.size()) {
+        Tree::Point_and_primitive_id hint(T->tris[h][0], T->tris.begin() + h);
+        pp = T->tree.closest_point_and_primitive(q, hint);
+    } else {
+        pp = T->tree.closest_point_and_primitive(q);
+    }
+    const Point &x = pp.first;
+    int f = (int)(pp.second - T->tris.begin());
+    c[0] = x.x(); c[1] = x.y(); c[2] = x.z();
+    *face = f;
+    barycentric(T->tris[f], x, bary);
+    return std::sqrt(CGAL::squared_distance(q, x));
+}
+
 extern "C" void closest_points(const struct closest_point_tree *T, const double *P, int n,
                                double *C, int *I, double *B, double *D)
+{
+    closest_points_hinted(T, P, n, NULL, C, I, B, D);
+}
+
+extern "C" void closest_points_hinted(const struct closest_point_tree *T, const double *P, int n,
+                                      const int *H, double *C, int *I, double *B, double *D)
 {
     auto work = [&](int lo, int hi) {
         for (int i = lo; i < hi; i++) {
             double c[3], b[3];
             int f;
-            double d = closest_point_query(T, P + 3 * (size_t)i, c, &f, b);
+            double d = query_hinted(T, P + 3 * (size_t)i, H ? H[i] : -1, c, &f, b);
             if (C) { C[3 * (size_t)i] = c[0]; C[3 * (size_t)i + 1] = c[1]; C[3 * (size_t)i + 2] = c[2]; }
             if (I) I[i] = f;
             if (B) { B[3 * (size_t)i] = b[0]; B[3 * (size_t)i + 1] = b[1]; B[3 * (size_t)i + 2] = b[2]; }

@@ -34,6 +34,12 @@ double closest_point_query(const struct closest_point_tree *T, const double p[3]
 void closest_points(const struct closest_point_tree *T, const double *P, int n, double *C,
                     int *I, double *B, double *D);
 
+/* As closest_points(), but with a hint per query: a face id H[i] near the
+ * answer (e.g. the previous answer of an iterative method; -1 = none).  A
+ * good hint prunes the tree search; the answer is the same. */
+void closest_points_hinted(const struct closest_point_tree *T, const double *P, int n,
+                           const int *H, double *C, int *I, double *B, double *D);
+
 #ifdef __cplusplus
 }
 #endif

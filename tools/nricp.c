@@ -1,0 +1,203 @@
+/* nricp -- register a source mesh to a target scan of different
+ * connectivity: optimal-step non-rigid ICP (Amberg et al. 2007) as in the
+ * E-StopMotion thesis Sec. 5.2.1, Algorithm 2, after a Procrustes
+ * alignment on the landmarks.
+ */
+#include "closest_point.h"
+#include "geometry.h"
+#include "landmarks.h"
+#include "mesh.h"
+#include "mesh_distance.h"
+#include "nricp.h"
+#include "procrustes.h"
+#include "progress.h"
+#include "tool.h"
+#include "cm_error.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <getopt.h>
+
+static const char help[] =
+"Usage: nricp [options] -l LANDMARKS SOURCE TARGET\n"
+"Deform SOURCE onto the surface of TARGET (any connectivity); writes the\n"
+"registered source (SOURCE's connectivity) to stdout.\n"
+"\n"
+"Options:\n"
+"  -l, --landmarks FILE  rows 'src_vertex dst_vertex' or 'src_vertex x y z'\n"
+"                        (optional, but large motions need them)\n"
+"      --align KIND      rigid | similarity | none: Procrustes on the landmarks\n"
+"                        first (default rigid; none without >= 3 landmarks)\n"
+"  -k, --steps K         stiffness steps (default 8)\n"
+"      --alpha-max A     first stiffness (default 50)\n"
+"      --alpha-min A     last stiffness, geometric schedule (default 0.5)\n"
+"      --beta B          initial landmark weight, fading to 0 (default 10)\n"
+"      --gamma G         translation weight in the smoothness term (default 1)\n"
+"      --max-angle DEG   reject correspondences whose normals differ more (default 60)\n"
+"      --max-dist D      reject correspondences farther than D diagonals (default 0.1, 0 off)\n"
+"      --backward W      weight of target->source correspondences (default 1, 0 off)\n"
+"      --max-inner N     iterations per stiffness (default 3)\n"
+"      --relax N         final fold-removal sweeps (default 0)\n"
+"      --eps E           inner loop tolerance, in diagonals (default 1e-4)\n"
+"      --steps-out FILE  also write the pose after every stiffness step (animation)\n"
+"  -o, --output FILE     write to FILE (atomically) instead of stdout\n"
+"      --raw             write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
+"  -v, --verbose         per-step report; time, Hausdorff and flipped faces at the end\n"
+"  -h, --help            show this help\n"
+"      --version         show the version\n"
+"\n"
+"Example: nricp -v -l marks-01-02.txt camel-01.mesh camel-02.mesh > camel-02-reg.mesh\n";
+
+struct options {
+    const char *src, *dst, *landmarks, *align, *steps_out, *output;
+    int raw;
+    struct nricp_params p;
+};
+
+static void parse_args(int argc, char **argv, struct options *o)
+{
+    enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_RELAX };
+    static const struct option lo[] = {
+        {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
+        {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
+        {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
+        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"relax", 1, 0, O_RELAX},
+        {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
+        {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
+        {0, 0, 0, 0}};
+    memset(o, 0, sizeof *o);
+    nricp_defaults(&o->p);
+    o->align = "rigid";
+    int c;
+    while ((c = getopt_long(argc, argv, "l:k:o:vh", lo, NULL)) != -1) {
+        switch (c) {
+        case 'l': o->landmarks = optarg; break;
+        case O_ALIGN: o->align = optarg; break;
+        case 'k': o->p.steps = (int)arg_long(optarg, "--steps"); break;
+        case O_AMAX: o->p.alpha_max = arg_double(optarg, "--alpha-max"); break;
+        case O_AMIN: o->p.alpha_min = arg_double(optarg, "--alpha-min"); break;
+        case O_BETA: o->p.beta = arg_double(optarg, "--beta"); break;
+        case O_GAMMA: o->p.gamma = arg_double(optarg, "--gamma"); break;
+        case O_ANGLE: o->p.max_angle = arg_double(optarg, "--max-angle"); break;
+        case O_DIST: o->p.max_dist = arg_double(optarg, "--max-dist"); break;
+        case O_BACK: o->p.backward = arg_double(optarg, "--backward"); break;
+        case O_INNER: o->p.max_inner = (int)arg_long(optarg, "--max-inner"); break;
+        case O_RELAX: o->p.relax = (int)arg_long(optarg, "--relax"); break;
+        case O_EPS: o->p.eps = arg_double(optarg, "--eps"); break;
+        case O_SOUT: o->steps_out = optarg; break;
+        case 'o': o->output = optarg; break;
+        case O_RAW: o->raw = 1; break;
+        case 'v': verbose++; break;
+        case 'h': print_help_and_exit(help);
+        case O_VERSION: print_version_and_exit();
+        default: usage_error("unknown option");
+        }
+    }
+    if (argc - optind != 2) usage_error("expected SOURCE and TARGET");
+    o->src = argv[optind];
+    o->dst = argv[optind + 1];
+    if (strcmp(o->align, "rigid") && strcmp(o->align, "similarity") && strcmp(o->align, "none"))
+        usage_error("--align must be rigid, similarity or none");
+    if (o->p.steps < 1 || o->p.steps > 1000) usage_error("--steps must be in 1..1000");
+    if (!(o->p.alpha_max > 0) || !(o->p.alpha_min > 0)) usage_error("stiffness must be positive");
+    if (o->p.beta < 0 || o->p.backward < 0 || o->p.gamma < 0) usage_error("weights must be >= 0");
+    if (!(o->p.max_angle > 0) || o->p.max_angle > 180) usage_error("--max-angle must be in (0, 180]");
+    if (o->p.max_inner < 1) usage_error("--max-inner must be >= 1");
+    if (o->p.relax < 0) usage_error("--relax must be >= 0");
+    if (!(o->p.eps >= 0)) usage_error("--eps must be >= 0");
+}
+
+struct steps { double *frames; int n, cap, nv; struct progress pr; double t0; };
+
+static int on_step(void *ctx, int step, double alpha, double beta, int inner, int rejected,
+                   const double *X)
+{
+    struct steps *s = ctx;
+    if (s->frames) {
+        memcpy(s->frames + (size_t)s->n * s->nv * 3, X, (size_t)s->nv * 3 * sizeof *X);
+        s->n++;
+    }
+    info(1, "step %d: alpha %.4g beta %.4g, %d iterations, %d rejected, %.2f s", step + 1, alpha,
+         beta, inner, rejected, now_seconds() - s->t0);
+    progress_step(&s->pr, step + 1);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    struct options o;
+    parse_args(argc, argv, &o);
+    struct mesh S, T;
+    if (mesh_read(o.src, &S) < 0) die("%s", cm_errmsg());
+    if (mesh_read(o.dst, &T) < 0) die("%s", cm_errmsg());
+    if (S.nf < 1 || T.nf < 1) die("cannot register: %s has no faces", S.nf < 1 ? o.src : o.dst);
+    struct landmarks L = {0};
+    if (o.landmarks && landmarks_read(o.landmarks, S.nv, T.V, T.nv, &L) < 0) die("%s", cm_errmsg());
+    double t0 = now_seconds();
+    /* Procrustes on the landmarks (Algorithm 2, first line) */
+    double *VS = malloc((size_t)S.nv * 3 * sizeof *VS + 1);
+    memcpy(VS, S.V, (size_t)S.nv * 3 * sizeof *VS);
+    if (strcmp(o.align, "none") && L.n >= 3) {
+        double *A = malloc((size_t)L.n * 3 * sizeof *A), R[9], t[3], s;
+        for (int l = 0; l < L.n; l++) memcpy(A + 3 * l, S.V + 3 * (size_t)L.src[l], 3 * sizeof *A);
+        double res = procrustes(A, L.P, NULL, L.n, !strcmp(o.align, "similarity"), R, t, &s);
+        if (res < 0) die("%s", cm_errmsg());
+        similarity_apply(R, t, s, VS, S.nv, VS);
+        info(1, "%s alignment on %d landmarks: scale %.6g, RMS residual %.6g", o.align, L.n, s, res);
+        free(A);
+    }
+    struct steps st = {0};
+    st.nv = S.nv;
+    st.t0 = t0;
+    if (o.steps_out) {
+        st.frames = malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *st.frames);
+        memcpy(st.frames, VS, (size_t)S.nv * 3 * sizeof *VS);
+        st.n = 1;
+    }
+    double *X = malloc((size_t)S.nv * 3 * sizeof *X + 1);
+    progress_start(&st.pr, progname, o.p.steps);
+    if (nricp_register(VS, S.F, S.nv, S.nf, T.V, T.F, T.nv, T.nf, L.src, L.P, L.n, &o.p, X,
+                       on_step, &st) < 0)
+        die("%s", cm_errmsg());
+    progress_end(&st.pr);
+    double t1 = now_seconds();
+    if (verbose) {
+        struct closest_point_tree *TS = closest_point_tree_new(X, S.nv, S.F, S.nf);
+        struct closest_point_tree *TT = closest_point_tree_new(T.V, T.nv, T.F, T.nf);
+        double h, rms;
+        if (TS && TT && symmetric_distance(X, S.nv, S.F, S.nf, TS, T.V, T.nv, T.F, T.nf, TT, &h, &rms) == 0) {
+            double diag = bbox_diagonal(T.V, T.nv);
+            info(1, "registered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), RMS %.4g, "
+                 "%d flipped faces", t1 - t0, h, 100 * h / diag, rms,
+                 flipped_faces(X, S.F, S.nf, T.V, T.F, TT));
+        }
+        closest_point_tree_free(TS);
+        closest_point_tree_free(TT);
+    }
+    if (o.steps_out) {
+        FILE *f = out_open(o.steps_out);
+        struct mesh_writer w;
+        if (mesh_writer_open(&w, f, S.nv, S.nf, S.F, st.n, want_raw(o.raw)) < 0)
+            die("cannot write '%s': %s", o.steps_out, cm_errmsg());
+        for (int k = 0; k < st.n; k++)
+            if (mesh_writer_frame(&w, st.frames + (size_t)k * S.nv * 3, 0) < 0)
+                die("cannot write '%s': %s", o.steps_out, cm_errmsg());
+        if (mesh_writer_close(&w) < 0) die("cannot write '%s': %s", o.steps_out, cm_errmsg());
+        out_close(f);
+    }
+    FILE *out = out_open(o.output);
+    struct mesh R = S;
+    R.V = X;
+    R.nframes = 1;
+    if (mesh_write(out, &R, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
+    out_close(out);
+    free(st.frames);
+    free(X);
+    free(VS);
+    landmarks_free(&L);
+    mesh_free(&S);
+    mesh_free(&T);
+    return 0;
+}
