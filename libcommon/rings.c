@@ -1,0 +1,291 @@
+/* rings.c -- see rings.h */
+#include "rings.h"
+#include "cm_error.h"
+#include "numparse.h"
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void rings_free(struct rings *r)
+{
+    free(r->start);
+    free(r->P);
+    free(r->line);
+    memset(r, 0, sizeof *r);
+}
+
+static int grow(struct rings *r, int npts)
+{
+    int total = r->start ? r->start[r->nrings] : 0;
+    int *s = realloc(r->start, (r->nrings + 2) * sizeof *s);
+    double *P = realloc(r->P, 2 * (size_t)(total + npts + 1) * sizeof *P);
+    long *L = realloc(r->line, (size_t)(total + npts + 1) * sizeof *L);
+    if (!s || !P || !L) {
+        if (s) r->start = s;
+        if (P) r->P = P;
+        if (L) r->line = L;
+        return cm_seterr("out of memory");
+    }
+    r->start = s; r->P = P; r->line = L;
+    if (r->nrings == 0) r->start[0] = 0;
+    return 0;
+}
+
+int rings_append(struct rings *r, const double *P, int n)
+{
+    if (grow(r, n) < 0) return -1;
+    int t = r->start[r->nrings];
+    memcpy(r->P + 2 * (size_t)t, P, 2 * (size_t)n * sizeof *P);
+    for (int i = 0; i < n; i++) r->line[t + i] = 0;
+    r->start[++r->nrings] = t + n;
+    return 0;
+}
+
+int rings_from_points(struct rings *r, const double *P, int n)
+{
+    memset(r, 0, sizeof *r);
+    strcpy(r->name, "<points>");
+    return rings_append(r, P, n);
+}
+
+static char *skip(char *s) { while (*s == ' ' || *s == '\t' || *s == '\r') s++; return s; }
+
+int rings_read(const char *path, struct rings *r)
+{
+    memset(r, 0, sizeof *r);
+    int std = !path || !strcmp(path, "-");
+    snprintf(r->name, sizeof r->name, "%s", std ? "<stdin>" : path);
+    FILE *f = std ? stdin : fopen(path, "r");
+    if (!f)
+        return cm_seterr("cannot read '%s': %s", r->name, strerror(errno));
+    char *buf = NULL;
+    size_t cap = 0;
+    long lineno = 0;
+    int want = 0, got = 0;   /* points announced / read in the current ring */
+    int total = 0, ok = 0;
+    long hdrline = 0;
+    for (;;) {
+        ssize_t n = getline(&buf, &cap, f);
+        if (n < 0) break;
+        lineno++;
+        char *s = skip(buf);
+        if (*s == '#' || *s == '\n' || *s == 0) continue;
+        if (!strncmp(s, "ring", 4) && (s[4] == ' ' || s[4] == '\t')) {
+            if (got < want) {
+                cm_seterr("cannot read '%s': line %ld: ring of line %ld has %d points, header says %d",
+                          r->name, lineno, hdrline, got, want);
+                goto out;
+            }
+            long k;
+            const char *q = parse_long(s + 4, &k);
+            if (!q || (*skip((char *)q) != '\n' && *skip((char *)q) != 0)) {
+                cm_seterr("cannot read '%s': line %ld: expected 'ring N'", r->name, lineno);
+                goto out;
+            }
+            if (k < 3 || k > 100000000) {
+                cm_seterr("cannot read '%s': line %ld: a ring needs at least 3 points, not %ld",
+                          r->name, lineno, k);
+                goto out;
+            }
+            if (r->nrings) r->start[r->nrings] = total;
+            if (grow(r, (int)k) < 0) goto out;
+            r->start[r->nrings + 1] = total;  /* placeholder, fixed as points arrive */
+            r->nrings++;
+            want = (int)k; got = 0; hdrline = lineno;
+            continue;
+        }
+        if (r->nrings == 0) {
+            cm_seterr("cannot read '%s': line %ld: expected 'ring N' before the points", r->name, lineno);
+            goto out;
+        }
+        if (got == want) {
+            cm_seterr("cannot read '%s': line %ld: more points than the %d announced on line %ld",
+                      r->name, lineno, want, hdrline);
+            goto out;
+        }
+        double x, y;
+        const char *q = parse_double(s, &x);
+        const char *q2 = q ? parse_double(q, &y) : NULL;
+        if (!q || !q2 || (*skip((char *)q2) != '\n' && *skip((char *)q2) != 0 && *skip((char *)q2) != '#')) {
+            cm_seterr("cannot read '%s': line %ld: expected 2 numbers \"x y\"", r->name, lineno);
+            goto out;
+        }
+        if (!isfinite(x) || !isfinite(y)) {
+            cm_seterr("cannot read '%s': line %ld: non-finite number", r->name, lineno);
+            goto out;
+        }
+        if (got > 0 && r->P[2 * (total - 1)] == x && r->P[2 * (total - 1) + 1] == y) {
+            cm_seterr("cannot read '%s': line %ld: repeated point (zero-length edge)", r->name, lineno);
+            goto out;
+        }
+        r->P[2 * total] = x;
+        r->P[2 * total + 1] = y;
+        r->line[total] = lineno;
+        total++; got++;
+        r->start[r->nrings] = total;
+    }
+    if (ferror(f)) {
+        cm_seterr("cannot read '%s': %s", r->name, strerror(errno));
+        goto out;
+    }
+    if (r->nrings == 0) {
+        cm_seterr("cannot read '%s': line %ld: no rings", r->name, lineno);
+        goto out;
+    }
+    if (got < want) {
+        cm_seterr("cannot read '%s': line %ld: truncated: ring of line %ld has %d points, header says %d",
+                  r->name, lineno, hdrline, got, want);
+        goto out;
+    }
+    for (int k = 0; k < r->nrings; k++) {
+        int a = r->start[k], b = r->start[k + 1] - 1;
+        if (r->P[2 * a] == r->P[2 * b] && r->P[2 * a + 1] == r->P[2 * b + 1]) {
+            cm_seterr("cannot read '%s': line %ld: last point repeats the first (rings close themselves)",
+                      r->name, r->line[b]);
+            goto out;
+        }
+    }
+    ok = 1;
+out:
+    free(buf);
+    if (!std) fclose(f);
+    if (!ok) {
+        char keep[256];
+        memcpy(keep, r->name, sizeof keep);
+        rings_free(r);
+        memcpy(r->name, keep, sizeof keep);
+        return -1;
+    }
+    return 0;
+}
+
+int rings_write(FILE *f, const struct rings *r)
+{
+    char bx[32], by[32];
+    for (int k = 0; k < r->nrings; k++) {
+        fprintf(f, "ring %d\n", rings_count(r, k));
+        const double *P = rings_ring(r, k);
+        for (int i = 0; i < rings_count(r, k); i++) {
+            format_double(bx, P[2 * i]);
+            format_double(by, P[2 * i + 1]);
+            fprintf(f, "%s %s\n", bx, by);
+        }
+    }
+    return ferror(f) ? cm_seterr("write error") : 0;
+}
+
+double rings_area(const struct rings *r, int k)
+{
+    const double *P = rings_ring(r, k);
+    int n = rings_count(r, k);
+    double a = 0;
+    for (int i = 0; i < n; i++) {
+        int j = (i + 1) % n;
+        a += P[2 * i] * P[2 * j + 1] - P[2 * j] * P[2 * i + 1];
+    }
+    return 0.5 * a;
+}
+
+int rings_orient(struct rings *r)
+{
+    int flipped = 0;
+    for (int k = 0; k < r->nrings; k++) {
+        double a = rings_area(r, k);
+        if ((k == 0 && a < 0) || (k > 0 && a > 0)) {
+            double *P = rings_ring(r, k);
+            long *L = r->line + r->start[k];
+            int n = rings_count(r, k);
+            for (int i = 0, j = n - 1; i < j; i++, j--) {
+                double t0 = P[2 * i], t1 = P[2 * i + 1];
+                P[2 * i] = P[2 * j]; P[2 * i + 1] = P[2 * j + 1];
+                P[2 * j] = t0; P[2 * j + 1] = t1;
+                long tl = L[i]; L[i] = L[j]; L[j] = tl;
+            }
+            flipped++;
+        }
+    }
+    return flipped;
+}
+
+static int on_segment(const double *a, const double *b, const double *p)
+{
+    return fmin(a[0], b[0]) <= p[0] && p[0] <= fmax(a[0], b[0]) &&
+           fmin(a[1], b[1]) <= p[1] && p[1] <= fmax(a[1], b[1]);
+}
+
+int segments_intersect(const double *a, const double *b, const double *c, const double *d)
+{
+    double o1 = orient2(a, b, c), o2 = orient2(a, b, d);
+    double o3 = orient2(c, d, a), o4 = orient2(c, d, b);
+    if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+        return 1;
+    if (o1 == 0 && on_segment(a, b, c)) return 1;
+    if (o2 == 0 && on_segment(a, b, d)) return 1;
+    if (o3 == 0 && on_segment(c, d, a)) return 1;
+    if (o4 == 0 && on_segment(c, d, b)) return 1;
+    return 0;
+}
+
+int point_in_ring(const double *P, int n, const double *q)
+{
+    int in = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++) {
+        const double *a = P + 2 * j, *b = P + 2 * i;
+        if ((a[1] > q[1]) != (b[1] > q[1])) {
+            double x = a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+            if (q[0] < x) in = !in;
+        }
+    }
+    return in;
+}
+
+struct seg { double xmin, xmax; int a, b, ring; };
+
+static int cmp_seg(const void *x, const void *y)
+{
+    const struct seg *s = x, *t = y;
+    return (s->xmin > t->xmin) - (s->xmin < t->xmin);
+}
+
+int rings_check_simple(const struct rings *r)
+{
+    int total = r->start[r->nrings];
+    struct seg *S = malloc((size_t)total * sizeof *S);
+    if (!S) return cm_seterr("out of memory");
+    int m = 0;
+    for (int k = 0; k < r->nrings; k++)
+        for (int i = r->start[k]; i < r->start[k + 1]; i++) {
+            int j = i + 1 == r->start[k + 1] ? r->start[k] : i + 1;
+            S[m].a = i; S[m].b = j; S[m].ring = k;
+            S[m].xmin = fmin(r->P[2 * i], r->P[2 * j]);
+            S[m].xmax = fmax(r->P[2 * i], r->P[2 * j]);
+            m++;
+        }
+    qsort(S, m, sizeof *S, cmp_seg);
+    int bad = 0;
+    for (int s = 0; s < m && !bad; s++)
+        for (int t = s + 1; t < m && S[t].xmin <= S[s].xmax; t++) {
+            const double *a = r->P + 2 * S[s].a, *b = r->P + 2 * S[s].b;
+            const double *c = r->P + 2 * S[t].a, *d = r->P + 2 * S[t].b;
+            int shared = -1;   /* which endpoints coincide by index */
+            if (S[s].b == S[t].a) shared = 0;      /* ab, bd: b shared */
+            else if (S[t].b == S[s].a) shared = 1; /* cd, da: a shared */
+            int hit;
+            if (shared == 0)      /* fold-back: d on ab or a on bd */
+                hit = orient2(a, b, d) == 0 && ((d[0] - b[0]) * (a[0] - b[0]) + (d[1] - b[1]) * (a[1] - b[1]) > 0);
+            else if (shared == 1)
+                hit = orient2(c, d, b) == 0 && ((b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1]) > 0);
+            else
+                hit = segments_intersect(a, b, c, d);
+            if (hit) {
+                cm_seterr("cannot read '%s': line %ld: outline intersects itself (edge from line %ld crosses edge from line %ld)",
+                          r->name, r->line[S[s].a] > r->line[S[t].a] ? r->line[S[s].a] : r->line[S[t].a],
+                          r->line[S[s].a], r->line[S[t].a]);
+                bad = 1;
+                break;
+            }
+        }
+    free(S);
+    return bad ? -1 : 0;
+}

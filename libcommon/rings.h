@@ -1,0 +1,72 @@
+/* rings.h -- 2D outlines as polygon rings.  Format (man 5 stopmo-rings):
+ *
+ *   ring 4            a ring header with its point count (>= 3)
+ *   0 0               one "x y" line per point; the ring closes itself
+ *   1 0               (do not repeat the first point)
+ *   1 1
+ *   0 1
+ *   ring 3            further rings: holes (or separate pieces)
+ *   ...
+ *
+ * The first ring is the outer boundary, counter-clockwise; holes clockwise.
+ * '#' comments and blank lines are allowed.  The reader keeps the line of
+ * every point so later checks (self-intersection) can name it.
+ */
+#ifndef CM_RINGS_H
+#define CM_RINGS_H
+#include <stdio.h>
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct rings {
+    int nrings;      /* number of rings */
+    int *start;      /* nrings+1 offsets into P: ring r is points start[r] .. start[r+1]-1 */
+    double *P;       /* #P by 2 point coordinates, row-major (#P = start[nrings]) */
+    long *line;      /* #P source line of each point (0 if not read from a file) */
+    char name[256];  /* file name used in messages */
+};
+
+/* Read a rings file (path NULL or "-": stdin).  Checks syntax, counts,
+ * finite numbers, >= 3 points per ring, no zero-length edges.
+ * Errors: "cannot read 'x': line N: problem". */
+int rings_read(const char *path, struct rings *r);
+/* Write all rings ("ring N" + N lines), shortest round-trip numbers. */
+int rings_write(FILE *f, const struct rings *r);
+/* Build from one ring of n points (P: n by 2, copied). */
+int rings_from_points(struct rings *r, const double *P, int n);
+/* Append one ring of n points (P: n by 2, copied). */
+int rings_append(struct rings *r, const double *P, int n);
+void rings_free(struct rings *r);
+
+static inline int rings_count(const struct rings *r, int k) { return r->start[k + 1] - r->start[k]; }
+static inline double *rings_ring(const struct rings *r, int k) { return r->P + 2 * (size_t)r->start[k]; }
+
+/* Signed area of ring k (> 0: counter-clockwise). */
+double rings_area(const struct rings *r, int k);
+
+/* Check that no two edges of any rings cross or touch (other than
+ * consecutive edges at their shared point) and that no edge folds back
+ * onto its neighbour.  Error names both edges by file line. */
+int rings_check_simple(const struct rings *r);
+
+/* Make the first ring counter-clockwise and all others clockwise
+ * (reverses rings as needed; returns the number of rings reversed). */
+int rings_orient(struct rings *r);
+
+/* Segment predicates shared by the 2D tools.
+ * orient2: twice the signed area of (a, b, c), > 0 counter-clockwise. */
+static inline double orient2(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+/* Do closed segments ab and cd share any point? */
+int segments_intersect(const double *a, const double *b, const double *c, const double *d);
+
+/* Is point q strictly inside polygon ring P (n by 2)?  (even-odd rule) */
+int point_in_ring(const double *P, int n, const double *q);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
