@@ -25,7 +25,7 @@ static const char help[] =
 "  -f, --frames F       number of frames (default 240, i.e. 10 s at 24 fps)\n"
 "      --fps R          frames per second of the motion curves (default 24)\n"
 "  -s, --subdiv K       icosphere subdivisions of the head (default 4: 2562 vertices)\n"
-"      --clips C        split the animation into C clips with cut marks (default 2)\n"
+"      --clips C        split the animation into C clips with cut marks (default 2, 1 for one frame)\n"
 "      --seed N         seed of the motion curves (default 1)\n"
 "      --raw            raw (binary) MESH output (or STOPMO_RAW=1)\n"
 "  -h, --help           show this help\n"
@@ -49,7 +49,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"frames", 1, 0, 'f'}, {"fps", 1, 0, 'F'}, {"subdiv", 1, 0, 's'},
         {"clips", 1, 0, 'c'}, {"seed", 1, 0, 'S'}, {"raw", 0, 0, 'R'},
         {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
-    o->frames = 240; o->fps = 24; o->subdiv = 4; o->clips = 2; o->raw = 0; o->seed = 1;
+    o->frames = 240; o->fps = 24; o->subdiv = 4; o->clips = -1; o->raw = 0; o->seed = 1;
     int c;
     while ((c = getopt_long(argc, argv, "f:s:h", lo, NULL)) != -1) {
         switch (c) {
@@ -67,6 +67,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (optind != argc) usage_error("unexpected argument '%s'", argv[optind]);
     if (o->frames < 1) usage_error("--frames must be at least 1");
     if (o->subdiv < 1 || o->subdiv > 7) usage_error("--subdiv must be in 1..7");
+    if (o->clips < 0) o->clips = o->frames > 1 ? 2 : 1;
     if (o->clips < 1 || o->clips > o->frames) usage_error("--clips must be in 1..frames");
     if (!(o->fps > 0)) usage_error("--fps must be positive");
 }
@@ -149,11 +150,20 @@ static void shape_head(const double s[3], double p[3])
     p[0] = 0.72 * x * (1 - 0.22 * smoothstep(-0.2, -1.0, y));   /* narrower jaw */
     p[1] = y;
     p[2] = 0.82 * z;
-    p[2] += front * 0.20 * gauss2(x / 0.55, (y + 0.02) / 1.1, 0.22);   /* nose */
-    p[2] += front * 0.05 * gauss2(x, y - 0.42, 0.12) * (fabs(x) < 0.5);  /* brow ridge */
-    for (int e = -1; e <= 1; e += 2)                                     /* eye bulges */
-        p[2] += front * 0.045 * gauss2(x - 0.27 * e, y - 0.22, 0.1);
-    p[2] -= front * 0.035 * exp(-pow((y + 0.45) / 0.035, 2)) * smoothstep(0.32, 0.2, fabs(x));
+    /* nose: a ridge from between the eyes to the tip, nostrils at its base */
+    double ridge = smoothstep(0.22, -0.05, y) * smoothstep(-0.22, -0.12, y);
+    p[2] += front * 0.20 * ridge * exp(-pow(x / (0.05 + 0.1 * smoothstep(0.2, -0.2, y)), 2));
+    p[2] += front * 0.05 * gauss2(x, (y - 0.42) / 0.6, 0.12) * (fabs(x) < 0.5);  /* brow ridge */
+    for (int e = -1; e <= 1; e += 2) {
+        double r = sqrt(pow(x - 0.27 * e, 2) + pow(y - 0.22, 2));
+        p[2] -= front * 0.07 * exp(-pow(r / 0.15, 2));                   /* socket */
+        p[2] += front * 0.075 * exp(-pow(r / 0.085, 2));                 /* eyeball */
+        p[0] += 0.09 * e * smoothstep(0.75, 0.95, e * s[0]) *            /* ears */
+                exp(-pow((y - 0.08) / 0.2, 2) - pow((z + 0.05) / 0.25, 2));
+    }
+    for (int l = -1; l <= 1; l += 2)                                     /* lips */
+        p[2] += front * 0.05 * exp(-pow(x / 0.2, 2) - pow((y + 0.45 + 0.05 * l) / 0.045, 2));
+    p[2] -= front * 0.04 * exp(-pow((y + 0.45) / 0.02, 2)) * smoothstep(0.26, 0.16, fabs(x));
     p[2] += front * 0.05 * gauss2(x / 0.9, (y + 0.78), 0.16);            /* chin */
 }
 
