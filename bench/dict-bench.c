@@ -27,6 +27,13 @@ static double wall(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+static void log_iter(void *ctx, const struct replib_iter *it)
+{
+    (void)ctx;
+    fprintf(stderr, "restart %d iteration %d: E %.10g changed %d reseeded %d %.4f s\n", it->restart,
+            it->iteration, it->energy, it->changed, it->reseeded, it->seconds);
+}
+
 static double cpu(void)
 {
     struct rusage u;
@@ -81,6 +88,7 @@ int main(int argc, char **argv)
     if (replib_prepare(&D) < 0) { fprintf(stderr, "dict-bench: prepare failed\n"); return 1; }
     struct replib_opts o = {0};
     o.d = d; o.lambda = 2; o.restarts = restarts; o.iterations = iters; o.seed = (uint64_t)seed; o.tol = 1e-10;
+    if (getenv("DICT_BENCH_LOG")) o.log = log_iter;
     struct replib_result res;
     if (replib_learn(&D, &o, &res) < 0) { fprintf(stderr, "dict-bench: learn failed\n"); return 1; }
     double cpu_s = cpu() - c0;

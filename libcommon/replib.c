@@ -8,8 +8,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <pthread.h>
+#include <unistd.h>
 
 /* LAPACK (column-major Fortran interface, from OpenBLAS/liblapack) */
+extern int openblas_get_num_threads(void);
+extern void openblas_set_num_threads(int);
 extern void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 
 static double wall(void)
@@ -443,6 +447,146 @@ static int seed_pieces(const struct replib_data *D, int d, struct rng *r, struct
     return 0;
 }
 
+/* One restart's outcome, kept until the best is chosen. */
+struct restart {
+    int rc;
+    double E, data, velocity, label_seconds;
+    int iterations;
+    int *labels;
+    struct lstate s;            /* the library the labels were optimised for */
+    struct replib_iter *log;    /* buffered iteration records */
+    int nlog, caplog;
+};
+
+static void keep_log(struct restart *r, const struct replib_iter *it)
+{
+    if (r->nlog == r->caplog) {
+        int nc = r->caplog ? 2 * r->caplog : 16;
+        struct replib_iter *p = realloc(r->log, sizeof *p * nc);
+        if (!p) return;
+        r->log = p;
+        r->caplog = nc;
+    }
+    r->log[r->nlog++] = *it;
+}
+
+static int lstate_copy(struct lstate *dst, const struct lstate *src)
+{
+    lstate_free(dst);
+    if (lstate_init(dst, src->d) < 0) return -1;
+    int nf = src->nfree;
+    dst->nfree = nf;
+    memcpy(dst->src, src->src, sizeof(int) * src->d);
+    memcpy(dst->fidx, src->fidx, sizeof(int) * src->d);
+    if (nf > 0) {
+        dst->Uf = malloc(sizeof(double) * (size_t)nf * nf);
+        if (!dst->Uf) return cm_seterr("replib: out of memory");
+        memcpy(dst->Uf, src->Uf, sizeof(double) * (size_t)nf * nf);
+    }
+    for (int k = 0; k < src->nnz; k++)
+        if (push(dst, src->ri[k], src->ci[k], src->v[k]) < 0) return cm_seterr("replib: out of memory");
+    return 0;
+}
+
+/* Block coordinate descent from one start; the result goes to *out. */
+static void run_restart(const struct replib_data *D, const struct replib_opts *o, int rs,
+                        struct work *w, struct lstate *s, int *l, int *ln, double *cost,
+                        struct restart *out)
+{
+    int n = D->n, d = o->d;
+    double mu = o->lambda / 2;
+    int iters = o->iterations < 1 ? 1 : o->iterations;
+    struct rng r;
+    rng_seed(&r, o->seed ^ (0x9E3779B97F4A7C15ULL * (uint64_t)(rs + 1)));
+    double ti = wall(), E;
+    struct replib_iter it = {0};
+    it.restart = rs;
+    memset(cost, 0, sizeof(double) * n);
+    if (rs == 0 && o->init_labels) {
+        memcpy(l, o->init_labels, sizeof(int) * n);
+        E = INFINITY;
+    } else {
+        if (seed_pieces(D, d, &r, s) < 0 || compute_costs(D, s, mu, w) < 0) { out->rc = -1; return; }
+        double tl = wall();
+        E = label_step(w, o->method, l, 0);
+        out->label_seconds += wall() - tl;
+        if (isnan(E)) { out->rc = -1; return; }
+        it.energy = E;
+        chain_energy(&w->ch, l, &it.data, &it.velocity);
+        it.changed = n;
+        it.seconds = wall() - ti;
+        keep_log(out, &it);
+        for (int f = 0; f < n; f++) cost[f] = w->U[(size_t)f * d + l[f]];
+    }
+    for (int k = 1; k <= iters; k++) {
+        ti = wall();
+        it.iteration = k;
+        if (library_step(D, d, mu, l, cost, s, &it.reseeded) < 0 || compute_costs(D, s, mu, w) < 0) {
+            out->rc = -1;
+            return;
+        }
+        memcpy(ln, l, sizeof(int) * n);
+        double tl = wall();
+        double En = label_step(w, o->method, ln, 1);
+        out->label_seconds += wall() - tl;
+        if (isnan(En)) { out->rc = -1; return; }
+        it.changed = 0;
+        for (int f = 0; f < n; f++) it.changed += ln[f] != l[f];
+        memcpy(l, ln, sizeof(int) * n);
+        for (int f = 0; f < n; f++) cost[f] = w->U[(size_t)f * d + l[f]];
+        it.energy = En;
+        chain_energy(&w->ch, l, &it.data, &it.velocity);
+        it.seconds = wall() - ti;
+        out->iterations++;
+        keep_log(out, &it);
+        double Eprev = E;
+        E = En;
+        if (it.changed == 0 || (isfinite(Eprev) && Eprev - En <= o->tol * fabs(Eprev))) break;
+    }
+    /* w and s hold the library and costs that l was optimised for */
+    out->E = E;
+    chain_energy(&w->ch, l, &out->data, &out->velocity);
+    out->labels = malloc(sizeof(int) * n);
+    if (!out->labels || lstate_copy(&out->s, s) < 0) { out->rc = -1; return; }
+    memcpy(out->labels, l, sizeof(int) * n);
+}
+
+struct worker {
+    const struct replib_data *D;
+    const struct replib_opts *o;
+    struct restart *out;
+    int restarts;
+    int *next;                  /* shared restart counter */
+    pthread_mutex_t *lock;
+    int rc;
+};
+
+static void *worker_main(void *arg)
+{
+    struct worker *wk = arg;
+    const struct replib_data *D = wk->D;
+    int n = D->n, d = wk->o->d;
+    struct work w;
+    struct lstate s;
+    int *l = malloc(sizeof(int) * n), *ln = malloc(sizeof(int) * n);
+    double *cost = malloc(sizeof(double) * n);
+    int ok = l && ln && cost;
+    if (!ok || lstate_init(&s, d) < 0) { free(l); free(ln); free(cost); wk->rc = -1; return NULL; }
+    if (work_init(&w, D, d) < 0) { free(l); free(ln); free(cost); lstate_free(&s); wk->rc = -1; return NULL; }
+    for (;;) {
+        pthread_mutex_lock(wk->lock);
+        int rs = (*wk->next)++;
+        pthread_mutex_unlock(wk->lock);
+        if (rs >= wk->restarts) break;
+        run_restart(D, wk->o, rs, &w, &s, l, ln, cost, &wk->out[rs]);
+        if (wk->out[rs].rc) { wk->rc = -1; break; }
+    }
+    free(l); free(ln); free(cost);
+    lstate_free(&s);
+    work_free(&w);
+    return NULL;
+}
+
 int replib_learn(const struct replib_data *D, const struct replib_opts *o, struct replib_result *res)
 {
     int n = D->n, d = o->d, m3 = D->m3;
@@ -455,87 +599,67 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
         for (int f = 0; f < n; f++)
             if (o->init_labels[f] < 0 || o->init_labels[f] >= d)
                 return cm_seterr("initial label %d of frame %d is not in [0, %d)", o->init_labels[f], f, d);
-    double t0 = wall(), mu = o->lambda / 2;
-    int restarts = o->restarts < 1 ? 1 : o->restarts, iters = o->iterations < 1 ? 1 : o->iterations;
-    res->d = d; res->n = n; res->m3 = m3;
+    double t0 = wall();
+    int restarts = o->restarts < 1 ? 1 : o->restarts;
+    int nth = o->threads;
+    if (nth <= 0) {
+        long c = sysconf(_SC_NPROCESSORS_ONLN);
+        nth = c > 0 ? (int)c : 1;
+    }
+    if (nth > restarts) nth = restarts;
+    if (nth > 16) nth = 16;
+    struct restart *out = calloc(restarts, sizeof *out);
     res->labels = malloc(sizeof(int) * n);
     res->R = malloc(sizeof(double) * (size_t)d * m3);
-    int *l = malloc(sizeof(int) * n), *ln = malloc(sizeof(int) * n);
-    double *cost = calloc(n, sizeof(double));
-    struct lstate s;
-    struct work w;
-    int ok = res->labels && res->R && l && ln && cost;
-    if (!ok || lstate_init(&s, d) < 0) {
-        free(l); free(ln); free(cost); replib_result_free(res);
+    if (!out || !res->labels || !res->R) {
+        free(out); replib_result_free(res);
         return cm_seterr("replib: out of memory");
     }
-    if (work_init(&w, D, d) < 0) {
-        free(l); free(ln); free(cost); lstate_free(&s); replib_result_free(res);
-        return -1;
-    }
-    double best = INFINITY;
-    int rc = 0;
-    for (int rs = 0; rs < restarts && rc == 0; rs++) {
-        struct rng r;
-        rng_seed(&r, o->seed ^ (0x9E3779B97F4A7C15ULL * (uint64_t)(rs + 1)));
-        double ti = wall(), E;
-        struct replib_iter it = {0};
-        it.restart = rs;
-        if (rs == 0 && o->init_labels) {
-            memcpy(l, o->init_labels, sizeof(int) * n);
-            E = INFINITY;
+    int next = 0, rc = 0;
+    pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    struct worker wk[16];
+    pthread_t th[16];
+    int started = 0;
+    /* restarts run in parallel: BLAS single-threaded meanwhile (the per-
+     * iteration products are small); results do not depend on the order */
+    int blas_threads = openblas_get_num_threads();
+    if (nth > 1) openblas_set_num_threads(1);
+    for (int t = 0; t < nth; t++) {
+        wk[t] = (struct worker){D, o, out, restarts, &next, &lock, 0};
+        if (t == nth - 1 || pthread_create(&th[t], NULL, worker_main, &wk[t]) != 0) {
+            worker_main(&wk[t]);     /* the last one (or a failed spawn) runs here */
+            if (t != nth - 1) continue;
         } else {
-            if (seed_pieces(D, d, &r, &s) < 0 || compute_costs(D, &s, mu, &w) < 0) { rc = -1; break; }
-            double tl = wall();
-            E = label_step(&w, o->method, l, 0);
-            res->label_seconds += wall() - tl;
-            if (isnan(E)) { rc = -1; break; }
-            it.energy = E;
-            chain_energy(&w.ch, l, &it.data, &it.velocity);
-            it.changed = n;
-            it.seconds = wall() - ti;
-            if (o->log) o->log(o->log_ctx, &it);
-        }
-        for (int k = 1; k <= iters; k++) {
-            ti = wall();
-            it.iteration = k;
-            if (library_step(D, d, mu, l, cost, &s, &it.reseeded) < 0 || compute_costs(D, &s, mu, &w) < 0) {
-                rc = -1;
-                break;
-            }
-            memcpy(ln, l, sizeof(int) * n);
-            double tl = wall();
-            double En = label_step(&w, o->method, ln, 1);
-            res->label_seconds += wall() - tl;
-            if (isnan(En)) { rc = -1; break; }
-            it.changed = 0;
-            for (int f = 0; f < n; f++) it.changed += ln[f] != l[f];
-            memcpy(l, ln, sizeof(int) * n);
-            for (int f = 0; f < n; f++) cost[f] = w.U[(size_t)f * d + l[f]];
-            it.energy = En;
-            chain_energy(&w.ch, l, &it.data, &it.velocity);
-            it.seconds = wall() - ti;
-            res->iterations++;
-            if (o->log) o->log(o->log_ctx, &it);
-            double Eprev = E;
-            E = En;
-            if (it.changed == 0 || (isfinite(Eprev) && Eprev - En <= o->tol * fabs(Eprev))) break;
-        }
-        if (rc) break;
-        res->restarts++;
-        if (E < best) {
-            /* s, w hold the library and costs that l was optimised for */
-            best = E;
-            res->best_restart = rs;
-            memcpy(res->labels, l, sizeof(int) * n);
-            chain_energy(&w.ch, l, &res->data, &res->velocity);
-            res->energy = E;
-            if (lstate_apply(&s, D->X, n, D->Rfix, m3, res->R) < 0) { rc = -1; break; }
+            started |= 1 << t;
         }
     }
-    free(l); free(ln); free(cost);
-    lstate_free(&s);
-    work_free(&w);
+    for (int t = 0; t < nth; t++)
+        if (started & (1 << t)) pthread_join(th[t], NULL);
+    if (nth > 1) openblas_set_num_threads(blas_threads);
+    for (int t = 0; t < nth; t++) if (wk[t].rc) rc = -1;
+    int best = -1;
+    for (int rs = 0; rs < restarts && !rc; rs++) {
+        if (o->log)
+            for (int k = 0; k < out[rs].nlog; k++) o->log(o->log_ctx, &out[rs].log[k]);
+        res->iterations += out[rs].iterations;
+        res->label_seconds += out[rs].label_seconds;
+        res->restarts++;
+        if (best < 0 || out[rs].E < out[best].E) best = rs;
+    }
+    if (!rc) {
+        res->d = d; res->n = n; res->m3 = m3;
+        res->best_restart = best;
+        res->energy = out[best].E; res->data = out[best].data; res->velocity = out[best].velocity;
+        memcpy(res->labels, out[best].labels, sizeof(int) * n);
+        if (lstate_apply(&out[best].s, D->X, n, D->Rfix, m3, res->R) < 0) rc = -1;
+    } else {
+        cm_seterr("replib: out of memory in the block coordinate descent");
+    }
+    for (int rs = 0; rs < restarts; rs++) {
+        free(out[rs].labels); free(out[rs].log);
+        lstate_free(&out[rs].s);
+    }
+    free(out);
     if (rc) { replib_result_free(res); return -1; }
     res->seconds = wall() - t0;
     return 0;

@@ -84,6 +84,8 @@ struct replib_opts {
     enum replib_method method;  /* label step */
     const int *init_labels;     /* n labels in [0, d) for restart 0, or NULL (k-means++ start) */
     double tol;                 /* stop when E decreases by less than tol * E (e.g. 1e-9) */
+    int threads;                /* restarts run in parallel on this many threads (0: one per core);
+                                   the result does not depend on it */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
     void *log_ctx;
 };

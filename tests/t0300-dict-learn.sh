@@ -15,7 +15,10 @@ test_expect_success 'library has d frames, labels one per frame in [0, d)' '
 test_expect_success 'same --seed gives the same bytes, another seed may differ' '
 	dict-learn -d 6 --seed 7 --labels-out lab1 anim.mesh >lib1.mesh &&
 	dict-learn -d 6 --seed 7 --labels-out lab2 anim.mesh >lib2.mesh &&
-	test_cmp lib1.mesh lib2.mesh && test_cmp lab1 lab2
+	test_cmp lib1.mesh lib2.mesh && test_cmp lab1 lab2 &&
+	dict-learn -d 6 --seed 7 -r 5 --threads 1 anim.mesh >t1.mesh &&
+	dict-learn -d 6 --seed 7 -r 5 --threads 3 anim.mesh >t3.mesh &&
+	test_cmp t1.mesh t3.mesh && test_cmp lib1.mesh t1.mesh
 '
 test_expect_success 'lambda = 0 matches a reference Lloyd loop (awk) from the same start' '
 	awk "BEGIN { for (f = 0; f < 80; f++) print int(f * 4 / 80) }" >init &&

@@ -44,6 +44,8 @@ static const char help[] =
 "                         step S (Fig. 8) instead of writing a library\n"
 "      --gram auto|on|off cost back end: Gram matrix (default when frames <=\n"
 "                         12000) or one GEMM per iteration\n"
+"      --threads N        restarts run on N threads (default 0: one per core);\n"
+"                         the result does not depend on N\n"
 "  -o, --output FILE      write the library to FILE instead of stdout\n"
 "      --raw              write the raw (binary) MESH variant\n"
 "  -v, --verbose          energies and timings per iteration on stderr\n"
@@ -54,7 +56,7 @@ static const char help[] =
 
 struct options {
     const char *input, *weights, *fixed, *init_labels, *labels_out, *report, *output, *sweep;
-    int d, restarts, iterations, raw, gram;
+    int d, restarts, iterations, raw, gram, threads;
     double lambda, max_error;
     long seed;
     enum replib_method method;
@@ -67,7 +69,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"iterations", 1, 0, 'i'}, {"seed", 1, 0, 'S'}, {"weights", 1, 0, 'w'},
         {"fixed", 1, 0, 'F'}, {"method", 1, 0, 'm'}, {"init-labels", 1, 0, 'I'},
         {"labels-out", 1, 0, 'L'}, {"report", 1, 0, 'P'}, {"max-error", 1, 0, 'E'},
-        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"output", 1, 0, 'o'},
+        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"threads", 1, 0, 'T'}, {"output", 1, 0, 'o'},
         {"raw", 0, 0, 'R'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -101,6 +103,9 @@ static void parse_args(int argc, char **argv, struct options *o)
             else if (!strcmp(optarg, "on")) o->gram = 1;
             else if (!strcmp(optarg, "off")) o->gram = 0;
             else usage_error("--gram: '%s' is not auto, on or off", optarg);
+            break;
+        case 'T': o->threads = (int)arg_long(optarg, "--threads");
+            if (o->threads < 0) usage_error("--threads must be >= 0");
             break;
         case 'o': o->output = optarg; break;
         case 'R': o->raw = 1; break;
@@ -136,6 +141,7 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     struct replib_opts ro = {0};
     ro.d = d; ro.lambda = o->lambda; ro.restarts = o->restarts; ro.iterations = o->iterations;
     ro.seed = (uint64_t)o->seed; ro.method = o->method; ro.init_labels = init; ro.tol = 1e-10;
+    ro.threads = o->threads;
     ro.log = log_iter;
     if (replib_learn(D, &ro, &run->res) < 0) die("%s", cm_errmsg());
     replib_evaluate(m->V, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
