@@ -239,7 +239,7 @@ int main(int argc, char **argv)
     if (!F) die("out of memory");
     memcpy(F, r.F, sizeof(int) * 3 * nf);
     int *P, np;
-    if (labels_read(o.labels, nf, "faces", 0, 65535, &P, &np) < 0) die("%s", cm_errmsg());
+    if (labels_read(o.labels, nf, "faces", 0, 4095, &P, &np) < 0) die("%s", cm_errmsg());
     int s = 1;
     for (int f = 0; f < nf; f++) if (P[f] + 1 > s) s = P[f] + 1;
     struct topology t;
