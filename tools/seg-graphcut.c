@@ -258,9 +258,13 @@ int main(int argc, char **argv)
     double *X = malloc(sizeof(double) * 3 * (nv ? nv : 1));
     double *avg = calloc(3 * (size_t)nv + 1, sizeof *avg);
     double *m2 = o.one_pass ? calloc((size_t)nv + 1, sizeof *m2) : NULL;
-    double *elenF = o.one_pass ? calloc(3 * (size_t)nf + 1, sizeof *elenF) : NULL;
+    /* --one-pass: mean lengths of the input's edges, and each face corner's
+     * input edge (the joined topology below may renumber the edges) */
+    double *elen = o.one_pass ? calloc((size_t)t.ne + 1, sizeof *elen) : NULL;
+    int *FE0 = o.one_pass ? malloc(sizeof(int) * 3 * (nf ? nf : 1)) : NULL;
+    if (o.one_pass && FE0) memcpy(FE0, t.FE, sizeof(int) * 3 * nf);
     int *rep = malloc(sizeof(int) * (nv ? nv : 1));
-    if (!X || !avg || !rep || (o.one_pass && (!m2 || !elenF))) die("out of memory");
+    if (!X || !avg || !rep || (o.one_pass && (!m2 || !elen || !FE0))) die("out of memory");
     struct mesh_spool sp;
     if (!o.one_pass && mesh_spool_begin(&sp, o.input, &r) < 0) die("%s", cm_errmsg());
     struct progress pr;
@@ -276,18 +280,18 @@ int main(int argc, char **argv)
             if (mesh_spool_frame(&sp, X, cut) < 0) die("%s", cm_errmsg());
             for (int i = 0; i < 3 * nv; i++) avg[i] += X[i];
         } else {   /* Welford: stable running mean and squared deviation */
+            double inv = 1.0 / n;
             for (int v = 0; v < nv; v++) {
                 double d[3], d2 = 0;
                 for (int k = 0; k < 3; k++) {
                     d[k] = X[3 * v + k] - avg[3 * v + k];
-                    avg[3 * v + k] += d[k] / n;
+                    avg[3 * v + k] += d[k] * inv;
                     d2 += d[k] * (X[3 * v + k] - avg[3 * v + k]);
                 }
                 m2[v] += d2;
             }
-            for (int f = 0; f < nf; f++)
-                for (int c = 0; c < 3; c++)
-                    elenF[3 * f + c] += dist3(X + 3 * F[3 * f + c], X + 3 * F[3 * f + (c + 1) % 3]);
+            for (int e = 0; e < t.ne; e++)
+                elen[e] += dist3(X + 3 * t.E[2 * e], X + 3 * t.E[2 * e + 1]);
         }
         progress_step(&pr, n);
     }
@@ -393,7 +397,7 @@ int main(int argc, char **argv)
             for (int c = 0; c < 3; c++) {
                 int e = t.FE[3 * f + c], a = t.E[2 * e], b = t.E[2 * e + 1];
                 double ra = sqrt(m2[a] / n), rb = sqrt(m2[b] / n);
-                w[e] = elenF[3 * f + c] / n / diag;
+                w[e] = elen[FE0[3 * f + c]] / n / diag;
                 wm[e] = w[e] * (ra + rb) / diag;
             }
     }
@@ -492,7 +496,7 @@ int main(int argc, char **argv)
     FILE *out = out_open(o.output);
     if (labels_write(out, L, nf) < 0) die("cannot write output: %s", cm_errmsg());
     out_close(out);
-    free(X); free(avg); free(m2); free(elenF); free(rep); free(Fw); free(w); free(wm); free(dmean); free(U); free(D); free(S);
+    free(X); free(avg); free(m2); free(elen); free(FE0); free(rep); free(Fw); free(w); free(wm); free(dmean); free(U); free(D); free(S);
     free(E); free(W); free(L); free(count); free(seed_part); free(nseed_of);
     free(o.seeds); free(F);
     topology_free(&t);
