@@ -5,6 +5,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 const char *progname = "stopmo";
@@ -133,6 +134,22 @@ FILE *out_open(const char *path)
 {
     if (!path || !strcmp(path, "-"))
         return stdout;
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        /* a device or FIFO (/dev/null, a named pipe): there is nothing to
+         * replace atomically, and renaming over it would destroy it */
+        FILE *f = fopen(path, "wb");
+        if (!f)
+            die("cannot write '%s': %s", path, strerror(errno));
+        for (int i = 0; i < MAX_OUTS; i++)
+            if (!outs[i].f) {
+                outs[i].f = f;
+                outs[i].path = strdup(path);
+                outs[i].tmp = NULL;
+                return f;
+            }
+        die("too many output files open");
+    }
     for (int i = 0; i < MAX_OUTS; i++)
         if (!outs[i].f) {
             size_t n = strlen(path) + 32;
@@ -163,7 +180,7 @@ void out_close(FILE *f)
             int bad = ferror(f) | fflush(f);
             if (fclose(f) != 0 || bad)
                 die("cannot write '%s': %s", outs[i].path, strerror(errno));
-            if (rename(outs[i].tmp, outs[i].path) != 0)
+            if (outs[i].tmp && rename(outs[i].tmp, outs[i].path) != 0)
                 die("cannot rename to '%s': %s", outs[i].path, strerror(errno));
             free(outs[i].tmp);
             free(outs[i].path);

@@ -11,4 +11,10 @@ test_expect_success 'plain -> raw -> plain is bit-exact' '
 	STOPMO_RAW=1 mesh-gen -f 5 -a twist -n 7 cylinder >a.raw &&
 	head -1 a.raw >magic && echo "MESH 1 raw" >expect && test_cmp expect magic
 '
+test_expect_success '-o to a FIFO writes through it and leaves it a FIFO' '
+	mkfifo fifo && printf "1 2\n2 3\n" >d &&
+	{ plot-xy -f ppm -o fifo d & } &&
+	head -c 2 fifo >magic && wait &&
+	printf P6 >expect && test_cmp expect magic && test -p fifo
+'
 test_done
