@@ -8,11 +8,12 @@
 # honest number on a loaded machine.  Also: exact DP vs alpha-expansion on
 # the final library, and OpenBLAS's generic vs AVX-512 kernel.
 # Default run: Oldman, Bobby, Monkey sizes; BENCH_FULL=1 adds the Bunny.
+# "-single": the Gram matrix in single precision (dict-learn --gram single).
 set -u
 B=${ROOT:-$(cd "$(dirname "$0")/.." && pwd)}/build/bench/dict-bench
 [ -x "$B" ] || { echo "b-dict: $B not built (make bench)"; exit 1; }
 run() { # name V frames d paper_s
-    out=$("$B" "$2" "$3" "$4" 5 50 1) || { echo "$1: dict-bench failed"; return 1; }
+    out=$(DICT_BENCH_GRAM=${GRAM:--1} "$B" "$2" "$3" "$4" 5 50 1) || { echo "$1: dict-bench failed"; return 1; }
     echo "$out" | sed -e "s/^/   $1 /"
     echo "$out" | awk -v name="$1" -v paper="$5" '
         /^blas=/ { for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
@@ -30,8 +31,10 @@ run() { # name V frames d paper_s
 run oldman 21484 260 20 1
 run bobby 60464 229 20 4
 run monkey 9585 2653 150 39
+GRAM=2 run monkey-single 9585 2653 150 39
 if [ "${BENCH_FULL:-0}" = 1 ]; then
     run bunny 11595 5177 200 152
+    GRAM=2 run bunny-single 11595 5177 200 152
 fi
 # OpenBLAS kernel: Debian's 0.3.21 falls back to Prescott on this CPU; dict-learn
 # re-executes itself with OPENBLAS_CORETYPE set (libcommon/blas_tune.h)

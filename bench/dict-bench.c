@@ -84,7 +84,7 @@ int main(int argc, char **argv)
 
     double c0 = cpu();
     struct replib_data D = {0};
-    D.n = n; D.nv = nv; D.X = X; D.cut = cut; D.gram = -1;
+    D.n = n; D.nv = nv; D.X = X; D.cut = cut; D.gram = getenv("DICT_BENCH_GRAM") ? atoi(getenv("DICT_BENCH_GRAM")) : -1;
     if (replib_prepare(&D) < 0) { fprintf(stderr, "dict-bench: prepare failed\n"); return 1; }
     struct replib_opts o = {0};
     o.d = d; o.lambda = 2; o.restarts = restarts; o.iterations = iters; o.seed = (uint64_t)seed; o.tol = 1e-10;

@@ -78,7 +78,21 @@ int replib_prepare(struct replib_data *D)
             replib_data_free(D);
             return cm_seterr("replib: out of memory for the %d x %d Gram matrix", N, N);
         }
-        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, N, m3, 1.0, D->Z, m3, 0.0, D->K, N);
+        if (gram == 2) {
+            /* single precision Gram (SSYRK, about 2x faster); costs then carry
+             * ~1e-7 relative errors, the reported energies stay exact */
+            float *Zf = malloc(sizeof(float) * (size_t)N * m3), *Kf = malloc(sizeof(float) * (size_t)N * N);
+            if (!Zf || !Kf) {
+                free(Zf); free(Kf); replib_data_free(D);
+                return cm_seterr("replib: out of memory for the %d x %d Gram matrix", N, N);
+            }
+            for (size_t k = 0; k < (size_t)N * m3; k++) Zf[k] = (float)D->Z[k];
+            cblas_ssyrk(CblasRowMajor, CblasUpper, CblasNoTrans, N, m3, 1.0f, Zf, m3, 0.0f, Kf, N);
+            for (size_t k = 0; k < (size_t)N * N; k++) D->K[k] = Kf[k];
+            free(Zf); free(Kf);
+        } else {
+            cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, N, m3, 1.0, D->Z, m3, 0.0, D->K, N);
+        }
         for (int i = 0; i < N; i++)
             for (int j = 0; j < i; j++) D->K[(size_t)i * N + j] = D->K[(size_t)j * N + i];
         for (int g = 0; g < N; g++) D->zz[g] = D->K[(size_t)g * N + g];

@@ -47,7 +47,7 @@ struct replib_data {
     const double *Rfix;         /* nfix by 3#V fixed piece positions, or NULL */
     const double *w;            /* #V saliency weights >= 0, or NULL (all 1) */
     const unsigned char *cut;   /* n flags, 1 = frame starts a clip, or NULL */
-    int gram;                   /* -1 auto, 0 direct, 1 Gram */
+    int gram;                   /* -1 auto, 0 direct, 1 Gram, 2 Gram in single precision */
     /* derived by replib_prepare() */
     int N;                      /* n + nfix */
     int m3;                     /* 3#V */

@@ -46,6 +46,11 @@ test_expect_success 'Gram and direct back ends agree from the same start' '
 	a=$(awk "/^energy /{print \$2}" rg) && b=$(awk "/^energy /{print \$2}" rd) &&
 	test_near "$a" "$b" "$(awk -v r="$a" "BEGIN{print 1e-8 * r}")"
 '
+test_expect_success 'single precision Gram finds (nearly) the same energy' '
+	dict-learn -d 5 -r 1 --init-labels init --gram single --report rsg anim.mesh >lsg.mesh &&
+	a=$(awk "/^energy /{print \$2}" rg) && b=$(awk "/^energy /{print \$2}" rsg) &&
+	test_near "$a" "$b" "$(awk -v r="$a" "BEGIN{print 1e-4 * r}")"
+'
 test_expect_success 'd = frames reproduces every frame' '
 	dict-learn -d 80 -r 1 --report rn anim.mesh >/dev/null &&
 	test_le "$(awk "/^max_error /{print \$2}" rn)" 1e-9

@@ -42,8 +42,9 @@ static const char help[] =
 "                         is <= E model units (Fig. 16); -d is then ignored\n"
 "      --sweep D1:D2[:S]  print \"d energy mean_err max_err\" for D = D1..D2\n"
 "                         step S (Fig. 8) instead of writing a library\n"
-"      --gram auto|on|off cost back end: Gram matrix (default when frames <=\n"
-"                         12000) or one GEMM per iteration\n"
+"      --gram auto|on|single|off  cost back end: Gram matrix (default when\n"
+"                         frames <= 12000), Gram matrix in single precision\n"
+"                         (faster; reports stay exact), or one GEMM per iteration\n"
 "      --threads N        restarts run on N threads (default 0: one per core);\n"
 "                         the result does not depend on N\n"
 "  -o, --output FILE      write the library to FILE instead of stdout\n"
@@ -102,7 +103,8 @@ static void parse_args(int argc, char **argv, struct options *o)
             if (!strcmp(optarg, "auto")) o->gram = -1;
             else if (!strcmp(optarg, "on")) o->gram = 1;
             else if (!strcmp(optarg, "off")) o->gram = 0;
-            else usage_error("--gram: '%s' is not auto, on or off", optarg);
+            else if (!strcmp(optarg, "single")) o->gram = 2;
+            else usage_error("--gram: '%s' is not auto, on, single or off", optarg);
             break;
         case 'T': o->threads = (int)arg_long(optarg, "--threads");
             if (o->threads < 0) usage_error("--threads must be >= 0");
