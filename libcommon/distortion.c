@@ -27,13 +27,14 @@ int mesh_distortion(const double *V0, const double *V, const int *F, int nv, int
     double *A0 = malloc((size_t)nf * sizeof *A0 + 1), *A = malloc((size_t)nf * sizeof *A + 1);
     face_areas(V0, F, nf, A0);
     face_areas(V, F, nf, A);
-    double s = 0, ss = 0;
+    double s = 0, ss = 0, sa = 0;
     int na = 0;
     for (int f = 0; f < nf; f++) {
         if (!(A0[f] > 0)) continue;
         double r = A[f] / A0[f] - 1;
-        s += r; ss += r * r; na++;
+        s += r; ss += r * r; sa += fabs(r); na++;
     }
+    d->area_abs = na ? sa / na : 0;
     d->area_mean = na ? s / na : 0;
     d->area_sigma = na ? sqrt(fmax(0, ss / na - d->area_mean * d->area_mean)) : 0;
     double c0[3], c[3], mean = 0;

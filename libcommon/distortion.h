@@ -15,6 +15,7 @@ extern "C" {
 
 struct distortion {
     double area_mean, area_sigma;   /* of d_A over triangles */
+    double area_abs;                /* mean of |d_A| */
     double vol_mean, vol_sigma;     /* of d_V over the kept elements */
     int vol_n;                      /* elements kept */
     double edge_max;                /* max over edges of |l / L - 1| */

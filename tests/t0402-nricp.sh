@@ -50,6 +50,16 @@ test_expect_success 'nricp accepts vertex-to-vertex landmarks' '
 	mesh-metrics --no-header -r s3.mesh same.mesh >same.txt &&
 	test_le "$(awk "{ print \$3 }" same.txt)" 1e-6
 '
+test_expect_success 'nricp --init-deform: known correspondence, mean error below 2% of the diagonal' '
+	nricp --init-deform -l marks.txt src.mesh tgt.mesh >regi.mesh &&
+	anim-diff -s truth.mesh regi.mesh >d.txt &&
+	e=$(awk "/^mean/ { print \$2 }" d.txt) &&
+	diag=$(mesh-info truth.mesh | awk "/^diagonal/ { print \$2 }") &&
+	echo "mean error $e, diagonal $diag" &&
+	test_le "$e" "$(awk "BEGIN { print 0.02 * $diag }")" &&
+	mesh-metrics --no-header -r tgt.mesh regi.mesh >mi.txt &&
+	test_le "$(awk "{ print \$3 }" mi.txt)" 0.01
+'
 test_expect_success 'procrustes recovers a rigid motion and --apply aligns' '
 	awk "/^frame [0-9]/ { on = 1; print; next } on && NF == 3 { printf \"%.17g %.17g %.17g\n\", -\$2 + 3, \$1, \$3 - 1; next } { print }" src.mesh >moved.mesh &&
 	procrustes src.mesh moved.mesh >T.txt &&

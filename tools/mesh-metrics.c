@@ -20,7 +20,7 @@ static const char help[] =
 "For every frame of ANIM, one row of metrics against frame 0 of REFERENCE:\n"
 "  frame hausdorff hausdorff_rel rms flipped\n"
 "and when ANIM has the reference's connectivity also\n"
-"  volume_rel area_mean area_sigma vol_mean vol_sigma edge_max\n"
+"  volume_rel area_mean area_sigma vol_mean vol_sigma edge_max area_abs\n"
 "(hausdorff_rel: over the reference's bounding-box diagonal; see mesh-metrics(1)).\n"
 "\n"
 "Options:\n"
@@ -99,7 +99,7 @@ int main(int argc, char **argv)
     struct text out = {0};
     if (!o.no_header)
         text_add(&out, "# frame hausdorff hausdorff_rel rms flipped%s\n",
-                 same ? " volume_rel area_mean area_sigma vol_mean vol_sigma edge_max" : "");
+                 same ? " volume_rel area_mean area_sigma vol_mean vol_sigma edge_max area_abs" : "");
     int rc;
     while ((rc = mesh_reader_next(&rd, X, NULL)) == 1) {
         int k = rd.frame - 1;
@@ -114,8 +114,8 @@ int main(int argc, char **argv)
         if (same) {
             struct distortion d;
             mesh_distortion(R, X, ref.F, ref.nv, ref.nf, &d);
-            text_add(&out, " %.9g %.9g %.9g %.9g %.9g %.9g", d.volume_rel, d.area_mean,
-                     d.area_sigma, d.vol_mean, d.vol_sigma, d.edge_max);
+            text_add(&out, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g", d.volume_rel, d.area_mean,
+                     d.area_sigma, d.vol_mean, d.vol_sigma, d.edge_max, d.area_abs);
         }
         text_add(&out, "\n");
     }

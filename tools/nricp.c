@@ -3,6 +3,7 @@
  * E-StopMotion thesis Sec. 5.2.1, Algorithm 2, after a Procrustes
  * alignment on the landmarks.
  */
+#include "clay_deform.h"
 #include "closest_point.h"
 #include "geometry.h"
 #include "landmarks.h"
@@ -10,6 +11,8 @@
 #include "mesh_distance.h"
 #include "nricp.h"
 #include "procrustes.h"
+#include "columns.h"
+#include "topology.h"
 #include "progress.h"
 #include "tool.h"
 #include "cm_error.h"
@@ -39,6 +42,10 @@ static const char help[] =
 "      --max-inner N     iterations per stiffness (default 3)\n"
 "      --relax N         final fold-removal sweeps (default 0)\n"
 "      --eps E           inner loop tolerance, in diagonals (default 1e-4)\n"
+"      --init-deform     first deform the source toward the landmarks with\n"
+"                        clay-deform (volume kept if closed): Algorithm 3\n"
+"      --init-stiffness FILE  per-vertex stiffness for --init-deform (stiffness(1));\n"
+"                        default uniform\n"
 "      --steps-out FILE  also write the pose after every stiffness step (animation)\n"
 "  -o, --output FILE     write to FILE (atomically) instead of stdout\n"
 "      --raw             write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
@@ -49,20 +56,20 @@ static const char help[] =
 "Example: nricp -v -l marks-01-02.txt camel-01.mesh camel-02.mesh > camel-02-reg.mesh\n";
 
 struct options {
-    const char *src, *dst, *landmarks, *align, *steps_out, *output;
-    int raw;
+    const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness;
+    int raw, init_deform;
     struct nricp_params p;
 };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
-           O_EPS, O_SOUT, O_RAW, O_VERSION, O_RELAX };
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_RELAX, O_INIT, O_INITK };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
-        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"relax", 1, 0, O_RELAX},
+        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"relax", 1, 0, O_RELAX}, {"init-deform", 0, 0, O_INIT}, {"init-stiffness", 1, 0, O_INITK},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
         {0, 0, 0, 0}};
@@ -83,6 +90,8 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_DIST: o->p.max_dist = arg_double(optarg, "--max-dist"); break;
         case O_BACK: o->p.backward = arg_double(optarg, "--backward"); break;
         case O_INNER: o->p.max_inner = (int)arg_long(optarg, "--max-inner"); break;
+        case O_INIT: o->init_deform = 1; break;
+        case O_INITK: o->init_stiffness = optarg; o->init_deform = 1; break;
         case O_RELAX: o->p.relax = (int)arg_long(optarg, "--relax"); break;
         case O_EPS: o->p.eps = arg_double(optarg, "--eps"); break;
         case O_SOUT: o->steps_out = optarg; break;
@@ -147,6 +156,40 @@ int main(int argc, char **argv)
         similarity_apply(R, t, s, VS, S.nv, VS);
         info(1, "%s alignment on %d landmarks: scale %.6g, RMS residual %.6g", o.align, L.n, s, res);
         free(A);
+    }
+    if (o.init_deform) {
+        /* Algorithm 3, first loop: clay deformation toward the landmarks */
+        if (L.n < 1) die("--init-deform needs landmarks (-l)");
+        double *k = NULL;
+        if (o.init_stiffness) {
+            struct columns col;
+            if (columns_read(o.init_stiffness, 1, S.nv, "vertices", &col) < 0) die("%s", cm_errmsg());
+            for (int v = 0; v < S.nv; v++)
+                if (!(col.x[v] > 0))
+                    die("cannot read '%s': row %d: stiffness must be positive", o.init_stiffness, v + 1);
+            k = col.x;
+        }
+        struct topology t;
+        if (topology_build(S.F, S.nf, S.nv, &t) < 0) die("%s", cm_errmsg());
+        int closed = t.nboundary == 0 && t.nnonmanifold == 0;
+        topology_free(&t);
+        struct clay_deform *cd = clay_deform_new(VS, S.F, S.nv, S.nf, k, L.src, L.n, 100);
+        if (!cd) die("--init-deform: %s", cm_errmsg());
+        double *X0 = malloc((size_t)S.nv * 3 * sizeof *X0), *TL = malloc((size_t)L.n * 3 * sizeof *TL);
+        memcpy(X0, VS, (size_t)S.nv * 3 * sizeof *X0);
+        const int nsteps = 10;
+        for (int s = 1; s <= nsteps; s++) {
+            double a = (double)s / nsteps;
+            for (int l = 0; l < L.n; l++)
+                for (int d = 0; d < 3; d++)
+                    TL[3 * l + d] = (1 - a) * VS[3 * (size_t)L.src[l] + d] + a * L.P[3 * l + d];
+            if (clay_deform_solve(cd, TL, 5, closed, X0) < 0) die("--init-deform: %s", cm_errmsg());
+        }
+        memcpy(VS, X0, (size_t)S.nv * 3 * sizeof *VS);
+        info(1, "clay deformation toward %d landmarks%s: %.2f s", L.n,
+             closed ? " (volume kept)" : "", now_seconds() - t0);
+        clay_deform_free(cd);
+        free(X0); free(TL); free(k);
     }
     struct steps st = {0};
     st.nv = S.nv;

@@ -1,0 +1,166 @@
+/* clay-deform -- deform a closed surface toward landmark positions like
+ * clay: an ARAP shell weighted by a local stiffness map, with the volume
+ * kept (E-StopMotion thesis Sec. 4.4, Algorithm 3's first loop).
+ */
+#include "clay_deform.h"
+#include "closest_point.h"
+#include "columns.h"
+#include "geometry.h"
+#include "landmarks.h"
+#include "mesh.h"
+#include "mesh_distance.h"
+#include "progress.h"
+#include "topology.h"
+#include "tool.h"
+#include "cm_error.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <getopt.h>
+
+static const char help[] =
+"Usage: clay-deform [options] -l LANDMARKS SOURCE [TARGET]\n"
+"Deform SOURCE toward the landmark positions in steps, as-rigid-as-possible\n"
+"with a local stiffness map, keeping the enclosed volume; writes the result.\n"
+"\n"
+"Options:\n"
+"  -l, --landmarks FILE  'src_vertex dst_vertex' (needs TARGET) or 'src_vertex x y z'\n"
+"  -k, --stiffness FILE  per-vertex stiffness column (see stiffness(1)); default uniform\n"
+"  -n, --steps S         landmark targets move there in S steps (default 10)\n"
+"  -i, --iters N         local-global iterations per step (default 5)\n"
+"      --lambda L        landmark weight relative to the shell (default 100)\n"
+"      --hausdorff H     stop once the symmetric Hausdorff distance to TARGET is\n"
+"                        below H bounding-box diagonals (default 0: run all steps)\n"
+"      --no-volume       do not restore the volume (open meshes need this)\n"
+"      --poses FILE      also write the start and the pose after every step\n"
+"  -o, --output FILE     write to FILE (atomically) instead of stdout\n"
+"      --raw             write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
+"  -v, --verbose         per-step volume change and distance; timing\n"
+"  -h, --help            show this help\n"
+"      --version         show the version\n"
+"\n"
+"Example: stiffness -l marks.txt src.mesh dst.mesh > k.txt &&\n"
+"         clay-deform -k k.txt -l marks.txt --poses steps.mesh src.mesh dst.mesh > deformed.mesh\n";
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    enum { O_LAMBDA = 256, O_HAUS, O_NOVOL, O_POSES, O_RAW, O_VERSION };
+    static const struct option lo[] = {
+        {"landmarks", 1, 0, 'l'}, {"stiffness", 1, 0, 'k'}, {"steps", 1, 0, 'n'},
+        {"iters", 1, 0, 'i'}, {"lambda", 1, 0, O_LAMBDA}, {"hausdorff", 1, 0, O_HAUS},
+        {"no-volume", 0, 0, O_NOVOL}, {"poses", 1, 0, O_POSES}, {"output", 1, 0, 'o'},
+        {"raw", 0, 0, O_RAW}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
+        {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
+    const char *lmfile = NULL, *kfile = NULL, *poses = NULL, *output = NULL;
+    int steps = 10, iters = 5, keepvol = 1, raw = 0, c;
+    double lambda = 100, haus = 0;
+    while ((c = getopt_long(argc, argv, "l:k:n:i:o:vh", lo, NULL)) != -1) {
+        switch (c) {
+        case 'l': lmfile = optarg; break;
+        case 'k': kfile = optarg; break;
+        case 'n': steps = (int)arg_long(optarg, "--steps"); break;
+        case 'i': iters = (int)arg_long(optarg, "--iters"); break;
+        case O_LAMBDA: lambda = arg_double(optarg, "--lambda"); break;
+        case O_HAUS: haus = arg_double(optarg, "--hausdorff"); break;
+        case O_NOVOL: keepvol = 0; break;
+        case O_POSES: poses = optarg; break;
+        case 'o': output = optarg; break;
+        case O_RAW: raw = 1; break;
+        case 'v': verbose++; break;
+        case 'h': print_help_and_exit(help);
+        case O_VERSION: print_version_and_exit();
+        default: usage_error("unknown option");
+        }
+    }
+    if (!lmfile) usage_error("missing -l LANDMARKS");
+    if (argc - optind < 1 || argc - optind > 2) usage_error("expected SOURCE [TARGET]");
+    if (steps < 1 || iters < 1) usage_error("--steps and --iters must be >= 1");
+    if (!(lambda > 0)) usage_error("--lambda must be positive");
+    if (haus < 0) usage_error("--hausdorff must be >= 0");
+    const char *sp = argv[optind], *tp = argc - optind == 2 ? argv[optind + 1] : NULL;
+    if (haus > 0 && !tp) usage_error("--hausdorff needs TARGET");
+    struct mesh S, T = {0};
+    if (mesh_read(sp, &S) < 0) die("%s", cm_errmsg());
+    if (tp && mesh_read(tp, &T) < 0) die("%s", cm_errmsg());
+    struct landmarks L;
+    if (landmarks_read(lmfile, S.nv, tp ? T.V : NULL, T.nv, &L) < 0) die("%s", cm_errmsg());
+    double *k = NULL;
+    if (kfile) {
+        struct columns col;
+        if (columns_read(kfile, 1, S.nv, "vertices", &col) < 0) die("%s", cm_errmsg());
+        for (int v = 0; v < S.nv; v++)
+            if (!(col.x[v] > 0)) die("cannot read '%s': row %d: stiffness must be positive", kfile, v + 1);
+        k = col.x;
+    }
+    if (keepvol) {
+        struct topology t;
+        if (topology_build(S.F, S.nf, S.nv, &t) < 0) die("%s", cm_errmsg());
+        int open = t.nboundary > 0 || t.nnonmanifold > 0;
+        int nb = t.nboundary;
+        topology_free(&t);
+        if (open)
+            die("cannot keep the volume of '%s': the mesh is not closed (%d boundary edges); "
+                "close it (mesh-clean) or use --no-volume", sp, nb);
+    }
+    double t0 = now_seconds();
+    struct clay_deform *cd = clay_deform_new(S.V, S.F, S.nv, S.nf, k, L.src, L.n, lambda);
+    if (!cd) die("%s", cm_errmsg());
+    double *X = malloc((size_t)S.nv * 3 * sizeof *X + 1), *TL = malloc((size_t)L.n * 3 * sizeof *TL + 1);
+    memcpy(X, S.V, (size_t)S.nv * 3 * sizeof *X);
+    double *frames = poses ? malloc((size_t)(steps + 1) * S.nv * 3 * sizeof *frames) : NULL;
+    int nframes = 0;
+    if (frames) memcpy(frames + (size_t)nframes++ * S.nv * 3, X, (size_t)S.nv * 3 * sizeof *X);
+    struct closest_point_tree *TT = tp ? closest_point_tree_new(T.V, T.nv, T.F, T.nf) : NULL;
+    double diag = tp ? bbox_diagonal(T.V, T.nv) : 0, vol0 = mesh_volume(S.V, S.F, S.nf);
+    struct progress pr;
+    progress_start(&pr, progname, steps);
+    for (int s = 1; s <= steps; s++) {
+        double a = (double)s / steps;
+        for (int l = 0; l < L.n; l++)
+            for (int d = 0; d < 3; d++)
+                TL[3 * l + d] = (1 - a) * S.V[3 * (size_t)L.src[l] + d] + a * L.P[3 * l + d];
+        if (clay_deform_solve(cd, TL, iters, keepvol, X) < 0) die("step %d: %s", s, cm_errmsg());
+        if (frames) memcpy(frames + (size_t)nframes++ * S.nv * 3, X, (size_t)S.nv * 3 * sizeof *X);
+        double h = -1;
+        if (TT && (haus > 0 || verbose)) {
+            struct closest_point_tree *TX = closest_point_tree_new(X, S.nv, S.F, S.nf);
+            double rms;
+            if (TX) symmetric_distance(X, S.nv, S.F, S.nf, TX, T.V, T.nv, T.F, T.nf, TT, &h, &rms);
+            closest_point_tree_free(TX);
+        }
+        if (h >= 0)
+            info(1, "step %d: volume %+.4f%%, Hausdorff %.4g%% of the diagonal", s,
+                 vol0 != 0 ? 100 * (mesh_volume(X, S.F, S.nf) / vol0 - 1) : 0, 100 * h / diag);
+        else
+            info(1, "step %d: volume %+.4f%%", s, vol0 != 0 ? 100 * (mesh_volume(X, S.F, S.nf) / vol0 - 1) : 0);
+        progress_step(&pr, s);
+        if (haus > 0 && h >= 0 && h < haus * diag) { info(1, "Hausdorff threshold reached"); break; }
+    }
+    progress_end(&pr);
+    info(1, "deformed in %.3f s", now_seconds() - t0);
+    if (poses) {
+        FILE *f = out_open(poses);
+        struct mesh_writer w;
+        if (mesh_writer_open(&w, f, S.nv, S.nf, S.F, nframes, want_raw(raw)) < 0)
+            die("cannot write '%s': %s", poses, cm_errmsg());
+        for (int q = 0; q < nframes; q++)
+            if (mesh_writer_frame(&w, frames + (size_t)q * S.nv * 3, 0) < 0)
+                die("cannot write '%s': %s", poses, cm_errmsg());
+        if (mesh_writer_close(&w) < 0) die("cannot write '%s': %s", poses, cm_errmsg());
+        out_close(f);
+    }
+    FILE *out = out_open(output);
+    struct mesh R = S;
+    R.V = X;
+    R.nframes = 1;
+    if (mesh_write(out, &R, want_raw(raw)) < 0) die("cannot write output: %s", cm_errmsg());
+    out_close(out);
+    closest_point_tree_free(TT);
+    clay_deform_free(cd);
+    free(X); free(TL); free(frames); free(k);
+    landmarks_free(&L);
+    mesh_free(&S);
+    mesh_free(&T);
+    return 0;
+}
