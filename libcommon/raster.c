@@ -53,10 +53,7 @@ void camera_init(struct camera *c, double azimuth, double elevation, int up)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             c->R[3 * i + j] = M[i][0] * P[j] + M[i][1] * P[3 + j] + M[i][2] * P[6 + j];
-    for (int k = 0; k < 3; k++) {
-        c->lo[k] = DBL_MAX;
-        c->hi[k] = -DBL_MAX;
-    }
+    camera_reset(c);
 }
 
 void camera_fit(struct camera *c, const double *V, int nv)
@@ -71,6 +68,24 @@ void camera_fit(struct camera *c, const double *V, int nv)
         }
     }
     c->fitted += nv;
+}
+
+void camera_reset(struct camera *c)
+{
+    for (int k = 0; k < 3; k++) {
+        c->lo[k] = DBL_MAX;
+        c->hi[k] = -DBL_MAX;
+    }
+    c->fitted = 0;
+}
+
+void camera_fit_box(struct camera *c, const double lo[3], const double hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        if (lo[k] < c->lo[k]) c->lo[k] = lo[k];
+        if (hi[k] > c->hi[k]) c->hi[k] = hi[k];
+    }
+    c->fitted += 2;
 }
 
 void render_style_default(struct render_style *s)
@@ -315,7 +330,6 @@ static void rasterize_face(int f, const int *t, const int32_t *XY, const float *
     for (int y = ya; y <= yb; y++, r0 += e0y, r1 += e1y, r2 += e2y, zrow += dzdy) {
         int64_t w0 = r0, w1 = r1, w2 = r2;
         double z = zrow;
-        (void)w0; (void)w1; (void)w2;
         /* the covered span of this row, exactly: w_i + e_ix * k >= 0 */
         int64_t lo = 0, hi = xb - xa;
         if (!span(w0, e0x, &lo, &hi) || !span(w1, e1x, &lo, &hi) || !span(w2, e2x, &lo, &hi))
@@ -381,12 +395,29 @@ int raster_render(const double *V, const int *F, int nv, int nf, const struct ca
     } else {
         double fov = cam->fov > 1 && cam->fov < 170 ? cam->fov : 30;
         pj.scale = pj.H2 / tan(0.5 * fov * M_PI / 180);     /* focal length in samples */
-        double dist = 0;
-        if (ex > 0) dist = pj.scale * ex / (W * avail);
-        if (ey > 0 && pj.scale * ey / (H * avail) > dist) dist = pj.scale * ey / (H * avail);
-        if (dist < 1e-3 * ez) dist = 1e-3 * ez;
-        if (dist <= 0) dist = 1;
-        pj.eye = cam->hi[2] + dist;
+        /* the camera sees the bounding sphere of the view-space box; then
+         * the zoom below makes the projected box fill the view */
+        double r = 0.5 * sqrt(ex * ex + ey * ey + ez * ez);
+        if (!(r > 0)) r = 1;
+        pj.eye = 0.5 * (cam->lo[2] + cam->hi[2]) + r / sin(0.5 * fov * M_PI / 180);
+        /* the 8 corners of the view-space box, projected, bound the
+         * projection of every fitted point: zoom and shift so they fill the
+         * view */
+        double mnx = DBL_MAX, mxx = -DBL_MAX, mny = DBL_MAX, mxy = -DBL_MAX;
+        for (int c = 0; c < 8; c++) {
+            double x = c & 1 ? cam->hi[0] : cam->lo[0], y = c & 2 ? cam->hi[1] : cam->lo[1];
+            double z = c & 4 ? cam->hi[2] : cam->lo[2], f = pj.scale / (pj.eye - z);
+            mnx = fmin(mnx, f * (x - pj.cx)); mxx = fmax(mxx, f * (x - pj.cx));
+            mny = fmin(mny, f * (y - pj.cy)); mxy = fmax(mxy, f * (y - pj.cy));
+        }
+        double zx = mxx > mnx ? W * avail / (mxx - mnx) : DBL_MAX;
+        double zy = mxy > mny ? H * avail / (mxy - mny) : DBL_MAX;
+        double zoom = fmin(zx, zy);
+        if (zoom < DBL_MAX && zoom > 0) {
+            pj.scale *= zoom;
+            pj.W2 -= zoom * 0.5 * (mnx + mxx);
+            pj.H2 += zoom * 0.5 * (mny + mxy);
+        }
     }
     if (ok)
         for (int i = 0; i < nv; i++) {

@@ -56,6 +56,15 @@ void camera_init(struct camera *c, double azimuth, double elevation, int up);
  *   V   #V by 3 positions */
 void camera_fit(struct camera *c, const double *V, int nv);
 
+/* Forget the fitted points (keep the angles). */
+void camera_reset(struct camera *c);
+
+/* Extend the fit by a view-space box, e.g. the lo/hi of another camera
+ * with the same angles fitted to one frame (streaming tools keep these
+ * per frame instead of the frames).
+ *   lo, hi  3 each */
+void camera_fit_box(struct camera *c, const double lo[3], const double hi[3]);
+
 struct render_style {
     unsigned char color[3];          /* uniform base colour */
     unsigned char background[3];

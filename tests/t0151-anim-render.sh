@@ -53,12 +53,28 @@ test_expect_success 'reads stdin and the same labels for every input' '
 	anim-render --count 2 -s 40x40 --labels parts.labels <a.mesh >l.png && png_size l.png &&
 	anim-render --count 2 -s 40x40 --labels parts.labels a.mesh b.mesh >l2.png
 '
+test_expect_success 'streams without a frame count (two passes) give the same sheet' '
+	sed "s/^frames .*/frames ?/" a.mesh >a-unknown.mesh &&
+	anim-render --count 4 -s 48x48 a.mesh >mem.png &&
+	anim-render --count 4 -s 48x48 a-unknown.mesh >stream.png && test_cmp mem.png stream.png &&
+	anim-render --count 4 -s 48x48 <a-unknown.mesh >stdin.png && test_cmp mem.png stdin.png &&
+	anim-render --frames 5,0,-1,3 -s 48x48 a.mesh >mem2.png &&
+	anim-render --frames 5,0,-1,3 -s 48x48 <a-unknown.mesh >stream2.png && test_cmp mem2.png stream2.png
+'
+test_expect_success '--each from stdin matches --each from a file' '
+	mkdir -p e1 e2 &&
+	anim-render --every 4 -s 32x32 --each "e1/%d.png" a.mesh &&
+	anim-render --every 4 -s 32x32 --each "e2/%d.png" <a.mesh &&
+	for f in 0 4 8; do test_cmp e1/$f.png e2/$f.png || return 1; done
+'
 test_expect_success 'bad input: clean errors' '
 	test_fails_cleanly anim-render --frames 0,99 a.mesh &&
 	mesh-gen -s 1 icosphere >ico.mesh &&
 	test_fails_cleanly anim-render --labels parts.labels a.mesh ico.mesh &&
 	head -c 1500 a.mesh >trunc.mesh &&
 	test_fails_cleanly anim-render trunc.mesh &&
+	mkdir -p none && test_fails_cleanly anim-render --each "none/%d.png" trunc.mesh &&
+	test_fails_cleanly anim-render --each "none/%d.png" <trunc.mesh && ls none >list && test ! -s list &&
 	test_fails_cleanly anim-render -o out.png a.mesh no-such.mesh && test ! -e out.png
 '
 test_expect_success 'usage errors exit 2' '

@@ -11,6 +11,7 @@
 #include "image.h"
 #include "mesh.h"
 #include "meshcolor.h"
+#include "mesh_spool.h"
 #include "progress.h"
 #include "raster.h"
 #include "tool.h"
@@ -268,14 +269,29 @@ static void parse_args(int argc, char **argv, struct options *o)
         usage_error("--format: '%s' is not png or ppm", o->format);
 }
 
-/* one input: its chosen frames, kept in memory */
+/* One input.  Memory mode keeps the chosen frames; streaming mode (one
+ * image per frame, a stream without a frame count, or more than
+ * KEEP_LIMIT bytes of chosen frames) keeps only each frame's view-space
+ * bounds in the first pass and reads the frames again to draw them
+ * (mesh_spool: a regular file is reopened, a pipe is spooled to a
+ * temporary raw file), so memory stays O(one frame). */
+#define KEEP_LIMIT ((size_t)256 << 20)
+
 struct input {
     const char *name;
     int nv, nf, nframes;
     int *F;                /* #F by 3 */
     int nsel;
-    int *sel;              /* chosen frame indices, ascending as given */
-    double **X;            /* nsel frames, #V by 3 each */
+    int *sel;              /* chosen frame indices, -1 = this input lacks it */
+    /* memory mode */
+    double **X;            /* nsel frames, #V by 3 each (NULL where sel is -1) */
+    /* streaming mode */
+    int streaming;
+    double *bounds;        /* nframes by 6: view-space lo[3], hi[3] */
+    struct mesh_spool sp;
+    struct mesh_reader r2;
+    int open2, pos;        /* second-pass reader open; frames read from it */
+    double *cur;           /* #V by 3: the frame last read */
 };
 
 /* Choose frame indices of a stream of n frames; -1 entries are skipped
@@ -312,74 +328,125 @@ static int choose(const struct options *o, int n, int **out)
     return k;
 }
 
-/* Read one input, keeping the chosen frames only when the frame count is
- * announced; with "frames ?" every frame is kept until the count is known. */
-static void read_input(const struct options *o, const char *path, struct input *in)
+/* First pass over one input: validate the whole stream, count its frames,
+ * choose, and keep either the chosen frames or every frame's bounds. */
+static void read_input(const struct options *o, const char *path, struct mesh_reader *r,
+                       int streaming, const struct camera *cam, struct input *in)
 {
-    struct mesh_reader r;
-    if (mesh_reader_open(&r, path) < 0)
-        die("%s", cm_errmsg());
     memset(in, 0, sizeof *in);
-    in->name = strdup(r.name);
-    in->nv = r.nv;
-    in->nf = r.nf;
-    in->F = malloc(((size_t)r.nf + 1) * 3 * sizeof *in->F);
-    memcpy(in->F, r.F, (size_t)r.nf * 3 * sizeof *in->F);
-    size_t fsz = ((size_t)r.nv + 1) * 3 * sizeof(double);
-    int known = r.nframes >= 0;
+    in->name = strdup(r->name);
+    in->nv = r->nv;
+    in->nf = r->nf;
+    in->streaming = streaming;
+    in->F = malloc(((size_t)r->nf + 1) * 3 * sizeof *in->F);
+    memcpy(in->F, r->F, (size_t)r->nf * 3 * sizeof *in->F);
+    size_t fsz = ((size_t)r->nv + 1) * 3 * sizeof(double);
     int *want = NULL, nwant = 0;
     char *keep = NULL;
-    if (known) {
-        nwant = choose(o, r.nframes, &want);
-        keep = calloc((size_t)r.nframes + 1, 1);
+    if (!streaming) {   /* memory mode needs the frame count up front */
+        nwant = choose(o, r->nframes, &want);
+        keep = calloc((size_t)r->nframes + 1, 1);
         for (int i = 0; i < nwant; i++)
             if (want[i] >= 0) keep[want[i]] = 1;
-    }
-    double **frames = NULL;   /* indexed by frame number */
-    int cap = 0, k = 0, rc;
+    } else if (mesh_spool_begin(&in->sp, path, r) < 0)
+        die("%s", cm_errmsg());
+    double **frames = NULL;   /* memory mode: indexed by frame number */
+    int cap = 0, k = 0, rc, bcap = 0;
     double *scratch = malloc(fsz);
     if (!scratch)
         die("out of memory");
     for (;;) {
         double *dst = scratch;
-        if (!known || keep[k < r.nframes ? k : r.nframes]) {
+        if (!streaming && keep[k < r->nframes ? k : r->nframes]) {
             dst = malloc(fsz);
             if (!dst)
-                die("out of memory keeping the frames of '%s'", r.name);
+                die("out of memory keeping the frames of '%s'", r->name);
         }
-        rc = mesh_reader_next(&r, dst, NULL);
+        int cut = 0;
+        rc = mesh_reader_next(r, dst, &cut);
         if (rc <= 0) {
             if (dst != scratch) free(dst);
             break;
         }
-        if (k == cap) {
-            cap = cap ? 2 * cap : 64;
-            frames = realloc(frames, (size_t)cap * sizeof *frames);
+        if (streaming) {
+            if (mesh_spool_frame(&in->sp, dst, cut) < 0)
+                die("%s", cm_errmsg());
+            struct camera c = *cam;
+            camera_reset(&c);
+            camera_fit(&c, dst, r->nv);
+            if (k == bcap) {
+                bcap = bcap ? 2 * bcap : 256;
+                in->bounds = realloc(in->bounds, (size_t)bcap * 6 * sizeof *in->bounds);
+            }
+            memcpy(in->bounds + 6 * k, c.lo, 3 * sizeof(double));
+            memcpy(in->bounds + 6 * k + 3, c.hi, 3 * sizeof(double));
+        } else {
+            if (k == cap) {
+                cap = cap ? 2 * cap : 64;
+                frames = realloc(frames, (size_t)cap * sizeof *frames);
+            }
+            frames[k] = dst != scratch ? dst : NULL;
         }
-        frames[k++] = dst != scratch ? dst : NULL;
+        k++;
     }
     if (rc < 0)
         die("%s", cm_errmsg());
     if (k == 0)
-        die("cannot read '%s': no frames", r.name);
+        die("cannot read '%s': no frames", r->name);
     in->nframes = k;
-    if (!known)
+    if (streaming) {
         nwant = choose(o, k, &want);
+        in->cur = scratch;
+        scratch = NULL;
+    }
     in->nsel = nwant;
     in->sel = want;
-    in->X = calloc((size_t)nwant + 1, sizeof *in->X);
-    for (int i = 0; i < nwant; i++)
-        if (want[i] >= 0) in->X[i] = frames[want[i]];
-    /* frames kept but not chosen (only with "frames ?") */
-    for (int f = 0; f < k; f++) {
-        int used = 0;
-        for (int i = 0; i < nwant && !used; i++) used = want[i] == f;
-        if (!used) free(frames[f]);
+    if (!streaming) {
+        in->X = calloc((size_t)nwant + 1, sizeof *in->X);
+        for (int i = 0; i < nwant; i++)
+            if (want[i] >= 0) in->X[i] = frames[want[i]];
     }
     free(frames);
     free(keep);
     free(scratch);
-    mesh_reader_close(&r);
+}
+
+/* Extend the camera's fit by the chosen frames of an input. */
+static void fit_input(struct camera *cam, const struct input *in)
+{
+    for (int i = 0; i < in->nsel; i++) {
+        if (in->sel[i] < 0)
+            continue;
+        if (!in->streaming)
+            camera_fit(cam, in->X[i], in->nv);
+        else
+            camera_fit_box(cam, in->bounds + 6 * in->sel[i], in->bounds + 6 * in->sel[i] + 3);
+    }
+}
+
+/* The positions of chosen frame i (sel[i] >= 0). */
+static const double *get_frame(struct input *in, int i)
+{
+    if (!in->streaming)
+        return in->X[i];
+    int want = in->sel[i];
+    if (in->open2 && in->pos > want + 1) {   /* behind us: start over */
+        mesh_reader_close(&in->r2);
+        in->open2 = 0;
+    }
+    if (!in->open2) {
+        if (mesh_spool_rewind(&in->sp, &in->r2) < 0)
+            die("%s", cm_errmsg());
+        in->open2 = 1;
+        in->pos = 0;
+    }
+    while (in->pos <= want) {
+        int rc = mesh_reader_next(&in->r2, in->cur, NULL);
+        if (rc <= 0)
+            die("%s", rc < 0 ? cm_errmsg() : "second pass: stream ended early");
+        in->pos++;
+    }
+    return in->cur;
 }
 
 /* the colour between tiles: the background, a little darker (lighter if dark) */
@@ -397,13 +464,13 @@ static void text_colour(const unsigned char bg[3], unsigned char fg[3])
     fg[0] = fg[1] = fg[2] = lum > 128 ? 40 : 225;
 }
 
-static void render_tile(const struct options *o, const struct input *in, int i,
+static void render_tile(const struct options *o, struct input *in, int i,
                         const struct camera *cam, struct render_style *st,
                         const struct mesh_colors *mc, const char *label, struct image *tile)
 {
     if (o->labels || o->scalars)
         mesh_colors_apply(mc, st);
-    if (raster_render(in->X[i], in->F, in->nv, in->nf, cam, st, o->w, o->h, tile) < 0)
+    if (raster_render(get_frame(in, i), in->F, in->nv, in->nf, cam, st, o->w, o->h, tile) < 0)
         die("%s", cm_errmsg());
     if (label) {
         int sc = o->h >= 480 ? 3 : o->h >= 200 ? 2 : 1;
@@ -420,22 +487,40 @@ int main(int argc, char **argv)
     parse_args(argc, argv, &o);
     double t0 = now_seconds();
 
-    struct input *in = calloc((size_t)o.ninputs, sizeof *in);
-    for (int j = 0; j < o.ninputs; j++) read_input(&o, o.inputs[j], &in[j]);
-
-    /* validate the choice and fit one camera to every chosen frame */
+    /* open every input (headers), then decide between memory and streaming */
+    struct mesh_reader *rd = calloc((size_t)o.ninputs, sizeof *rd);
+    size_t keep_bytes = 0;
+    int streaming = o.each != NULL;
+    for (int j = 0; j < o.ninputs; j++) {
+        if (mesh_reader_open(&rd[j], o.inputs[j]) < 0)
+            die("%s", cm_errmsg());
+        if (rd[j].nframes < 0) {
+            streaming = 1;
+            continue;
+        }
+        int *w, n = choose(&o, rd[j].nframes, &w);
+        keep_bytes += (size_t)n * rd[j].nv * 3 * sizeof(double);
+        free(w);
+    }
+    if (keep_bytes > KEEP_LIMIT)
+        streaming = 1;
     struct camera cam;
     camera_init(&cam, o.azimuth, o.elevation, o.up);
     cam.perspective = o.perspective;
     cam.fov = o.fov;
+    struct input *in = calloc((size_t)o.ninputs, sizeof *in);
+    for (int j = 0; j < o.ninputs; j++) {
+        read_input(&o, o.inputs[j], &rd[j], streaming, &cam, &in[j]);
+        mesh_reader_close(&rd[j]);
+    }
+    free(rd);
+
+    /* validate the choice and fit one camera to every chosen frame */
     int maxsel = 0, tiles = 0;
     for (int j = 0; j < o.ninputs; j++) {
         if (in[j].nsel > maxsel) maxsel = in[j].nsel;
-        for (int i = 0; i < in[j].nsel; i++)
-            if (in[j].X[i]) {
-                camera_fit(&cam, in[j].X[i], in[j].nv);
-                tiles++;
-            }
+        fit_input(&cam, &in[j]);
+        for (int i = 0; i < in[j].nsel; i++) tiles += in[j].sel[i] >= 0;
     }
     if (o.sel == SEL_LIST)
         for (int i = 0; i < o.nlist; i++) {
@@ -473,8 +558,9 @@ int main(int argc, char **argv)
                 die("%s", cm_errmsg());
         }
     double t1 = now_seconds();
-    info(1, "%d input%s, %d tiles of %dx%d; read %.1f ms", o.ninputs, o.ninputs == 1 ? "" : "s",
-         tiles, o.w, o.h, 1e3 * (t1 - t0));
+    info(1, "%d input%s, %d tiles of %dx%d; first pass (%s) %.1f ms", o.ninputs,
+         o.ninputs == 1 ? "" : "s", tiles, o.w, o.h,
+         streaming ? "streaming: bounds per frame" : "keeping the chosen frames", 1e3 * (t1 - t0));
 
     char label[64];
     unsigned char gapc[3];
@@ -487,10 +573,10 @@ int main(int argc, char **argv)
         for (int i = 0; i < maxsel; i++) {
             int fnum = -1;   /* file number: the frame of the first input drawn */
             for (int j = 0; j < o.ninputs && fnum < 0; j++)
-                if (i < in[j].nsel && in[j].X[i]) fnum = in[j].sel[i];
+                if (i < in[j].nsel && in[j].sel[i] >= 0) fnum = in[j].sel[i];
             for (int j = 0; j < o.ninputs; j++) {
                 image_free(&row[j]);
-                if (i >= in[j].nsel || !in[j].X[i]) {
+                if (i >= in[j].nsel || in[j].sel[i] < 0) {
                     if (image_alloc(&row[j], o.w, o.h, o.background) < 0)
                         die("%s", cm_errmsg());
                     continue;
@@ -554,7 +640,7 @@ int main(int argc, char **argv)
                 image_text(&sheet, o.gap + tsc, o.gap + r0 * (o.h + o.gap) + (o.h - text_height(tsc)) / 2,
                            o.titles[j], tsc, fg, NULL);
             for (int i = 0; i < in[j].nsel; i++) {
-                if (!in[j].X[i])
+                if (in[j].sel[i] < 0)
                     continue;
                 struct image tile;
                 snprintf(label, sizeof label, "%d", in[j].sel[i]);
@@ -576,6 +662,11 @@ int main(int argc, char **argv)
              sheet.h, C, nrows, 1e3 * (t2 - t1), o.format, 1e3 * (now_seconds() - t2));
         image_free(&sheet);
     }
+    for (int j = 0; j < o.ninputs; j++)
+        if (in[j].streaming) {
+            if (in[j].open2) mesh_reader_close(&in[j].r2);
+            mesh_spool_free(&in[j].sp);
+        }
     mesh_colors_free(&mc);
     return 0;
 }
