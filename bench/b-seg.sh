@@ -51,7 +51,7 @@ bench() {   # NAME FILE SEEDS...
     seg-graphcut -v "$@" "$file" 2>"$T/$name.v" >/dev/null
     timed one seg-graphcut --one-pass "$@" "$file" || return 1
     timed smooth seam-smooth --raw -l "$T/$name.lab" -L "$T/$name.lab2" "$file" || return 1
-    seam-smooth -v -l "$T/$name.lab" -L /dev/null "$file" 2>"$T/$name.sv" >/dev/null
+    seam-smooth -v -l "$T/$name.lab" -L "$T/$name.lab3" "$file" 2>"$T/$name.sv" >/dev/null
     echo "   $name (v f frames = $info):"
     sed -n 's/^seg-graphcut: \(time\|energy\)/      seg-graphcut \1/p' "$T/$name.v"
     sed -n 's/^seam-smooth: \(time\|seam length\|summed\)/      seam-smooth \1/p' "$T/$name.sv"
