@@ -73,6 +73,7 @@ static int fill(struct mesh_reader *r)
         return 0;
     }
     r->len += n;
+    r->buf[r->len] = 0;        /* sentinel: parsing stops at the data's end */
     return 1;
 }
 
@@ -348,6 +349,22 @@ int mesh_reader_next(struct mesh_reader *r, double *X, int *cut)
                              r->name, r->frame);
     } else {
         for (int i = 0; i < r->nv; i++) {
+            /* fast path for the common line "x y z\n": parse in place; any
+             * other shape (comment, blank line, CR, junk, a line not yet
+             * in the buffer) falls back to the general path below, which
+             * parses the line again with every check */
+            if (r->pos < r->len) {
+                const char *q = r->buf + r->pos;
+                double *x = X + 3 * (size_t)i;
+                if ((q = parse_double_padded(q, &x[0])) && *q == ' ' &&
+                    (q = parse_double_padded(q, &x[1])) && *q == ' ' &&
+                    (q = parse_double_padded(q, &x[2])) && *q == '\n' &&
+                    isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2])) {
+                    r->pos = (size_t)(q + 1 - r->buf);
+                    r->line++;
+                    continue;
+                }
+            }
             s = next_line(r, &err);
             if (err) return -1;
             if (!s)

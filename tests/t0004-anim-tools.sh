@@ -21,6 +21,17 @@ test_expect_success 'raw -> plain -> raw is bit-exact, awkward numbers included'
 	anim-slice --raw odd.mesh >odd.raw &&
 	anim-slice odd.raw | anim-slice --raw >odd2.raw && test_cmp odd.raw odd2.raw
 '
+test_expect_success 'round trip of a stream larger than the reader buffer (several MB)' '
+	mesh-gen -n 150 -f 3 -a twist cylinder >big.mesh &&
+	test $(wc -c <big.mesh) -gt 3000000 &&
+	anim-slice --raw big.mesh >big.raw && anim-slice big.raw >big2.mesh &&
+	test_cmp big.mesh big2.mesh && rm -f big.mesh big.raw big2.mesh
+'
+test_expect_success 'tabs, leading blanks, CR and trailing comments read like plain lines' '
+	mesh-gen -n 3 -f 2 -a wave grid >w.mesh &&
+	awk "/^[-0-9]/ { printf \"  %s\t%s  %s # v\r\n\", \$1, \$2, \$3; next } { print }" w.mesh >w2.mesh &&
+	! cmp -s w.mesh w2.mesh && anim-slice w2.mesh >w3.mesh && test_cmp w.mesh w3.mesh
+'
 test_expect_success 'raw writer equals mesh-gen --raw' '
 	STOPMO_RAW=1 mesh-gen -f 6 -a twist -n 7 cylinder >g.raw && test_cmp g.raw r.mesh
 '
