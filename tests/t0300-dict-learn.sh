@@ -35,6 +35,13 @@ test_expect_success 'lambda > 0 lowers the velocity error of lambda = 0' '
 	v0=$(awk "/^velocity /{print \$2}" r0) && v4=$(awk "/^velocity /{print \$2}" r4) &&
 	echo "velocity lambda0 $v0 lambda4 $v4" && test_le "$v4" "$v0"
 '
+test_expect_success 'energy never increases across iterations (-vv log), DP and expansion' '
+	dict-learn -vv -d 6 -r 3 anim.mesh 2>log >/dev/null &&
+	dict-learn -vv -d 6 -r 3 -m expansion anim.mesh 2>>log >/dev/null &&
+	grep -c "iteration" log &&
+	awk "\$2 == \"restart\" && \$4 == \"iteration\" { r = \$3; e = \$7; if (\$5 != \"0:\" && r == pr && e > pe * (1 + 1e-10)) { print \"rise\", \$0; bad = 1 } pr = r; pe = e }
+	     END { exit bad }" log
+'
 test_expect_success 'expansion and swap label steps run and report energies' '
 	dict-learn -d 5 -m expansion --report re anim.mesh >/dev/null &&
 	dict-learn -d 5 -m swap --report rs anim.mesh >/dev/null &&
