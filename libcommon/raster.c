@@ -352,10 +352,10 @@ int raster_render(const double *V, const int *F, int nv, int nf, const struct ca
     int ss = s->ss < 1 ? 1 : s->ss > 8 ? 8 : s->ss;
     if (w < 1 || h < 1 || (double)w * h * ss * ss > 4e8)
         return cm_seterr("render size %dx%d (supersampling %d) out of range", w, h, ss);
-    if (cam->fitted < 1)
-        return cm_seterr("render: camera not fitted to any point");
     if (image_alloc(out, w, h, s->background) < 0)
         return -1;
+    if (cam->fitted < 1 || nf < 1)
+        return 0;   /* nothing to draw (an empty mesh): the background */
     int W = w * ss, H = h * ss;
     /* tiles of TP x TP pixels keep the visibility buffer in cache */
     enum { TP = 64, NCACHE = 4096 };

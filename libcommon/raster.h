@@ -89,7 +89,8 @@ void render_style_default(struct render_style *s);
 /* Render one frame into a new w by h image (out is allocated).
  *   V    #V by 3 positions
  *   F    #F by 3 vertex indices (validated by the caller)
- *   cam  a fitted camera (camera_fit called at least once)
+ *   cam  a fitted camera (with no fitted points, e.g. an empty mesh, the
+ *        image is just the background)
  * Returns -1 (cm_errmsg) on a bad size or out of memory. */
 int raster_render(const double *V, const int *F, int nv, int nf, const struct camera *cam,
                   const struct render_style *s, int w, int h, struct image *out);

@@ -117,6 +117,17 @@ test_expect_success 'a later frame and --fit-all' '
 	mesh-render -s 50x50 --frame 4 --fit-all bend.mesh >k4a.png &&
 	mesh-render -s 50x50 --frame 2 <bend.mesh >k2.png && png_size k2.png
 '
+test_expect_success 'degenerate meshes render: empty, no faces, one point, a line' '
+	printf "MESH 1\nvertices 0\nfaces 0\nframes 1\nframe 0\n" >empty.mesh &&
+	mesh-render -s 20x10 empty.mesh >e.png && png_size e.png >size &&
+	echo "20 10" >expect && test_cmp expect size &&
+	printf "MESH 1\nvertices 3\nfaces 0\nframes 1\nframe 0\n0 0 0\n1 0 0\n0 1 0\n" >nof.mesh &&
+	mesh-render -s 20x20 nof.mesh >n.png &&
+	printf "MESH 1\nvertices 3\nfaces 1\nframes 1\nf 0 1 2\nframe 0\n1 1 1\n1 1 1\n1 1 1\n" >pt.mesh &&
+	mesh-render -s 20x20 --perspective pt.mesh >p.png &&
+	printf "MESH 1\nvertices 3\nfaces 1\nframes 1\nf 0 1 2\nframe 0\n0 0 0\n1 0 0\n2 0 0\n" >line.mesh &&
+	mesh-render -s 20x20 -w line.mesh >l.png
+'
 test_expect_success 'bad label count: clean error' '
 	test_fails_cleanly mesh-render --labels bad.labels ico.mesh 2>err &&
 	grep "faces and" err
