@@ -5,10 +5,12 @@
  * one-ring are set to their average over all frames; every other vertex
  * moves by the displacement of least squared-Laplacian energy
  * tr(D^T L^T M^-1 L D) (L, M: cot Laplacian and mass of the average mesh).
- * The free block of Q = L^T M^-1 L is factored once (CHOLMOD) and each
- * frame is solved and written while streaming.  Two passes: the average,
- * then the solves; a regular file is read twice, anything else (a pipe)
- * is spooled to a temporary raw MESH file first.
+ * The free block of Q = L^T M^-1 L is factored once (CHOLMOD) and the
+ * frames are solved in small batches and written while streaming.  Two
+ * passes: the average, then the solves; a regular file is read twice,
+ * anything else (a pipe) is spooled to a temporary raw MESH file first
+ * (mesh_spool.h).  UV-seam duplicates (coincident in every frame) are
+ * joined for the math and follow their representative.
  */
 #include "bilaplacian.h"
 #include "blas_tune.h"
@@ -29,7 +31,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
-
 #include <time.h>
 
 static const char help[] =
