@@ -1,0 +1,849 @@
+/* compat_tri.c -- see compat_tri.h */
+#include "compat_tri.h"
+#include "cm_error.h"
+#include "rings.h"
+#include "topology.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------------ */
+/* storage */
+
+static int reserve_v(struct compat *c, int nv)
+{
+    if (nv <= c->cap) return 0;
+    int cap = c->cap ? c->cap : 64;
+    while (cap < nv) cap *= 2;
+    for (int s = 0; s < c->N; s++) {
+        double *x = realloc(c->X[s], 2 * (size_t)cap * sizeof *x);
+        if (!x) return cm_seterr("out of memory");
+        c->X[s] = x;
+    }
+    c->cap = cap;
+    return 0;
+}
+
+static int add_face(struct compat *c, int a, int b, int d)
+{
+    if (c->nf == c->fcap) {
+        int cap = c->fcap ? 2 * c->fcap : 256;
+        int *F = realloc(c->F, 3 * (size_t)cap * sizeof *F);
+        if (!F) return cm_seterr("out of memory");
+        c->F = F; c->fcap = cap;
+    }
+    c->F[3 * c->nf] = a; c->F[3 * c->nf + 1] = b; c->F[3 * c->nf + 2] = d;
+    c->nf++;
+    return 0;
+}
+
+void compat_free(struct compat *c)
+{
+    for (int s = 0; s < c->N; s++) {
+        if (c->X) free(c->X[s]);
+        if (c->B) free(c->B[s]);
+    }
+    free(c->X); free(c->B); free(c->F);
+    memset(c, 0, sizeof *c);
+}
+
+static double diag2(const double *P, int n)
+{
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < n; i++)
+        for (int d = 0; d < 2; d++) {
+            lo[d] = fmin(lo[d], P[2 * i + d]);
+            hi[d] = fmax(hi[d], P[2 * i + d]);
+        }
+    double dx = hi[0] - lo[0], dy = hi[1] - lo[1];
+    return sqrt(dx * dx + dy * dy);
+}
+
+/* ------------------------------------------------------------------ */
+/* boundary matching */
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* point at normalized arc length t in [0,1] along the polyline
+ * P[i0], P[i0+1], ..., P[i1] (indices mod n) of total length len */
+static void polyline_at(const double *P, int n, int i0, int len_pts, const double *cum, double t,
+                        double *out)
+{
+    double L = cum[len_pts - 1] * t;
+    int k = 0;
+    while (k < len_pts - 2 && cum[k + 1] < L) k++;
+    double seg = cum[k + 1] - cum[k];
+    double u = seg > 0 ? (L - cum[k]) / seg : 0;
+    if (u < 0) u = 0;
+    if (u > 1) u = 1;
+    const double *a = P + 2 * ((i0 + k) % n), *b = P + 2 * ((i0 + k + 1) % n);
+    out[0] = a[0] + u * (b[0] - a[0]);
+    out[1] = a[1] + u * (b[1] - a[1]);
+}
+
+int compat_match(int N, double *const *P, const int *n, const int *corr, int ncorr,
+                 struct compat *c, unsigned char **keep)
+{
+    memset(c, 0, sizeof *c);
+    if (N < 1) return cm_seterr("no shapes");
+    if (ncorr < 1) return cm_seterr("no correspondence points");
+    /* check cyclic order: after rotating so that row 0 comes first, the
+     * indices must increase strictly along every ring */
+    for (int s = 0; s < N; s++) {
+        int base = corr[s];
+        int prev = -1;
+        for (int k = 0; k < ncorr; k++) {
+            int v = corr[k * N + s];
+            if (v < 0 || v >= n[s])
+                return cm_seterr("correspondence %d: index %d out of range for shape %d (0..%d)",
+                                 k + 1, v, s, n[s] - 1);
+            int r = ((v - base) % n[s] + n[s]) % n[s];
+            if (k > 0 && r <= prev)
+                return cm_seterr("correspondence %d: shape %d: points are not in the same order "
+                                 "along every outline (or repeat a vertex)", k + 1, s);
+            prev = r;
+        }
+    }
+    c->N = N;
+    c->X = calloc(N, sizeof *c->X);
+    c->B = calloc(N, sizeof *c->B);
+    if (!c->X || !c->B) return cm_seterr("out of memory");
+    /* per segment: union of parameter values */
+    int maxn = 0, total = 0;
+    for (int s = 0; s < N; s++) { if (n[s] > maxn) maxn = n[s]; total += n[s]; }
+    double *T = malloc((size_t)(total + 1) * sizeof *T);
+    double *cum = malloc((size_t)(maxn + 2) * sizeof *cum);
+    unsigned char *kp = NULL;
+    int M = 0, kcap = 0;
+    if (!T || !cum) { free(T); free(cum); return cm_seterr("out of memory"); }
+    for (int pass = 0; pass < 2; pass++) {
+        /* pass 0 counts, pass 1 fills */
+        M = 0;
+        for (int k = 0; k < ncorr; k++) {
+            int nt = 0;
+            for (int s = 0; s < N; s++) {
+                int a = corr[k * N + s], b = corr[((k + 1) % ncorr) * N + s];
+                int len = ((b - a) % n[s] + n[s]) % n[s];
+                if (len == 0) len = n[s];      /* one correspondence: whole ring */
+                cum[0] = 0;
+                for (int i = 0; i < len; i++) {
+                    const double *p = P[s] + 2 * ((a + i) % n[s]), *q = P[s] + 2 * ((a + i + 1) % n[s]);
+                    cum[i + 1] = cum[i] + hypot(q[0] - p[0], q[1] - p[1]);
+                }
+                for (int i = 0; i < len; i++) T[nt++] = cum[i] / cum[len];
+            }
+            qsort(T, nt, sizeof *T, cmp_double);
+            int u = 0;
+            for (int i = 0; i < nt; i++)
+                if (u == 0 || T[i] - T[u - 1] > 1e-6) T[u++] = T[i];
+            if (pass == 1) {
+                for (int s = 0; s < N; s++) {
+                    int a = corr[k * N + s], b = corr[((k + 1) % ncorr) * N + s];
+                    int len = ((b - a) % n[s] + n[s]) % n[s];
+                    if (len == 0) len = n[s];
+                    cum[0] = 0;
+                    for (int i = 0; i < len; i++) {
+                        const double *p = P[s] + 2 * ((a + i) % n[s]), *q = P[s] + 2 * ((a + i + 1) % n[s]);
+                        cum[i + 1] = cum[i] + hypot(q[0] - p[0], q[1] - p[1]);
+                    }
+                    for (int i = 0; i < u; i++)
+                        polyline_at(P[s], n[s], a, len + 1, cum, T[i], c->X[s] + 2 * (size_t)(M + i));
+                }
+                for (int i = 0; i < u; i++) kp[M + i] = i == 0;
+            }
+            M += u;
+        }
+        if (pass == 0) {
+            kcap = M;
+            if (reserve_v(c, M) < 0) { free(T); free(cum); return -1; }
+            kp = calloc(kcap, 1);
+        }
+    }
+    free(T); free(cum);
+    c->nv = c->nb = c->nm = M;
+    for (int s = 0; s < N; s++) {
+        c->B[s] = malloc(2 * (size_t)M * sizeof *c->B[s]);
+        if (!c->B[s]) { free(kp); return cm_seterr("out of memory"); }
+        memcpy(c->B[s], c->X[s], 2 * (size_t)M * sizeof *c->B[s]);
+    }
+    if (keep) *keep = kp; else free(kp);
+    return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* simplification */
+
+static double seg_dist(const double *p, const double *a, const double *b)
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
+    double t = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
+    if (t < 0) t = 0;
+    if (t > 1) t = 1;
+    return hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+}
+
+int compat_simplify(struct compat *c, double err, const unsigned char *keep)
+{
+    int M = c->nb, N = c->N;
+    if (M <= 3) return M;
+    int *prv = malloc(M * sizeof *prv), *nxt = malloc(M * sizeof *nxt);
+    double *cost = malloc(M * sizeof *cost), *dg = malloc(N * sizeof *dg);
+    unsigned char *alive = malloc(M);
+    for (int i = 0; i < M; i++) { prv[i] = (i + M - 1) % M; nxt[i] = (i + 1) % M; alive[i] = 1; }
+    double *area = calloc(N, sizeof *area);
+    for (int s = 0; s < N; s++) {
+        dg[s] = diag2(c->B[s], c->nm);
+        for (int i = 0; i < M; i++) {
+            int j = (i + 1) % M;
+            area[s] += 0.5 * (c->B[s][2 * i] * c->B[s][2 * j + 1] - c->B[s][2 * j] * c->B[s][2 * i + 1]);
+        }
+    }
+    int count = M;
+#define COST(i) do { \
+        int a_ = prv[i], b_ = nxt[i]; double e_ = 0; \
+        if (keep && keep[i]) e_ = INFINITY; \
+        else for (int s_ = 0; s_ < N; s_++) { \
+            const double *A_ = c->B[s_] + 2 * a_, *B_ = c->B[s_] + 2 * b_; \
+            for (int j_ = (a_ + 1) % M; j_ != b_; j_ = (j_ + 1) % M) { \
+                double d_ = seg_dist(c->B[s_] + 2 * j_, A_, B_) / dg[s_]; \
+                if (d_ > e_) e_ = d_; } } \
+        cost[i] = e_; } while (0)
+    for (int i = 0; i < M; i++) COST(i);
+    for (;;) {
+        if (count <= 4) break;
+        int best = -1;
+        for (int i = 0; i < M; i++)
+            if (alive[i] && (best < 0 || cost[i] < cost[best])) best = i;
+        if (best < 0 || !(cost[best] <= err)) break;
+        /* would the chord prv-nxt cross any other edge in some shape? */
+        int a = prv[best], b = nxt[best], bad = 0;
+        for (int s = 0; s < N && !bad; s++) {
+            const double *A = c->B[s] + 2 * a, *Bp = c->B[s] + 2 * b;
+            for (int i = nxt[b]; i != a && !bad; i = nxt[i]) {
+                int j = nxt[i];
+                if (segments_intersect(A, Bp, c->B[s] + 2 * i, c->B[s] + 2 * j)) {
+                    /* edges sharing an endpoint with the chord only touch there */
+                    if (j == a && orient2(A, Bp, c->B[s] + 2 * i) != 0) continue;
+                    bad = 1;
+                }
+            }
+            /* edge b -> nxt[b] shares b: reject a collinear continuation
+             * (conservative: it could fold back onto the chord) */
+            if (!bad && orient2(A, Bp, c->B[s] + 2 * nxt[b]) == 0) bad = 1;
+            /* the polygon must stay counter-clockwise */
+            if (!bad && area[s] - 0.5 * orient2(A, c->B[s] + 2 * best, Bp) <= 0) bad = 1;
+        }
+        if (bad) { cost[best] = INFINITY; continue; }
+        alive[best] = 0;
+        for (int s = 0; s < N; s++) area[s] -= 0.5 * orient2(c->B[s] + 2 * a, c->B[s] + 2 * best, c->B[s] + 2 * b);
+        nxt[a] = b; prv[b] = a;
+        count--;
+        COST(a);
+        COST(b);
+    }
+#undef COST
+    /* compact */
+    int *map = malloc(M * sizeof *map), m = 0;
+    for (int i = 0; i < M; i++) map[i] = alive[i] ? m++ : -1;
+    for (int s = 0; s < N; s++) {
+        int k = 0;
+        for (int i = 0; i < M; i++)
+            if (alive[i]) { c->X[s][2 * k] = c->B[s][2 * i]; c->X[s][2 * k + 1] = c->B[s][2 * i + 1]; k++; }
+    }
+    c->nv = c->nb = m;
+    free(map); free(prv); free(nxt); free(cost); free(dg); free(alive); free(area);
+    return m;
+}
+
+/* ------------------------------------------------------------------ */
+/* visibility inside a sub-polygon */
+
+/* ccw angle from u to v in [0, 2pi) */
+static double ccw_angle(double ux, double uy, double vx, double vy)
+{
+    double a = atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+    return a < 0 ? a + 2 * M_PI : a;
+}
+
+struct sub {
+    int m;            /* polygon size */
+    const int *poly;  /* m vertex ids */
+    const double *X;  /* positions of the shape */
+};
+
+static const double *V(const struct sub *p, int i) { return p->X + 2 * p->poly[i]; }
+
+/* direction q strictly inside the interior angle at polygon corner i */
+static int incone(const struct sub *p, int i, const double *q)
+{
+    const double *a = V(p, i), *pr = V(p, (i + p->m - 1) % p->m), *nx = V(p, (i + 1) % p->m);
+    /* angles below ~1e-7 rad count as zero: the matched boundary has many
+     * points on straight edges, nearly collinear after rounding */
+    double ln = hypot(nx[0] - a[0], nx[1] - a[1]), lp = hypot(pr[0] - a[0], pr[1] - a[1]);
+    double lq = hypot(q[0] - a[0], q[1] - a[1]), tol = 1e-7;
+    double o1 = orient2(a, nx, q) / (ln * lq), o2 = orient2(pr, a, q) / (lp * lq);
+    if (orient2(pr, a, nx) / (ln * lp) > tol) return o1 > tol && o2 > tol;
+    return o1 > tol || o2 > tol;
+}
+
+/* smallest of the two angles the direction q makes at corner i */
+static double cone_quality(const struct sub *p, int i, const double *q)
+{
+    const double *a = V(p, i), *pr = V(p, (i + p->m - 1) % p->m), *nx = V(p, (i + 1) % p->m);
+    double a1 = ccw_angle(nx[0] - a[0], nx[1] - a[1], q[0] - a[0], q[1] - a[1]);
+    double a2 = ccw_angle(q[0] - a[0], q[1] - a[1], pr[0] - a[0], pr[1] - a[1]);
+    return fmin(a1, a2);
+}
+
+/* segment from P (corner i, or a free interior point if i < 0) to Q (corner
+ * j or free) lies in the open interior of the polygon */
+static int seg_inside(const struct sub *p, int i, const double *P, int j, const double *Q)
+{
+    if (i >= 0 && !incone(p, i, Q)) return 0;
+    if (j >= 0 && !incone(p, j, P)) return 0;
+    int m = p->m;
+    for (int e = 0; e < m; e++) {
+        int f = (e + 1) % m;
+        if (e == i || f == i || e == j || f == j) continue;
+        if (segments_intersect(P, Q, V(p, e), V(p, f))) return 0;
+    }
+    /* corners i adjacent to edges we skipped: a corner other than i, j lying
+     * on PQ was caught by the edges around it unless both its edges were
+     * skipped, i.e. it sits between i and j: ruled out by the cone tests */
+    return 1;
+}
+
+/* ear-clipping triangulation of the sub-polygon: candidate interior
+ * points (triangle centroids, and 1/4, 1/2, 3/4 points of diagonals) */
+static int candidates(const struct sub *p, double **out)
+{
+    int m = p->m;
+    int *idx = malloc(m * sizeof *idx), n = m;
+    for (int i = 0; i < m; i++) idx[i] = i;
+    double *C = malloc(sizeof *C * 2 * (size_t)(5 * m + 4));
+    int nc = 0, guard = 0;
+    while (n > 3 && guard < 4 * m * m) {
+        int found = 0;
+        for (int k = 0; k < n && !found; k++) {
+            int a = idx[(k + n - 1) % n], b = idx[k], d = idx[(k + 1) % n];
+            if (orient2(V(p, a), V(p, b), V(p, d)) <= 0) continue;
+            int inside = 0;
+            for (int t = 0; t < n && !inside; t++) {
+                int w = idx[t];
+                if (w == a || w == b || w == d) continue;
+                const double *q = V(p, w);
+                if (orient2(V(p, a), V(p, b), q) >= 0 && orient2(V(p, b), V(p, d), q) >= 0 &&
+                    orient2(V(p, d), V(p, a), q) >= 0) inside = 1;
+            }
+            if (inside) continue;
+            const double *A = V(p, a), *B = V(p, b), *D = V(p, d);
+            C[2 * nc] = (A[0] + B[0] + D[0]) / 3; C[2 * nc + 1] = (A[1] + B[1] + D[1]) / 3; nc++;
+            for (int q = 1; q <= 3; q++) {
+                C[2 * nc] = A[0] + 0.25 * q * (D[0] - A[0]);
+                C[2 * nc + 1] = A[1] + 0.25 * q * (D[1] - A[1]);
+                nc++;
+            }
+            memmove(idx + k, idx + k + 1, (n - k - 1) * sizeof *idx);
+            n--;
+            found = 1;
+        }
+        guard++;
+        if (!found) break;
+    }
+    if (n == 3) {
+        const double *A = V(p, idx[0]), *B = V(p, idx[1]), *D = V(p, idx[2]);
+        C[2 * nc] = (A[0] + B[0] + D[0]) / 3; C[2 * nc + 1] = (A[1] + B[1] + D[1]) / 3; nc++;
+    }
+    free(idx);
+    *out = C;
+    return nc;
+}
+
+/* ------------------------------------------------------------------ */
+/* divide and conquer */
+
+struct split {
+    int i, j;         /* corners (indices into poly) */
+    int k;            /* Steiner points on the path */
+    double *path;     /* N by k by 2 positions */
+    int stage;
+};
+
+static double balance(int i, int j, int m)
+{
+    int a = (j - i + m) % m, b = m - a;
+    return (double)(a < b ? a : b) / m;
+}
+
+static double pair_score(double q, int i, int j, int m)
+{
+    if (q > M_PI / 3) q = M_PI / 3;
+    return q * (1 + 0.25 * balance(i, j, m));
+}
+
+/* quality of path corner i -> points -> corner j in one shape: min angle */
+static double path_quality(const struct sub *p, int i, int j, const double *pts, int k)
+{
+    double q = fmin(cone_quality(p, i, k ? pts : V(p, j)), cone_quality(p, j, k ? pts + 2 * (k - 1) : V(p, i)));
+    for (int t = 0; t < k; t++) {
+        const double *a = t ? pts + 2 * (t - 1) : V(p, i), *b = t + 1 < k ? pts + 2 * (t + 1) : V(p, j);
+        const double *x = pts + 2 * t;
+        double an = ccw_angle(a[0] - x[0], a[1] - x[1], b[0] - x[0], b[1] - x[1]);
+        q = fmin(q, fmin(an, 2 * M_PI - an));
+    }
+    return q;
+}
+
+static int choose_split(struct compat *c, const int *poly, int m, struct split *out)
+{
+    int N = c->N;
+    struct sub *sp = malloc(N * sizeof *sp);
+    for (int s = 0; s < N; s++) { sp[s].m = m; sp[s].poly = poly; sp[s].X = c->X[s]; }
+    /* stage I */
+    unsigned char *vis = malloc((size_t)N * m * m);
+    memset(vis, 0, (size_t)N * m * m);
+    double best = -1;
+    int bi = -1, bj = -1;
+    for (int i = 0; i < m; i++)
+        for (int j = i + 2; j < m; j++) {
+            if (i == 0 && j == m - 1) continue;
+            double q = INFINITY;
+            int all = 1;
+            for (int s = 0; s < N; s++) {
+                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) {
+                    vis[((size_t)s * m + i) * m + j] = vis[((size_t)s * m + j) * m + i] = 1;
+                    q = fmin(q, cone_quality(&sp[s], i, V(&sp[s], j)));
+                    q = fmin(q, cone_quality(&sp[s], j, V(&sp[s], i)));
+                } else all = 0;
+            }
+            if (all) {
+                double sc = pair_score(q, i, j, m);
+                if (sc > best) { best = sc; bi = i; bj = j; }
+            }
+        }
+    if (bi >= 0) {
+        out->i = bi; out->j = bj; out->k = 0; out->path = NULL; out->stage = 0;
+        free(vis); free(sp);
+        return 0;
+    }
+    /* stage II: candidates per shape and their visibility from corners */
+    double **C = malloc(N * sizeof *C);
+    int *nc = malloc(N * sizeof *nc);
+    unsigned char **cv = malloc(N * sizeof *cv);
+    for (int s = 0; s < N; s++) {
+        nc[s] = candidates(&sp[s], &C[s]);
+        cv[s] = malloc((size_t)nc[s] * m + 1);
+        for (int a = 0; a < nc[s]; a++)
+            for (int i = 0; i < m; i++)
+                cv[s][(size_t)a * m + i] = seg_inside(&sp[s], i, V(&sp[s], i), -1, C[s] + 2 * a);
+    }
+    double *bestpath = malloc(2 * (size_t)N * sizeof *bestpath);
+    double *tmp = malloc(2 * (size_t)N * sizeof *tmp);
+    best = -1;
+    for (int i = 0; i < m; i++)
+        for (int j = i + 2; j < m; j++) {
+            if (i == 0 && j == m - 1) continue;
+            double q = INFINITY;
+            int all = 1;
+            for (int s = 0; s < N && all; s++) {
+                double bq = -1;
+                if (vis[((size_t)s * m + i) * m + j]) {
+                    const double *A = V(&sp[s], i), *B = V(&sp[s], j);
+                    double mid[2] = {0.5 * (A[0] + B[0]), 0.5 * (A[1] + B[1])};
+                    bq = path_quality(&sp[s], i, j, mid, 1);
+                    tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
+                }
+                for (int a = 0; a < nc[s]; a++)
+                    if (cv[s][(size_t)a * m + i] && cv[s][(size_t)a * m + j]) {
+                        double pq = path_quality(&sp[s], i, j, C[s] + 2 * a, 1);
+                        if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
+                    }
+                if (bq < 0) all = 0;
+                q = fmin(q, bq);
+            }
+            if (all) {
+                double sc = pair_score(q, i, j, m);
+                if (sc > best) { best = sc; bi = i; bj = j; memcpy(bestpath, tmp, 2 * (size_t)N * sizeof *tmp); }
+            }
+        }
+    free(tmp);
+    int rc = 0;
+    if (bi >= 0) {
+        out->i = bi; out->j = bj; out->k = 1; out->path = bestpath; out->stage = 1;
+        goto done;
+    }
+    free(bestpath);
+    /* stage III: link distances through candidate points */
+    {
+        int **dist = malloc(N * sizeof *dist);   /* dist[s][i*m + j]: links */
+        unsigned char **cc = malloc(N * sizeof *cc);
+        for (int s = 0; s < N; s++) {
+            int n = nc[s];
+            cc[s] = malloc((size_t)n * n + 1);
+            for (int a = 0; a < n; a++)
+                for (int b = 0; b < n; b++)
+                    cc[s][(size_t)a * n + b] = a != b && (b < a ? cc[s][(size_t)b * n + a]
+                        : seg_inside(&sp[s], -1, C[s] + 2 * a, -1, C[s] + 2 * b));
+            dist[s] = malloc((size_t)m * m * sizeof **dist);
+            int *d = malloc((n + 1) * sizeof *d), *queue = malloc((n + 1) * sizeof *queue);
+            for (int i = 0; i < m; i++) {
+                for (int a = 0; a < n; a++) d[a] = -1;
+                int qh = 0, qt = 0;
+                for (int a = 0; a < n; a++)
+                    if (cv[s][(size_t)a * m + i]) { d[a] = 1; queue[qt++] = a; }
+                while (qh < qt) {
+                    int a = queue[qh++];
+                    for (int b = 0; b < n; b++)
+                        if (d[b] < 0 && cc[s][(size_t)a * n + b]) { d[b] = d[a] + 1; queue[qt++] = b; }
+                }
+                for (int j = 0; j < m; j++) {
+                    int L = vis[((size_t)s * m + i) * m + j] ? 1 : 1 << 29;
+                    for (int a = 0; a < n; a++)
+                        if (d[a] > 0 && cv[s][(size_t)a * m + j] && d[a] + 1 < L) L = d[a] + 1;
+                    dist[s][(size_t)i * m + j] = L;
+                }
+            }
+            free(d); free(queue);
+        }
+        int bestL = 1 << 29;
+        double bb = -1;
+        for (int i = 0; i < m; i++)
+            for (int j = i + 2; j < m; j++) {
+                if (i == 0 && j == m - 1) continue;
+                int L = 0;
+                for (int s = 0; s < N; s++) if (dist[s][(size_t)i * m + j] > L) L = dist[s][(size_t)i * m + j];
+                double b = balance(i, j, m);
+                if (L < bestL || (L == bestL && b > bb)) { bestL = L; bb = b; bi = i; bj = j; }
+            }
+        if (bestL >= 1 << 29) {
+            rc = cm_seterr("compatible triangulation failed: no path between any two corners of a %d-gon", m);
+        } else {
+            int k = bestL - 1;
+            out->i = bi; out->j = bj; out->k = k; out->stage = 2;
+            out->path = malloc(2 * (size_t)N * k * sizeof *out->path);
+            int n0 = 0;
+            for (int s = 0; s < N; s++) if (nc[s] > n0) n0 = nc[s];
+            int *d = malloc((n0 + 1) * sizeof *d), *par = malloc((n0 + 1) * sizeof *par),
+                *queue = malloc((n0 + 1) * sizeof *queue);
+            for (int s = 0; s < N && rc == 0; s++) {
+                int n = nc[s];
+                double *pts = out->path + 2 * (size_t)s * k;
+                int L = dist[s][(size_t)bi * m + bj], have = 0;
+                if (L > 1) {
+                    for (int a = 0; a < n; a++) { d[a] = -1; par[a] = -1; }
+                    int qh = 0, qt = 0;
+                    for (int a = 0; a < n; a++)
+                        if (cv[s][(size_t)a * m + bi]) { d[a] = 1; queue[qt++] = a; }
+                    int end = -1;
+                    while (qh < qt && end < 0) {
+                        int a = queue[qh++];
+                        if (d[a] == L - 1 && cv[s][(size_t)a * m + bj]) { end = a; break; }
+                        for (int b = 0; b < n; b++)
+                            if (d[b] < 0 && cc[s][(size_t)a * n + b]) { d[b] = d[a] + 1; par[b] = a; queue[qt++] = b; }
+                    }
+                    if (end < 0) { rc = cm_seterr("compatible triangulation failed (stage III path)"); break; }
+                    have = L - 1;
+                    for (int t = have - 1, a = end; t >= 0; t--, a = par[a]) {
+                        pts[2 * t] = C[s][2 * a]; pts[2 * t + 1] = C[s][2 * a + 1];
+                    }
+                }
+                /* pad: split the longest link until the shape has k points */
+                while (have < k) {
+                    int bt = 0;
+                    double bl = -1;
+                    for (int t = 0; t <= have; t++) {
+                        const double *a = t ? pts + 2 * (t - 1) : V(&sp[s], bi);
+                        const double *b = t < have ? pts + 2 * t : V(&sp[s], bj);
+                        double l = hypot(b[0] - a[0], b[1] - a[1]);
+                        if (l > bl) { bl = l; bt = t; }
+                    }
+                    const double *a = bt ? pts + 2 * (bt - 1) : V(&sp[s], bi);
+                    const double *b = bt < have ? pts + 2 * bt : V(&sp[s], bj);
+                    double mid[2] = {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])};
+                    memmove(pts + 2 * (bt + 1), pts + 2 * bt, 2 * (size_t)(have - bt) * sizeof *pts);
+                    pts[2 * bt] = mid[0]; pts[2 * bt + 1] = mid[1];
+                    have++;
+                }
+                /* the path must not cross itself */
+                for (int t = 0; t <= k && rc == 0; t++)
+                    for (int u = t + 2; u <= k; u++) {
+                        const double *a = t ? pts + 2 * (t - 1) : V(&sp[s], bi);
+                        const double *b = t < k ? pts + 2 * t : V(&sp[s], bj);
+                        const double *e = u ? pts + 2 * (u - 1) : V(&sp[s], bi);
+                        const double *f = u < k ? pts + 2 * u : V(&sp[s], bj);
+                        if (segments_intersect(a, b, e, f)) {
+                            rc = cm_seterr("compatible triangulation failed: stage III path crosses itself");
+                            break;
+                        }
+                    }
+            }
+            free(d); free(par); free(queue);
+            if (rc < 0) { free(out->path); out->path = NULL; }
+        }
+        for (int s = 0; s < N; s++) { free(dist[s]); free(cc[s]); }
+        free(dist); free(cc);
+    }
+done:
+    for (int s = 0; s < N; s++) { free(C[s]); free(cv[s]); }
+    free(C); free(nc); free(cv); free(vis); free(sp);
+    return rc;
+}
+
+static int triangulate_rec(struct compat *c, int *poly, int m, int depth)
+{
+    if (m < 3) return cm_seterr("internal: degenerate sub-polygon");
+    if (m == 3) return add_face(c, poly[0], poly[1], poly[2]);
+    if (depth > 100000) return cm_seterr("compatible triangulation failed: recursion too deep");
+    struct split sp = {0};
+    if (choose_split(c, poly, m, &sp) < 0) return -1;
+    c->stage_count[sp.stage]++;
+    int k = sp.k, base = c->nv;
+    if (k > 0) {
+        if (reserve_v(c, c->nv + k) < 0) { free(sp.path); return -1; }
+        for (int s = 0; s < c->N; s++)
+            memcpy(c->X[s] + 2 * (size_t)base, sp.path + 2 * (size_t)s * k, 2 * (size_t)k * sizeof(double));
+        c->nv += k;
+        c->nsteiner += k;
+    }
+    free(sp.path);
+    int i = sp.i, j = sp.j;
+    int m1 = j - i + 1 + k, m2 = m - (j - i) + 1 + k;
+    int *p1 = malloc(m1 * sizeof *p1), *p2 = malloc(m2 * sizeof *p2);
+    int t = 0;
+    for (int a = i; a <= j; a++) p1[t++] = poly[a];
+    for (int q = k - 1; q >= 0; q--) p1[t++] = base + q;
+    t = 0;
+    for (int a = j; a != (i + 1) % m; a = (a + 1) % m) p2[t++] = poly[a];
+    for (int q = 0; q < k; q++) p2[t++] = base + q;
+    int rc = triangulate_rec(c, p1, m1, depth + 1);
+    if (rc == 0) rc = triangulate_rec(c, p2, m2, depth + 1);
+    free(p1); free(p2);
+    return rc;
+}
+
+int compat_triangulate(struct compat *c)
+{
+    int m = c->nb;
+    int *poly = malloc(m * sizeof *poly);
+    for (int i = 0; i < m; i++) poly[i] = i;
+    c->nf = 0;
+    int rc = triangulate_rec(c, poly, m, 0);
+    free(poly);
+    return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* quality */
+
+static double tri_min_angle(const double *a, const double *b, const double *d)
+{
+    const double *P[3] = {a, b, d};
+    double mn = INFINITY;
+    for (int k = 0; k < 3; k++) {
+        const double *o = P[k], *u = P[(k + 1) % 3], *v = P[(k + 2) % 3];
+        double ux = u[0] - o[0], uy = u[1] - o[1], vx = v[0] - o[0], vy = v[1] - o[1];
+        double an = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
+        if (an < mn) mn = an;
+    }
+    return mn;
+}
+
+/* min angle over shapes of triangle (a,b,d); -1 if inverted in some shape */
+static double face_quality(const struct compat *c, int a, int b, int d)
+{
+    double q = INFINITY;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        if (orient2(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
+        q = fmin(q, tri_min_angle(X + 2 * a, X + 2 * b, X + 2 * d));
+    }
+    return q;
+}
+
+double compat_min_angle(const struct compat *c, double *minarea)
+{
+    double q = INFINITY, ma = INFINITY;
+    for (int s = 0; s < c->N; s++) {
+        double dg = diag2(c->X[s], c->nv);
+        for (int f = 0; f < c->nf; f++) {
+            const int *F = c->F + 3 * f;
+            const double *X = c->X[s];
+            double ar = 0.5 * orient2(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) / (dg * dg);
+            if (ar < ma) ma = ar;
+            q = fmin(q, tri_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]));
+        }
+    }
+    if (minarea) *minarea = ma;
+    return q;
+}
+
+/* ------------------------------------------------------------------ */
+/* improvement: splits, flips, smoothing */
+
+static int opposite(const int *F, int f, int a, int b)
+{
+    for (int k = 0; k < 3; k++)
+        if (F[3 * f + k] != a && F[3 * f + k] != b) return F[3 * f + k];
+    return -1;
+}
+
+/* ordered so that (a, b, x) is the face's orientation */
+static int oriented_edge(const int *F, int f, int a, int b)
+{
+    for (int k = 0; k < 3; k++)
+        if (F[3 * f + k] == a && F[3 * f + (k + 1) % 3] == b) return 1;
+    return 0;
+}
+
+static int flip_pass(struct compat *c)
+{
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    unsigned char *touched = calloc(c->nf, 1);
+    int flips = 0;
+    for (int e = 0; e < t.ne; e++) {
+        if (t.EFn[e] != 2) continue;
+        int f1 = t.EF[2 * e], f2 = t.EF[2 * e + 1];
+        if (touched[f1] || touched[f2]) continue;
+        int a = t.E[2 * e], b = t.E[2 * e + 1];
+        if (!oriented_edge(c->F, f1, a, b)) { int x = f1; f1 = f2; f2 = x; }
+        /* f1 = (a, b, p), f2 = (b, a, q) */
+        int p = opposite(c->F, f1, a, b), q = opposite(c->F, f2, a, b);
+        if (p == q || topology_edge(&t, p, q) >= 0) continue;
+        double old = fmin(face_quality(c, a, b, p), face_quality(c, b, a, q));
+        double n1 = face_quality(c, a, q, p), n2 = face_quality(c, b, p, q);
+        if (n1 < 0 || n2 < 0) continue;
+        if (fmin(n1, n2) > old + 1e-9) {
+            int *F1 = c->F + 3 * f1, *F2 = c->F + 3 * f2;
+            F1[0] = a; F1[1] = q; F1[2] = p;
+            F2[0] = b; F2[1] = p; F2[2] = q;
+            touched[f1] = touched[f2] = 1;
+            flips++;
+        }
+    }
+    free(touched);
+    topology_free(&t);
+    return flips;
+}
+
+static double edge_len_rel(const struct compat *c, int a, int b, const double *dg)
+{
+    double L = 0;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        L = fmax(L, hypot(X[2 * b] - X[2 * a], X[2 * b + 1] - X[2 * a + 1]) / dg[s]);
+    }
+    return L;
+}
+
+static int split_pass(struct compat *c, double target, const double *dg)
+{
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    unsigned char *touched = calloc(c->nf, 1);
+    int splits = 0;
+    /* longest edges first: collect and sort */
+    int ne = 0;
+    int *E = malloc((t.ne + 1) * sizeof *E);
+    double *L = malloc((t.ne + 1) * sizeof *L);
+    for (int e = 0; e < t.ne; e++) {
+        if (t.EFn[e] != 2) continue;
+        double l = edge_len_rel(c, t.E[2 * e], t.E[2 * e + 1], dg);
+        if (l > target) { E[ne] = e; L[ne] = l; ne++; }
+    }
+    for (int x = 1; x < ne; x++)   /* insertion sort, descending */
+        for (int y = x; y > 0 && L[y] > L[y - 1]; y--) {
+            double tl = L[y]; L[y] = L[y - 1]; L[y - 1] = tl;
+            int te = E[y]; E[y] = E[y - 1]; E[y - 1] = te;
+        }
+    int nf0 = c->nf;
+    for (int x = 0; x < ne; x++) {
+        int e = E[x];
+        int f1 = t.EF[2 * e], f2 = t.EF[2 * e + 1];
+        if (touched[f1] || touched[f2]) continue;
+        int a = t.E[2 * e], b = t.E[2 * e + 1];
+        if (!oriented_edge(c->F, f1, a, b)) { int z = f1; f1 = f2; f2 = z; }
+        int p = opposite(c->F, f1, a, b), q = opposite(c->F, f2, a, b);
+        if (reserve_v(c, c->nv + 1) < 0) break;
+        int mv = c->nv++;
+        for (int s = 0; s < c->N; s++) {
+            c->X[s][2 * mv] = 0.5 * (c->X[s][2 * a] + c->X[s][2 * b]);
+            c->X[s][2 * mv + 1] = 0.5 * (c->X[s][2 * a + 1] + c->X[s][2 * b + 1]);
+        }
+        c->nrefine++;
+        int *F1 = c->F + 3 * f1;
+        F1[0] = a; F1[1] = mv; F1[2] = p;
+        int *F2 = c->F + 3 * f2;
+        F2[0] = b; F2[1] = mv; F2[2] = q;
+        touched[f1] = touched[f2] = 1;
+        if (add_face(c, mv, b, p) < 0 || add_face(c, mv, a, q) < 0) break;
+        splits++;
+    }
+    (void)nf0;
+    free(E); free(L); free(touched);
+    topology_free(&t);
+    return splits;
+}
+
+/* one Laplacian smoothing pass of interior vertices, per shape; a move is
+ * kept only if no incident triangle inverts and the smallest angle of the
+ * vertex's star does not decrease */
+static void smooth_pass(struct compat *c, const struct topology *t)
+{
+    for (int s = 0; s < c->N; s++) {
+        double *X = c->X[s];
+        for (int v = c->nb; v < c->nv; v++) {
+            int d = t->VVs[v + 1] - t->VVs[v];
+            if (d == 0) continue;
+            double cx = 0, cy = 0;
+            for (int k = t->VVs[v]; k < t->VVs[v + 1]; k++) { cx += X[2 * t->VV[k]]; cy += X[2 * t->VV[k] + 1]; }
+            cx /= d; cy /= d;
+            double old = INFINITY;
+            for (int k = t->VFs[v]; k < t->VFs[v + 1]; k++) {
+                const int *F = c->F + 3 * t->VF[k];
+                old = fmin(old, tri_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]));
+            }
+            double ox = X[2 * v], oy = X[2 * v + 1];
+            for (int tries = 0; tries < 3; tries++) {
+                X[2 * v] = cx; X[2 * v + 1] = cy;
+                double nq = INFINITY;
+                for (int k = t->VFs[v]; k < t->VFs[v + 1] && nq > 0; k++) {
+                    const int *F = c->F + 3 * t->VF[k];
+                    if (orient2(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) <= 0) nq = -1;
+                    else nq = fmin(nq, tri_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]));
+                }
+                if (nq >= old) break;
+                X[2 * v] = ox; X[2 * v + 1] = oy;
+                cx = 0.5 * (cx + ox); cy = 0.5 * (cy + oy);
+            }
+        }
+    }
+}
+
+int compat_improve(struct compat *c, double target, int iters)
+{
+    double *dg = malloc(c->N * sizeof *dg);
+    for (int s = 0; s < c->N; s++) dg[s] = diag2(c->X[s], c->nb);
+    if (target > 0)
+        for (int r = 0; r < 30; r++) {
+            int n = split_pass(c, target, dg);
+            if (n < 0) { free(dg); return -1; }
+            for (int k = 0; k < 20; k++) if (flip_pass(c) <= 0) break;
+            if (n == 0) break;
+        }
+    for (int it = 0; it < iters; it++) {
+        struct topology t;
+        if (topology_build(c->F, c->nf, c->nv, &t) < 0) { free(dg); return -1; }
+        for (int k = 0; k < 5; k++) smooth_pass(c, &t);
+        topology_free(&t);
+        int nfl = 0;
+        for (int k = 0; k < 20; k++) { int x = flip_pass(c); if (x < 0) { free(dg); return -1; } nfl += x; if (!x) break; }
+        if (nfl == 0 && it > 2) break;
+    }
+    free(dg);
+    return 0;
+}

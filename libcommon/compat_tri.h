@@ -1,0 +1,90 @@
+/* compat_tri.h -- N-way compatible triangulation of simple polygons
+ * (Baxter, Barla, Anjyo, "N-way morphing for 2D animation", Sec. 3.1,
+ * extending Baxter et al. 2008 "Compatible embedding for 2D shape
+ * animation").
+ *
+ * Pipeline (each step a function):
+ *   compat_match      boundary matching of every shape to shape 0: between
+ *                     consecutive correspondence points, vertices are
+ *                     placed by normalized arc length; the union of all
+ *                     shapes' parameter values gives one common boundary
+ *                     of M points, so no shape loses a vertex.
+ *   compat_simplify   greedy removal of corresponding vertex N-tuples: the
+ *                     tuple whose removal has the smallest error (the max
+ *                     over shapes of the distance of the spanned original
+ *                     points to the new chord, relative to the shape's
+ *                     bounding-box diagonal) goes first, while the error is
+ *                     below a threshold and every shape stays simple.
+ *   compat_triangulate  divide and conquer: split the (sub)polygon by the
+ *                     best vertex pair visible in all N shapes (stage I);
+ *                     else by a pair joined through one interior Steiner
+ *                     point in every shape (stage II); else by the pair
+ *                     whose link path through interior candidate points
+ *                     needs the fewest Steiner points over all shapes
+ *                     (stage III, breadth-first link distances).
+ *   compat_improve    compatible refinement (interior edge splits down to
+ *                     a target length), compatible edge flips that raise
+ *                     the minimum angle over all shapes, and smoothing of
+ *                     interior vertices that never inverts a triangle.
+ *
+ * All positions are kept per shape: X[s] is #V by 2 for shape s.
+ */
+#ifndef CM_COMPAT_TRI_H
+#define CM_COMPAT_TRI_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct compat {
+    int N;            /* number of shapes */
+    int nv;           /* #V vertices (same in every shape) */
+    int nb;           /* vertices 0..nb-1 are the boundary, in CCW order */
+    double **X;       /* N arrays, each #V by 2 */
+    int nf;           /* #F triangles */
+    int *F;           /* #F by 3, counter-clockwise in every shape */
+    int nsteiner;     /* interior vertices added by stages II-III */
+    int nrefine;      /* interior vertices added by refinement */
+    int stage_count[3]; /* splits made by stage I, II, III */
+    int cap;          /* private: allocated vertices */
+    int fcap;         /* private: allocated faces */
+    /* private: the matched boundary before simplification (for errors) */
+    int nm;           /* M merged boundary points */
+    double **B;       /* N arrays, M by 2 */
+};
+
+/* Boundary matching.
+ * N      number of shapes
+ * P      N arrays: P[s] is n[s] by 2, a simple CCW polygon
+ * n      N point counts
+ * corr   ncorr by N indices (row-major): corr[k*N+s] is the vertex of shape s
+ *        matching correspondence k; increasing cyclically along every ring
+ * c      out: boundary of c->nv = c->nb = M points (no faces yet)
+ * keep   out (may be NULL): M flags, 1 for correspondence points (malloc'd)
+ * Returns -1 on invalid correspondences. */
+int compat_match(int N, double *const *P, const int *n, const int *corr, int ncorr,
+                 struct compat *c, unsigned char **keep);
+
+/* Greedy compatible simplification of the boundary; err: threshold as a
+ * fraction of each shape's bounding-box diagonal; keep: M flags of points
+ * never removed.  Returns the new boundary size. */
+int compat_simplify(struct compat *c, double err, const unsigned char *keep);
+
+/* Compatible triangulation of the boundary polygons (interior Steiner
+ * points appended after the boundary).  Returns -1 if it fails. */
+int compat_triangulate(struct compat *c);
+
+/* Refinement to a target edge length (fraction of the bounding-box
+ * diagonal, <= 0: none), flips and smoothing (iters rounds). */
+int compat_improve(struct compat *c, double target, int iters);
+
+/* Minimum angle (radians) over all triangles of all shapes; *minarea gets
+ * the smallest signed area divided by the shape's squared diagonal
+ * (> 0 iff every triangle is positively oriented in every shape). */
+double compat_min_angle(const struct compat *c, double *minarea);
+
+void compat_free(struct compat *c);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
