@@ -222,6 +222,57 @@ static void shade_at(const struct shader *sh, const struct face_setup *fs, doubl
     for (int k = 0; k < 3; k++) rgb[k] = col[k] * I;
 }
 
+/* Meshes imported with vertices split along UV seams have two normals at
+ * one point, and smooth shading shows the seam.  Average the normals of
+ * vertices at exactly the same position when they are within 60 degrees
+ * of each other (so modelled hard edges, split for the same reason, stay
+ * sharp).  N: #V by 3 unit normals, updated. */
+static int join_split_normals(const double *V, int nv, double *N)
+{
+    int cap = 16;
+    while (cap < 2 * nv) cap *= 2;
+    int *head = malloc((size_t)cap * sizeof *head), *next = malloc((size_t)nv * sizeof *next);
+    double *S = malloc((size_t)nv * 3 * sizeof *S);
+    if (!head || !next || !S) {
+        free(head); free(next); free(S);
+        return -1;
+    }
+    for (int i = 0; i < cap; i++) head[i] = -1;
+    int shared = 0;
+    for (int i = 0; i < nv; i++) {
+        uint64_t hsh = 1469598103934665603ull;
+        const unsigned char *b = (const unsigned char *)(V + 3 * i);
+        for (size_t k = 0; k < 3 * sizeof(double); k++) hsh = (hsh ^ b[k]) * 1099511628211ull;
+        int slot = (int)(hsh & (uint64_t)(cap - 1));
+        /* chain of vertices in this slot; a position match links i in */
+        next[i] = head[slot];
+        head[slot] = i;
+        for (int j = next[i]; j >= 0 && !shared; j = next[j])
+            shared = !memcmp(V + 3 * i, V + 3 * j, 3 * sizeof(double));
+    }
+    if (shared) {
+        memcpy(S, N, (size_t)nv * 3 * sizeof *S);
+        for (int slot = 0; slot < cap; slot++)
+            for (int i = head[slot]; i >= 0; i = next[i])
+                for (int j = next[i]; j >= 0; j = next[j]) {
+                    if (memcmp(V + 3 * i, V + 3 * j, 3 * sizeof(double)) ||
+                        dot3(N + 3 * i, N + 3 * j) < 0.5)
+                        continue;
+                    for (int k = 0; k < 3; k++) {
+                        S[3 * i + k] += N[3 * j + k];
+                        S[3 * j + k] += N[3 * i + k];
+                    }
+                }
+        for (int i = 0; i < nv; i++) {
+            double l = norm3(S + 3 * i);
+            if (l > 0)
+                for (int k = 0; k < 3; k++) N[3 * i + k] = S[3 * i + k] / l;
+        }
+    }
+    free(head); free(next); free(S);
+    return 0;
+}
+
 /* Fixed-point screen coordinates: 8 fractional bits per sample, so edge
  * functions are exact 64-bit integers and shared edges are watertight
  * (a sample on an edge belongs to exactly one of its two triangles). */
@@ -470,6 +521,12 @@ int raster_render(const double *V, const int *F, int nv, int nf, const struct ca
         sh.Lw[k] = cam->R[k] * L[0] + cam->R[3 + k] * L[1] + cam->R[6 + k] * L[2];
     if (sv) {
         vertex_normals(V, F, nv, nf, N);
+        if (join_split_normals(V, nv, N) < 0) {
+            free(zb); free(id); free(P); free(XY); free(tstart); free(tfaces); free(fc);
+            free(N); free(sv);
+            image_free(out);
+            return cm_seterr("out of memory for vertex normals");
+        }
         for (int i = 0; i < nv; i++) sv[i] = (float)dot3(N + 3 * i, sh.Lw);
     }
     sh.sv = sv;

@@ -104,6 +104,32 @@ int main(void)
     ok(camera_named_view("iso", &az, &el) == 0 && az == 45 && el > 35 && el < 36 &&
        camera_named_view("sideways", &az, &el) < 0, "camera: named views");
 
+    /* split vertices (UV seams) shade like welded ones; hard edges stay */
+    for (int hard = 0; hard < 2; hard++) {
+        double hgt = hard ? 1.5 : 0.25;   /* ridge height: 53 or 113 degrees between sides */
+        /* a tent over [-1,1]x[0,1]: ridge along y at x = 0 */
+        double Vw[18] = {-1, 0, 0, 0, 0, hgt, 1, 0, 0, -1, 1, 0, 0, 1, hgt, 1, 1, 0};
+        int Fw[12] = {0, 1, 4, 0, 4, 3, 2, 5, 4, 2, 4, 1};   /* mirror-symmetric */
+        double Vs[24] = {-1, 0, 0, 0, 0, hgt, 1, 0, 0, -1, 1, 0, 0, 1, hgt, 1, 1, 0,
+                         0, 0, hgt, 0, 1, hgt};   /* 6, 7: copies of the ridge for the right side */
+        int Fs[12] = {0, 1, 4, 0, 4, 3, 2, 5, 7, 2, 7, 6};
+        struct render_style sm;
+        render_style_default(&sm);
+        struct camera c2;
+        camera_init(&c2, 20, 30, 1);
+        camera_fit(&c2, Vw, 6);
+        struct image iw, is;
+        raster_render(Vw, Fw, 6, 4, &c2, &sm, 60, 60, &iw);
+        raster_render(Vs, Fs, 8, 4, &c2, &sm, 60, 60, &is);
+        int same = !memcmp(iw.rgb, is.rgb, (size_t)60 * 60 * 3);
+        if (!hard)
+            ok(same, "raster: vertices split along a seam shade like welded ones");
+        else
+            ok(!same, "raster: a hard edge (113 degrees) made of split vertices stays sharp");
+        image_free(&iw);
+        image_free(&is);
+    }
+
     /* ---- images ---- */
     unsigned char bg[3] = {10, 20, 30}, fg[3] = {250, 240, 230};
     struct image a;
