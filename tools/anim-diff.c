@@ -4,7 +4,8 @@
  * For each frame: mean and max Euclidean distance between corresponding
  * vertices.  With --height H the errors are scaled to a print in which the
  * reference's bounding box (over all frames) is H tall (millimetres, say),
- * the number an animator cares about.  Streams both inputs frame by frame.
+ * the number an animator cares about.  Streams both inputs frame by frame
+ * (one pass: either may be a pipe).
  */
 #include "cm_error.h"
 #include "mesh.h"
@@ -19,12 +20,12 @@ static const char help[] =
 "Per-frame mean and max vertex distance between two animations (same #V).\n"
 "\n"
 "Output (stdout): one line per frame 'frame mean max', then summary lines\n"
-"'# mean M', '# max X', '# rms R' (or only the summary with --summary).\n"
+"'# mean M', '# max X', '# rms R', '# frames K' (mean and rms over all vertices\n"
+"of all frames); --summary prints only the summary lines, without '# '.\n"
 "\n"
 "Options:\n"
 "      --height H     scale errors to a print whose reference height (bounding\n"
-"                     box extent along --axis over all frames) is H (e.g. mm);\n"
-"                     needs REFERENCE to be a file (read twice)\n"
+"                     box extent along --axis over all frames) is H (e.g. mm)\n"
 "      --axis x|y|z   height axis (default y)\n"
 "  -s, --summary      print only the summary lines, as 'key value'\n"
 "  -h, --help         show this help\n"
@@ -58,31 +59,19 @@ int main(int argc, char **argv)
     if (argc - optind != 2)
         usage_error("expected two MESH streams");
     const char *pa = argv[optind], *pb = argv[optind + 1];
-    double scale = 1;
-    if (height > 0) {
-        if (!strcmp(pa, "-")) usage_error("--height needs REFERENCE to be a file");
-        struct mesh_reader r;
-        if (mesh_reader_open(&r, pa) < 0) die("%s", cm_errmsg());
-        double *X = malloc((size_t)r.nv * 3 * sizeof *X), lo = INFINITY, hi = -INFINITY;
-        int rc;
-        while ((rc = mesh_reader_next(&r, X, NULL)) == 1)
-            for (int v = 0; v < r.nv; v++) {
-                if (X[3 * v + axis] < lo) lo = X[3 * v + axis];
-                if (X[3 * v + axis] > hi) hi = X[3 * v + axis];
-            }
-        if (rc < 0) die("%s", cm_errmsg());
-        if (!(hi > lo)) die("cannot read '%s': reference has zero height", pa);
-        scale = height / (hi - lo);
-        free(X);
-        mesh_reader_close(&r);
-    }
+    if (!strcmp(pa, "-") && !strcmp(pb, "-"))
+        usage_error("only one of the two streams can be standard input");
     struct mesh_reader a, b;
     if (mesh_reader_open(&a, pa) < 0 || mesh_reader_open(&b, pb) < 0)
         die("%s", cm_errmsg());
     if (a.nv != b.nv)
-        die("cannot compare '%s' (%d vertices) with '%s' (%d vertices)", pa, a.nv, pb, b.nv);
+        die("cannot compare '%s' (%d vertices) with '%s' (%d vertices)", a.name, a.nv, b.name, b.nv);
     double *X = malloc((size_t)a.nv * 3 * sizeof *X), *Y = malloc((size_t)a.nv * 3 * sizeof *Y);
-    double sum = 0, sum2 = 0, mx = 0;
+    if (!X || !Y) die("out of memory");
+    /* distances are measured unscaled while the reference's extent along
+     * the axis is gathered in the same pass; every figure is linear in the
+     * scale, so --height multiplies them at the end (one pass, pipes work) */
+    double sum = 0, sum2 = 0, mx = 0, zlo = INFINITY, zhi = -INFINITY;
     long n = 0;
     int k = 0;
     /* rows are buffered so that nothing is printed if a stream is bad */
@@ -92,17 +81,21 @@ int main(int argc, char **argv)
         int ra = mesh_reader_next(&a, X, NULL), rb = mesh_reader_next(&b, Y, NULL);
         if (ra < 0 || rb < 0) die("%s", cm_errmsg());
         if (ra != rb)
-            die("'%s' has %d frames, '%s' has more", ra ? pb : pa, k, ra ? pa : pb);
+            die("cannot compare: '%s' has %d frames, '%s' has more", ra ? b.name : a.name, k,
+                ra ? a.name : b.name);
         if (ra == 0) break;
         double fs = 0, fm = 0;
         for (int v = 0; v < a.nv; v++) {
-            double d = scale * sqrt(pow(X[3 * v] - Y[3 * v], 2) + pow(X[3 * v + 1] - Y[3 * v + 1], 2) +
-                                    pow(X[3 * v + 2] - Y[3 * v + 2], 2));
+            double d = sqrt(pow(X[3 * v] - Y[3 * v], 2) + pow(X[3 * v + 1] - Y[3 * v + 1], 2) +
+                            pow(X[3 * v + 2] - Y[3 * v + 2], 2));
             fs += d;
             sum2 += d * d;
             if (d > fm) fm = d;
+            if (X[3 * v + axis] < zlo) zlo = X[3 * v + axis];
+            if (X[3 * v + axis] > zhi) zhi = X[3 * v + axis];
         }
         if (len == cap) rows = realloc(rows, (cap *= 2) * 2 * sizeof *rows);
+        if (!rows) die("out of memory");
         rows[2 * len] = a.nv ? fs / a.nv : 0;
         rows[2 * len + 1] = fm;
         len++;
@@ -111,11 +104,18 @@ int main(int argc, char **argv)
         if (fm > mx) mx = fm;
         k++;
     }
+    double scale = 1;
+    if (height > 0) {
+        if (!(zhi > zlo))
+            die("cannot read '%s': the reference has zero height along %c, --height cannot scale it",
+                a.name, 'x' + axis);
+        scale = height / (zhi - zlo);
+    }
     if (!summary)
-        for (size_t i = 0; i < len; i++) printf("%zu %.6g %.6g\n", i, rows[2 * i], rows[2 * i + 1]);
+        for (size_t i = 0; i < len; i++) printf("%zu %.6g %.6g\n", i, scale * rows[2 * i], scale * rows[2 * i + 1]);
     printf("%smean %.6g\n%smax %.6g\n%srms %.6g\n%sframes %d\n", summary ? "" : "# ",
-           n ? sum / n : 0, summary ? "" : "# ", mx, summary ? "" : "# ",
-           n ? sqrt(sum2 / n) : 0, summary ? "" : "# ", k);
+           n ? scale * sum / n : 0, summary ? "" : "# ", scale * mx, summary ? "" : "# ",
+           n ? scale * sqrt(sum2 / n) : 0, summary ? "" : "# ", k);
     if (fclose(stdout) != 0) die("cannot write output");
     return 0;
 }

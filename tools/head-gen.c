@@ -28,6 +28,7 @@ static const char help[] =
 "      --clips C        split the animation into C clips with cut marks (default 2, 1 for one frame)\n"
 "      --seed N         seed of the motion curves (default 1)\n"
 "      --raw            raw (binary) MESH output (or STOPMO_RAW=1)\n"
+"  -o, --output FILE    write to FILE (temporary + rename) instead of stdout\n"
 "  -h, --help           show this help\n"
 "      --version        show the version\n"
 "\n"
@@ -38,8 +39,10 @@ static const char help[] =
 "Example: head-gen -f 48 | mesh-info\n";
 
 struct options {
-    int frames, subdiv, clips, raw;
+    long frames, subdiv, clips;
+    int raw;
     double fps;
+    const char *output;
     unsigned long seed;
 };
 
@@ -47,25 +50,30 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"frames", 1, 0, 'f'}, {"fps", 1, 0, 'F'}, {"subdiv", 1, 0, 's'},
-        {"clips", 1, 0, 'c'}, {"seed", 1, 0, 'S'}, {"raw", 0, 0, 'R'},
+        {"clips", 1, 0, 'c'}, {"seed", 1, 0, 'S'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     o->frames = 240; o->fps = 24; o->subdiv = 4; o->clips = -1; o->raw = 0; o->seed = 1;
+    o->output = NULL;
     int c;
-    while ((c = getopt_long(argc, argv, "f:s:h", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "f:s:o:h", lo, NULL)) != -1) {
         switch (c) {
-        case 'f': o->frames = (int)arg_long(optarg, "--frames"); break;
+        case 'f': o->frames = arg_long(optarg, "--frames"); break;
         case 'F': o->fps = arg_double(optarg, "--fps"); break;
-        case 's': o->subdiv = (int)arg_long(optarg, "--subdiv"); break;
-        case 'c': o->clips = (int)arg_long(optarg, "--clips"); break;
+        case 's': o->subdiv = arg_long(optarg, "--subdiv"); break;
+        case 'c':
+            o->clips = arg_long(optarg, "--clips");
+            if (o->clips < 1) usage_error("--clips must be in 1..frames");
+            break;
         case 'S': o->seed = (unsigned long)arg_long(optarg, "--seed"); break;
         case 'R': o->raw = 1; break;
+        case 'o': o->output = optarg; break;
         case 'h': print_help_and_exit(help);
         case 'V': print_version_and_exit();
         default: usage_error("unknown option");
         }
     }
     if (optind != argc) usage_error("unexpected argument '%s'", argv[optind]);
-    if (o->frames < 1) usage_error("--frames must be at least 1");
+    if (o->frames < 1 || o->frames > 10000000) usage_error("--frames must be in 1..10000000");
     if (o->subdiv < 1 || o->subdiv > 7) usage_error("--subdiv must be in 1..7");
     if (o->clips < 0) o->clips = o->frames > 1 ? 2 : 1;
     if (o->clips < 1 || o->clips > o->frames) usage_error("--clips must be in 1..frames");
@@ -227,7 +235,7 @@ int main(int argc, char **argv)
     struct options o;
     parse_args(argc, argv, &o);
     struct geo g = {0};
-    icosphere(&g, o.subdiv);
+    icosphere(&g, (int)o.subdiv);
     double *P = malloc((size_t)g.nv * 3 * sizeof *P), *X = malloc((size_t)g.nv * 3 * sizeof *X);
     for (int i = 0; i < g.nv; i++) shape_head(g.V + 3 * i, P + 3 * i);
     struct rng r;
@@ -236,7 +244,8 @@ int main(int argc, char **argv)
     for (int k = 0; k < 8; k++) ph[k] = 2 * M_PI * rng_uniform(&r);
     ph[7] = 2.7 * rng_uniform(&r);
     struct mesh_writer w;
-    if (mesh_writer_open(&w, stdout, g.nv, g.nf, g.F, o.frames, want_raw(o.raw)) < 0)
+    FILE *out = out_open(o.output);
+    if (mesh_writer_open(&w, out, g.nv, g.nf, g.F, (int)o.frames, want_raw(o.raw)) < 0)
         die("cannot write output: %s", cm_errmsg());
     for (int k = 0; k < o.frames; k++) {
         struct curves c;
@@ -246,8 +255,9 @@ int main(int argc, char **argv)
         if (mesh_writer_frame(&w, X, cut) < 0)
             die("cannot write output: %s", cm_errmsg());
     }
-    if (mesh_writer_close(&w) < 0 || fclose(stdout) != 0)
+    if (mesh_writer_close(&w) < 0)
         die("cannot write output: %s", cm_errmsg());
+    out_close(out);
     free(P); free(X); free(g.V); free(g.F);
     return 0;
 }

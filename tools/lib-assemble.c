@@ -66,38 +66,69 @@ int main(int argc, char **argv)
     const char *base_path = argv[optind];
     int np = argc - optind - 1;
 
+    /* parse every LIB:LABELS:MAP before reading anything (usage errors first) */
+    struct part *P = calloc(np, sizeof *P);
+    char **lib_path = calloc(np, sizeof *lib_path), **lab_path = calloc(np, sizeof *lab_path),
+         **map_path = calloc(np, sizeof *map_path);
+    int nstdin = !strcmp(base_path, "-");
+    for (int p = 0; p < np; p++) {
+        char *spec = strdup(argv[optind + 1 + p]);
+        char *lab = strchr(spec, ':'), *map = lab ? strchr(lab + 1, ':') : NULL;
+        if (!lab || !map || lab == spec || map == lab + 1 || !map[1])
+            usage_error("part %d: expected LIB:LABELS:MAP, got '%s'", p, argv[optind + 1 + p]);
+        *lab++ = 0;
+        *map++ = 0;
+        lib_path[p] = spec;
+        lab_path[p] = lab;
+        map_path[p] = map;
+        nstdin += !strcmp(spec, "-") + !strcmp(lab, "-") + !strcmp(map, "-");
+    }
+    if (nstdin > 1)
+        usage_error("only one input can be standard input ('-')");
+
     struct mesh_reader base;
     if (mesh_reader_open(&base, base_path) < 0)
         die("%s", cm_errmsg());
     int nv = base.nv;
     double *X0 = malloc((size_t)nv * 3 * sizeof *X0);
-    if (mesh_reader_next(&base, X0, NULL) != 1)
-        die("%s", *cm_errmsg() ? cm_errmsg() : "base stream has no frames");
+    int rc = mesh_reader_next(&base, X0, NULL);
+    if (rc < 0)
+        die("%s", cm_errmsg());
+    if (rc == 0)
+        die("cannot read '%s': the stream has no frames", base.name);
 
-    struct part *P = calloc(np, sizeof *P);
-    int nframes = -1;
+    int nframes = -1, *owner = malloc((size_t)nv * sizeof *owner);
     for (int p = 0; p < np; p++) {
-        char *spec = strdup(argv[optind + 1 + p]);
-        char *lib = spec, *lab = strchr(lib, ':'), *map = lab ? strchr(lab + 1, ':') : NULL;
-        if (!lab || !map)
-            usage_error("part %d: expected LIB:LABELS:MAP, got '%s'", p, argv[optind + 1 + p]);
-        *lab++ = 0;
-        *map++ = 0;
-        if (mesh_read(lib, &P[p].lib) < 0)
+        if (mesh_read(lib_path[p], &P[p].lib) < 0)
             die("%s", cm_errmsg());
-        if (labels_read(map, P[p].lib.nv, "vertices in the library", 0, nv - 1, &P[p].map,
+        const char *mname = strcmp(map_path[p], "-") ? map_path[p] : "<stdin>";
+        if (labels_read(map_path[p], P[p].lib.nv, "vertices in the library", 0, -1, &P[p].map,
                         &P[p].nmap) < 0)
             die("%s", cm_errmsg());
-        if (labels_read(lab, -1, "frames", 0, P[p].lib.nframes - 1, &P[p].labels,
+        /* every map entry names a BASE vertex, each at most once per part */
+        for (int v = 0; v < nv; v++) owner[v] = -1;
+        for (int j = 0; j < P[p].nmap; j++) {
+            int v = P[p].map[j];
+            if (v >= nv)
+                die("cannot read '%s': row %d: vertex %d, but '%s' has %d vertices", mname, j + 1,
+                    v, base.name, nv);
+            if (owner[v] >= 0)
+                die("cannot read '%s': rows %d and %d both name vertex %d", mname, owner[v] + 1,
+                    j + 1, v);
+            owner[v] = j;
+        }
+        const char *lname = strcmp(lab_path[p], "-") ? lab_path[p] : "<stdin>";
+        if (labels_read(lab_path[p], -1, "frames", 0, P[p].lib.nframes - 1, &P[p].labels,
                         &P[p].nlabels) < 0)
             die("%s", cm_errmsg());
+        if (P[p].nlabels < 1)
+            die("cannot read '%s': no labels (one piece number per frame expected)", lname);
         if (nframes >= 0 && P[p].nlabels != nframes)
-            die("cannot read '%s': %d labels, but part 0 has %d frames", lab, P[p].nlabels, nframes);
+            die("cannot read '%s': %d labels, but part 0 has %d frames", lname, P[p].nlabels,
+                nframes);
         nframes = P[p].nlabels;
-        free(spec);
     }
-    if (nframes < 1)
-        die("no frames to assemble");
+    free(owner);
 
     FILE *f = out_open(out);
     struct mesh_writer w;
@@ -122,14 +153,17 @@ int main(int argc, char **argv)
                     double d = sqrt(pow(y[0] - first[3 * v], 2) + pow(y[1] - first[3 * v + 1], 2) +
                                     pow(y[2] - first[3 * v + 2], 2));
                     if (d > gap) gap = d;
-                    for (int e = 0; e < 3; e++) X[3 * v + e] += y[e];
+                    /* X = first copy + sum of the differences to it, so
+                     * copies that agree average to exactly their value */
+                    for (int e = 0; e < 3; e++) X[3 * v + e] += y[e] - first[3 * v + e];
                 }
                 cnt[v]++;
             }
         }
         for (int v = 0; v < nv; v++)
             if (cnt[v] > 1)
-                for (int e = 0; e < 3; e++) X[3 * v + e] /= cnt[v];
+                for (int e = 0; e < 3; e++)
+                    X[3 * v + e] = first[3 * v + e] + (X[3 * v + e] - first[3 * v + e]) / cnt[v];
         /* cut marks: a new clip wherever the base stream had one is unknown
          * here (labels carry no cuts); the assembled film is one clip */
         if (mesh_writer_frame(&w, X, 0) < 0)

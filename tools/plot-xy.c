@@ -106,6 +106,19 @@ static double nice_step(double range, int want)
     return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
 }
 
+/* make [*lo, *hi] a range of positive width that floating point can
+ * resolve: an all-equal column (or one whose spread is below the precision
+ * of its values) gets a margin around its value, so the scale never
+ * divides by zero and the tick loop always advances */
+static void widen(double *lo, double *hi)
+{
+    double m = fmax(fabs(*lo), fabs(*hi)), min_w = fmax(1e-300, 1e-9 * m);
+    if (*hi - *lo >= min_w) return;
+    double c = 0.5 * (*lo + *hi), h = fmax(0.5, 1e-6 * m);
+    *lo = c - h;
+    *hi = c + h;
+}
+
 static void line(struct image *im, double x0, double y0, double x1, double y1,
                  const unsigned char rgb[3], int thick)
 {
@@ -145,8 +158,8 @@ int main(int argc, char **argv)
             ymin = fmin(ymin, y); ymax = fmax(ymax, y);
         }
     }
-    if (xmax == xmin) { xmin -= 0.5; xmax += 0.5; }
-    if (ymax == ymin) { ymin -= 0.5; ymax += 0.5; }
+    widen(&xmin, &xmax);
+    widen(&ymin, &ymax);
     if (o.logy) { ymin = floor(ymin); ymax = ceil(ymax); }
     else { double pad = 0.05 * (ymax - ymin); ymin -= ymin >= 0 && ymin - pad < 0 ? ymin : pad; ymax += pad; }
 
@@ -158,14 +171,18 @@ int main(int argc, char **argv)
 #define PX(x) (L + ((x) - xmin) / (xmax - xmin) * pw)
 #define PY(y) (T + ph - ((y) - ymin) / (ymax - ymin) * ph)
     char buf[64];
-    double xs = nice_step(xmax - xmin, 8);
-    for (double x = ceil(xmin / xs) * xs; x <= xmax + 1e-9 * xs; x += xs) {
+    double xs = nice_step(xmax - xmin, 8), x0 = ceil(xmin / xs);
+    for (int i = 0; i < 100 && (x0 + i) * xs <= xmax + 1e-9 * xs; i++) {
+        double x = (x0 + i) * xs;
         line(&im, PX(x), T, PX(x), T + ph, grid, 1);
         snprintf(buf, sizeof buf, "%g", fabs(x) < 1e-12 * xs ? 0.0 : x);
         image_text(&im, (int)PX(x) - text_width(buf, 1) / 2, T + ph + 6, buf, 1, black, NULL);
     }
-    double ys = o.logy ? 1 : nice_step(ymax - ymin, 6);
-    for (double y = ceil(ymin / ys) * ys; y <= ymax + 1e-9 * ys; y += ys) {
+    /* log axis: a tick per decade, or per k decades when there are many */
+    double ys = o.logy ? fmax(1, ceil((ymax - ymin) / 10)) : nice_step(ymax - ymin, 6);
+    double y0 = ceil(ymin / ys);
+    for (int i = 0; i < 100 && (y0 + i) * ys <= ymax + 1e-9 * ys; i++) {
+        double y = (y0 + i) * ys;
         line(&im, L, PY(y), L + pw, PY(y), grid, 1);
         if (o.logy) snprintf(buf, sizeof buf, "1e%d", (int)lround(y));
         else snprintf(buf, sizeof buf, "%g", fabs(y) < 1e-12 * ys ? 0.0 : y);
