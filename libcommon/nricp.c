@@ -24,6 +24,7 @@ void nricp_defaults(struct nricp_params *p)
     p->eps = 1e-4;
     p->max_inner = 3;
     p->relax = 0;
+    p->nearest_vertex = 0;
 }
 
 /* The normal matrix lives in a fixed pattern: a full 4x4 block for every
@@ -194,6 +195,13 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
             /* correspondences, source -> target */
             vertex_normals(P, FS, nvs, nfs, NS);
             closest_points_hinted(TT, P, nvs, first ? NULL : UF, U, UF, UB, NULL);
+            if (p->nearest_vertex)
+                for (int i = 0; i < nvs; i++) {
+                    int best = 0;
+                    for (int q = 1; q < 3; q++) if (UB[3 * i + q] > UB[3 * i + best]) best = q;
+                    memcpy(U + 3 * i, VT + 3 * FT[3 * UF[i] + best], 3 * sizeof *U);
+                    for (int q = 0; q < 3; q++) UB[3 * i + q] = q == best;
+                }
             memset(S.A->x, 0, S.A->nzmax * sizeof(double));
             memset(B, 0, (size_t)nvs * 12 * sizeof *B);
             rejected = 0;

@@ -42,6 +42,9 @@ struct nricp_params {
     double eps;            /* inner loop stops when the RMS change of the deformed vertices,
                               relative to the diagonal, is below eps (default 1e-4) */
     int max_inner;         /* inner iterations per stiffness (default 3) */
+    int nearest_vertex;    /* baseline: correspondence = the nearest corner of the closest
+                              triangle (~ the closest target vertex) instead of the closest
+                              point; default 0 */
     int relax;             /* final fold-removal sweeps (default 0: pure Amberg) */
 };
 

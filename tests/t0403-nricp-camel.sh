@@ -5,8 +5,8 @@ need_shared_data scans/camel-gallop-02.off
 
 EX="$STOPMO_ROOT/examples/clay"
 test_expect_success 'setup: import the scans' '
-	awk -f "$EX/off2mesh.awk" "$SHARED_DATA/scans/camel-gallop-01.off" >c1.mesh &&
-	awk -f "$EX/off2mesh.awk" "$SHARED_DATA/scans/camel-gallop-02.off" >c2.mesh
+	mesh-import "$SHARED_DATA/scans/camel-gallop-01.off" >c1.mesh &&
+	mesh-import "$SHARED_DATA/scans/camel-gallop-02.off" >c2.mesh
 '
 test_expect_success 'camel 01 -> 02 with 14 landmarks: Hausdorff below 1% of the diagonal' '
 	nricp -v -l "$EX/landmarks-01-02.txt" c1.mesh c2.mesh >r.mesh 2>err &&

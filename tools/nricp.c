@@ -40,6 +40,7 @@ static const char help[] =
 "      --max-dist D      reject correspondences farther than D diagonals (default 0.1, 0 off)\n"
 "      --backward W      weight of target->source correspondences (default 1, 0 off)\n"
 "      --max-inner N     iterations per stiffness (default 3)\n"
+"      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --relax N         final fold-removal sweeps (default 0)\n"
 "      --eps E           inner loop tolerance, in diagonals (default 1e-4)\n"
 "      --init-deform     first deform the source toward the landmarks with\n"
@@ -64,12 +65,12 @@ struct options {
 static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
-           O_EPS, O_SOUT, O_RAW, O_VERSION, O_RELAX, O_INIT, O_INITK };
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_RELAX, O_INIT, O_INITK, O_NV };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
-        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"relax", 1, 0, O_RELAX}, {"init-deform", 0, 0, O_INIT}, {"init-stiffness", 1, 0, O_INITK},
+        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"relax", 1, 0, O_RELAX}, {"init-deform", 0, 0, O_INIT}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
         {0, 0, 0, 0}};
@@ -91,6 +92,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_BACK: o->p.backward = arg_double(optarg, "--backward"); break;
         case O_INNER: o->p.max_inner = (int)arg_long(optarg, "--max-inner"); break;
         case O_INIT: o->init_deform = 1; break;
+        case O_NV: o->p.nearest_vertex = 1; break;
         case O_INITK: o->init_stiffness = optarg; o->init_deform = 1; break;
         case O_RELAX: o->p.relax = (int)arg_long(optarg, "--relax"); break;
         case O_EPS: o->p.eps = arg_double(optarg, "--eps"); break;
