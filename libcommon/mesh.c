@@ -357,8 +357,8 @@ int mesh_reader_next(struct mesh_reader *r, double *X, int *cut)
                 const char *q = r->buf + r->pos;
                 double *x = X + 3 * (size_t)i;
                 if ((q = parse_double_padded(q, &x[0])) && *q == ' ' &&
-                    (q = parse_double_padded(q, &x[1])) && *q == ' ' &&
-                    (q = parse_double_padded(q, &x[2])) && *q == '\n' &&
+                    (q = parse_double_padded(q + 1, &x[1])) && *q == ' ' &&
+                    (q = parse_double_padded(q + 1, &x[2])) && *q == '\n' &&
                     isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2])) {
                     r->pos = (size_t)(q + 1 - r->buf);
                     r->line++;

@@ -105,7 +105,8 @@ static int tie_side(uint64_t m, int e, uint64_t D, int Q)
 }
 #endif
 
-static inline const char *parse_double_impl(const char *s, double *out, int padded)
+static inline __attribute__((always_inline)) const char *
+parse_double_impl(const char *s, double *out, int padded)
 {
     while (*s == ' ' || *s == '\t' || *s == '\r')
         s++;
@@ -118,6 +119,21 @@ static inline const char *parse_double_impl(const char *s, double *out, int padd
      * there are more than 19 significant digits, but those go to strtod. */
     uint64_t m = 0;
     int digits, exp10 = 0, any;
+    if (padded && (unsigned)(p[0] - '0') < 10 && p[1] == '.') {
+        /* fast lane for the usual shape of a coordinate, "d.ddd" with up
+         * to 18 decimals and no exponent: fewer unpredictable branches
+         * (fraction zeros are not skipped, they count as digits) */
+        const char *f0 = p + 2, *q = f0;
+        m = scan_digits(&q, (uint64_t)(p[0] - '0'), 1);
+        int nf = (int)(q - f0);
+        if (nf >= 1 && nf <= 18 && (*q | 0x20) != 'e') {
+            p = q;
+            digits = nf + 1;
+            exp10 = -nf;
+            goto convert;
+        }
+        m = 0;
+    }
     const char *d0 = p;
     while (*p == '0') p++;                          /* leading zeros do not count */
     const char *i0 = p;
@@ -153,6 +169,7 @@ static inline const char *parse_double_impl(const char *s, double *out, int padd
         exp10 += eneg ? -e : e;
         p = q;
     }
+convert:
     if (digits <= 15 && exp10 >= -22 && exp10 <= 22) {
         /* Clinger's fast path: m and 10^|e| are exact doubles, one
          * correctly rounded multiply or divide */
