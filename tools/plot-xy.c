@@ -152,7 +152,8 @@ int main(int argc, char **argv)
         for (int i = 0; i < o.ny; i++) {
             double y = c.x[(size_t)r * c.cols + o.ycols[i] - 1];
             if (o.logy) {
-                if (!(y > 0)) die("cannot read '%s': row %d: %g cannot go on a log axis", name, r + 1, y);
+                if (!(y > 0)) die("cannot read '%s': data row %d, column %d: %g cannot go on a log axis",
+                                     name, r + 1, o.ycols[i], y);
                 y = log10(y);
             }
             ymin = fmin(ymin, y); ymax = fmax(ymax, y);
