@@ -115,7 +115,12 @@ test_expect_success 'a later frame and --fit-all' '
 	mesh-gen -f 5 -a bend -n 8 cylinder >bend.mesh &&
 	mesh-render -s 50x50 --frame 4 bend.mesh >k4.png &&
 	mesh-render -s 50x50 --frame 4 --fit-all bend.mesh >k4a.png &&
-	mesh-render -s 50x50 --frame 2 <bend.mesh >k2.png && png_size k2.png
+	mesh-render -s 50x50 --frame 2 <bend.mesh >k2.png && png_size k2.png &&
+	mesh-render -s 50x50 --frame -1 bend.mesh >last.png && test_cmp k4.png last.png &&
+	sed "s/^frames .*/frames ?/" bend.mesh >unknown.mesh &&
+	mesh-render -s 50x50 --frame -1 <unknown.mesh >last2.png && test_cmp k4.png last2.png &&
+	mesh-render -s 50x50 --frame -3 <unknown.mesh >m3.png && test_cmp k2.png m3.png &&
+	mesh-render -s 50x50 --frame -1 --fit-all <unknown.mesh >la.png && test_cmp k4a.png la.png
 '
 test_expect_success 'degenerate meshes render: empty, no faces, one point, a line' '
 	printf "MESH 1\nvertices 0\nfaces 0\nframes 1\nframe 0\n" >empty.mesh &&
@@ -138,6 +143,8 @@ test_expect_success 'non-integer label: clean error' '
 '
 test_expect_success 'missing frame: clean error, no -o file left' '
 	test_fails_cleanly mesh-render --frame 5 bend.mesh &&
+	test_fails_cleanly mesh-render --frame -6 bend.mesh &&
+	test_fails_cleanly mesh-render --frame -6 <unknown.mesh &&
 	test_fails_cleanly mesh-render --frame 9 -o out.png bend.mesh && test ! -e out.png
 '
 test_expect_success 'truncated or missing input: clean error' '

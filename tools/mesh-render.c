@@ -24,7 +24,8 @@ static const char help[] =
 "Render one frame of a MESH stream (file or stdin) as a PNG or PPM image.\n"
 "\n"
 "Options:\n"
-"  -k, --frame K          frame to draw, 0-based (default 0)\n"
+"  -k, --frame K          frame to draw, 0-based; negative counts from the end\n"
+"                         (-1 = the last; default 0)\n"
 "  -s, --size WxH         image size in pixels (default 800x800)\n"
 "  -V, --view NAME        front, back, left, right, top, bottom, iso (default front)\n"
 "  -a, --azimuth DEG      camera azimuth around the up axis (0 = front, 90 = right)\n"
@@ -150,8 +151,6 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (optind < argc - 1)
         usage_error("expected at most one input file");
     o->input = optind < argc ? argv[optind] : NULL;
-    if (o->frame < 0)
-        usage_error("--frame must be 0 or more");
     if (camera_named_view(view, &o->azimuth, &o->elevation) < 0)
         usage_error("unknown view '%s' (front, back, left, right, top, bottom, iso)", view);
     if (have_az) o->azimuth = az;
@@ -203,21 +202,45 @@ int main(int argc, char **argv)
     camera_init(&cam, o.azimuth, o.elevation, o.up);
     cam.perspective = o.perspective;
     cam.fov = o.fov;
-    double *X = malloc(((size_t)r.nv + 1) * 3 * sizeof *X);
-    double *Y = malloc(((size_t)r.nv + 1) * 3 * sizeof *Y);
-    if (!X || !Y)
+    size_t fsz = ((size_t)r.nv + 1) * 3 * sizeof(double);
+    int want = o.frame;           /* frame index, or < 0: from the end */
+    if (want < 0 && r.nframes >= 0) {
+        if (r.nframes + want < 0)
+            die("cannot read '%s': no frame %d (the stream has %d frame%s)", r.name, o.frame,
+                r.nframes, r.nframes == 1 ? "" : "s");
+        want += r.nframes;
+    }
+    /* from the end of a stream of unknown length: a ring of the last -want frames */
+    int nring = want < 0 ? -want : 1;
+    double **ring = malloc((size_t)nring * sizeof *ring);
+    double *Y = malloc(fsz);
+    if (!ring || !Y)
         die("out of memory");
+    for (int i = 0; i < nring; i++)
+        if (!(ring[i] = malloc(fsz)))
+            die("out of memory for the last %d frames", nring);
+    double *X = ring[0];
     int got = 0, k = 0, rc;
-    while ((rc = mesh_reader_next(&r, k == o.frame ? X : Y, NULL)) > 0) {
-        if (k == o.frame) got = 1;
-        if (o.fit_all || k == o.frame)
-            camera_fit(&cam, k == o.frame ? X : Y, r.nv);
+    for (;;) {
+        double *dst = want < 0 ? ring[k % nring] : k == want ? X : Y;
+        if ((rc = mesh_reader_next(&r, dst, NULL)) <= 0)
+            break;
+        if (k == want) got = 1;
+        if (o.fit_all || k == want)
+            camera_fit(&cam, dst, r.nv);
         k++;
         if (got && !o.fit_all && !is_stream(o.input))
             break;
     }
     if (rc < 0)
         die("%s", cm_errmsg());
+    if (want < 0 && k >= nring) {
+        want = k - nring;
+        X = ring[want % nring];
+        if (!o.fit_all)
+            camera_fit(&cam, X, r.nv);
+        got = 1;
+    }
     if (!got)
         die("cannot read '%s': no frame %d (the stream has %d frame%s)", r.name, o.frame, k,
             k == 1 ? "" : "s");
@@ -255,12 +278,13 @@ int main(int argc, char **argv)
     out_close(out);
     double t3 = now();
     info(1, "frame %d: %d vertices, %d faces; read %.1f ms, render %dx%d (x%d) %.1f ms, "
-         "write %s %.1f ms", o.frame, r.nv, r.nf, 1e3 * (t1 - t0), o.w, o.h, o.ss,
+         "write %s %.1f ms", want, r.nv, r.nf, 1e3 * (t1 - t0), o.w, o.h, o.ss,
          1e3 * (t2 - t1), o.format, 1e3 * (t3 - t2));
     image_free(&im);
     mesh_colors_free(&mc);
     mesh_reader_close(&r);
-    free(X);
+    for (int i = 0; i < nring; i++) free(ring[i]);
+    free(ring);
     free(Y);
     return 0;
 }
