@@ -66,6 +66,18 @@ test_expect_success 'factor once, refactor each frame, any batch size agree' '
 	d=$(max_diff cyl.out b5.out) && echo "batch 5: $d" && test_le "$d" 1e-13 &&
 	d=$(fixed_drift b5.out cyl.lab) && test_le "$d" 1e-12
 '
+test_expect_success 'clip cut marks pass through' '
+	mesh-gen -f 12 -a wave -n 16 -m 12 --caps --cut-every 5 cylinder >cut.mesh &&
+	seam-homog -l cyl.lab cut.mesh >cut.out &&
+	grep "^frame" cut.mesh >expect && grep "^frame" cut.out >actual &&
+	test_cmp expect actual && grep -q "frame 5 cut" actual
+'
+test_expect_success '--rings 2 fixes a larger set, still constant; --rings 0 lets the ring move' '
+	seam-homog -l cyl.lab --rings 2 cyl.mesh >r2.out &&
+	test_le "$(fixed_drift r2.out cyl.lab)" 1e-12 &&
+	seam-homog -l cyl.lab --rings 0 cyl.mesh >r0.out &&
+	test_le 1e-9 "$(fixed_drift r0.out cyl.lab)"
+'
 test_expect_success 'one label only: the animation passes unchanged, with a warning' '
 	awk "{print 0}" cyl.lab >one.lab &&
 	seam-homog -l one.lab cyl.mesh >one.out 2>one.err &&
