@@ -104,12 +104,9 @@ int main(int argc, char **argv)
     L.n = n; L.nv = nv; L.X = X; L.cut = cut; L.nfix = d; L.Rfix = res.R; L.gram = 0;
     if (replib_prepare(&L) < 0) return 1;
     int *l = malloc(sizeof(int) * n);
-    double t = wall();
-    double Edp = replib_label(&L, 2, REPLIB_DP, l, NULL, NULL);
-    double tdp = wall() - t;
-    t = wall();
-    double Eexp = replib_label(&L, 2, REPLIB_EXPANSION, l, NULL, NULL);
-    double texp = wall() - t;
+    double tdp, texp;
+    double Edp = replib_label_timed(&L, 2, REPLIB_DP, l, NULL, NULL, &tdp);
+    double Eexp = replib_label_timed(&L, 2, REPLIB_EXPANSION, l, NULL, NULL, &texp);
     printf("dp_energy=%.10g dp_s=%.4f expansion_energy=%.10g expansion_s=%.4f\n", Edp, tdp, Eexp, texp);
     free(l);
     replib_data_free(&L);

@@ -688,6 +688,12 @@ void replib_result_free(struct replib_result *res)
 double replib_label(const struct replib_data *D, double lambda, enum replib_method method,
                     int *l, double *data, double *velocity)
 {
+    return replib_label_timed(D, lambda, method, l, data, velocity, NULL);
+}
+
+double replib_label_timed(const struct replib_data *D, double lambda, enum replib_method method,
+                          int *l, double *data, double *velocity, double *label_seconds)
+{
     int d = D->nfix;
     if (d < 1) { cm_seterr("replib_label: empty library"); return NAN; }
     struct lstate s;
@@ -697,7 +703,9 @@ double replib_label(const struct replib_data *D, double lambda, enum replib_meth
     for (int a = 0; a < d; a++) s.src[a] = D->n + a;
     double E = NAN;
     if (compute_costs(D, &s, lambda / 2, &w) == 0) {
+        double t = wall();
         E = label_step(&w, method, l, 0);
+        if (label_seconds) *label_seconds = wall() - t;
         if (!isnan(E)) chain_energy(&w.ch, l, data, velocity);
     }
     lstate_free(&s);

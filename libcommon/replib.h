@@ -112,6 +112,11 @@ void replib_result_free(struct replib_result *res);
 double replib_label(const struct replib_data *D, double lambda, enum replib_method method,
                     int *l, double *data, double *velocity);
 
+/* The same; *label_seconds (may be NULL) gets the time of the label step
+ * alone (without the cost products). */
+double replib_label_timed(const struct replib_data *D, double lambda, enum replib_method method,
+                          int *l, double *data, double *velocity, double *label_seconds);
+
 /* Direct evaluation of a labeling (no Gram tricks), in model units. */
 struct replib_report {
     double energy;              /* data + lambda/2 * velocity */
