@@ -85,6 +85,7 @@ int main(int argc, char **argv)
     double c0 = cpu();
     struct replib_data D = {0};
     D.n = n; D.nv = nv; D.X = X; D.cut = cut; D.gram = getenv("DICT_BENCH_GRAM") ? atoi(getenv("DICT_BENCH_GRAM")) : -1;
+    D.no_lowrank = getenv("DICT_BENCH_FULLRANK") != NULL;
     if (replib_prepare(&D) < 0) { fprintf(stderr, "dict-bench: prepare failed\n"); return 1; }
     struct replib_opts o = {0};
     o.d = d; o.lambda = 2; o.restarts = restarts; o.iterations = iters; o.seed = (uint64_t)seed; o.tol = 1e-10;
@@ -92,7 +93,7 @@ int main(int argc, char **argv)
     struct replib_result res;
     if (replib_learn(&D, &o, &res) < 0) { fprintf(stderr, "dict-bench: learn failed\n"); return 1; }
     double cpu_s = cpu() - c0;
-    printf("blas=%s cpu_s=%.3f ", blas_corename(), cpu_s);
+    printf("blas=%s lowrank=%d cpu_s=%.3f ", blas_corename(), D.lowrank, cpu_s);
     printf("vertices=%d frames=%d pieces=%d backend=%s generate_s=%.3f prepare_s=%.3f learn_s=%.3f total_s=%.3f "
            "restarts=%d iterations=%d per_iteration_s=%.4f label_per_iteration_s=%.4f energy=%.10g\n",
            nv, n, d, D.K ? "gram" : "direct", tgen, D.prep_seconds, res.seconds,

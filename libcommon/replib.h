@@ -19,7 +19,8 @@
  * Costs come from dense products: |z|^2 + |r|^2 - 2 z.r.  Internally every
  * piece is r_a = sum_g C_ag z_g over the frames (and fixed pieces) z_g, so
  * two back ends give the same numbers:
- *   Gram:   K = Z Z^T once (one DSYRK, N^2 3#V flops); per iteration
+ *   Gram:   K = Z Z^T once (one DSYRK, N^2 3#V flops, or 6 N 3#V r when Z
+ *           has rank <= r to rounding, as blend-shape faces do); per iteration
  *           P = K C^T, Q = C P: independent of #V, restarts nearly free.
  *   direct: per iteration R = A^-1 B (sparse B), P = Z R^T (one DGEMM,
  *           serving both the data and the velocity term since
@@ -48,6 +49,7 @@ struct replib_data {
     const double *w;            /* #V saliency weights >= 0, or NULL (all 1) */
     const unsigned char *cut;   /* n flags, 1 = frame starts a clip, or NULL */
     int gram;                   /* -1 auto, 0 direct, 1 Gram, 2 Gram in single precision */
+    int no_lowrank;             /* 1: never use the exact low-rank Gram matrix */
     /* derived by replib_prepare() */
     int N;                      /* n + nfix */
     int m3;                     /* 3#V */
@@ -57,6 +59,7 @@ struct replib_data {
     double *K;                  /* N by N Gram matrix (Gram back end only) */
     double *zz;                 /* N squared norms |z_g|^2 */
     double *dd;                 /* n: |z_{f+1} - z_f|^2 (0 where not linked) */
+    int lowrank;                /* rank r if K came from the exact low-rank path, else 0 */
     double prep_seconds;        /* time spent in replib_prepare */
 };
 

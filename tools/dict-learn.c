@@ -42,8 +42,9 @@ static const char help[] =
 "                         is <= E model units (Fig. 16); -d is then ignored\n"
 "      --sweep D1:D2[:S]  print \"d energy mean_err max_err\" for D = D1..D2\n"
 "                         step S (Fig. 8) instead of writing a library\n"
-"      --gram auto|on|single|off  cost back end: Gram matrix (default when\n"
-"                         frames <= 12000), Gram matrix in single precision\n"
+"      --gram auto|on|full|single|off  cost back end: Gram matrix (default\n"
+"                         when frames <= 12000; exact low-rank shortcut when the\n"
+"                         animation allows), full DSYRK only, single precision\n"
 "                         (faster; reports stay exact), or one GEMM per iteration\n"
 "      --threads N        restarts run on N threads (default 0: one per core);\n"
 "                         the result does not depend on N\n"
@@ -104,7 +105,8 @@ static void parse_args(int argc, char **argv, struct options *o)
             else if (!strcmp(optarg, "on")) o->gram = 1;
             else if (!strcmp(optarg, "off")) o->gram = 0;
             else if (!strcmp(optarg, "single")) o->gram = 2;
-            else usage_error("--gram: '%s' is not auto, on, single or off", optarg);
+            else if (!strcmp(optarg, "full")) o->gram = 3;
+            else usage_error("--gram: '%s' is not auto, on, full, single or off", optarg);
             break;
         case 'T': o->threads = (int)arg_long(optarg, "--threads");
             if (o->threads < 0) usage_error("--threads must be >= 0");
@@ -201,10 +203,12 @@ int main(int argc, char **argv)
 
     struct replib_data D = {0};
     D.n = m.nframes; D.nv = m.nv; D.X = m.V; D.nfix = nfix; D.Rfix = nfix ? fx.V : NULL;
-    D.w = o.weights ? wc.x : NULL; D.cut = m.cut; D.gram = o.gram;
+    D.w = o.weights ? wc.x : NULL; D.cut = m.cut;
+    D.gram = o.gram == 3 ? 1 : o.gram; D.no_lowrank = o.gram == 3;
     if (replib_prepare(&D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
-    info(1, "%d frames, %d vertices, %d clips, %s back end (OpenBLAS %s), prepared in %.3f s", m.nframes, m.nv,
-         mesh_nclips(&m), D.K ? "Gram" : "direct", blas_corename(), D.prep_seconds);
+    info(1, "%d frames, %d vertices, %d clips, %s back end%s (OpenBLAS %s), prepared in %.3f s", m.nframes, m.nv,
+         mesh_nclips(&m), D.K ? "Gram" : "direct", D.lowrank ? " (exact low rank)" : "", blas_corename(),
+         D.prep_seconds);
 
     if (o.sweep) {
         FILE *out = out_open(o.output);

@@ -195,5 +195,32 @@ int main(void)
         replib_data_free(&D);
         free(X);
     }
+    /* the exact low-rank Gram matrix gives the same result as DSYRK, and
+     * full-rank data falls back to DSYRK */
+    for (int lowrank_case = 0; lowrank_case < 2; lowrank_case++) {
+        int n = 1600, nv = 100;
+        double *X = lowrank_case == 0 ? make_anim(&r, n, nv, 0) : make_anim(&r, n, nv, 0.5);
+        double E[2];
+        int rank = -1;
+        for (int nl = 0; nl < 2; nl++) {
+            struct replib_data D = {0};
+            D.n = n; D.nv = nv; D.X = X; D.gram = 1; D.no_lowrank = nl;
+            replib_prepare(&D);
+            if (nl == 0) rank = D.lowrank;
+            struct replib_opts o = {0};
+            o.d = 12; o.lambda = 2; o.restarts = 2; o.iterations = 30; o.seed = 5;
+            struct replib_result res;
+            replib_learn(&D, &o, &res);
+            E[nl] = res.energy;
+            replib_result_free(&res);
+            replib_data_free(&D);
+        }
+        if (lowrank_case == 0)
+            ok(rank == 64 && fabs(E[0] - E[1]) <= 1e-9 * E[1],
+               "replib: lowrank_gram_equals_dsyrk (rank %d, %.12g vs %.12g)", rank, E[0], E[1]);
+        else
+            ok(rank == 0 && E[0] == E[1], "replib: full_rank_falls_back_to_dsyrk (rank %d)", rank);
+        free(X);
+    }
     return tap_done();
 }
