@@ -53,6 +53,12 @@ test_expect_success 'several series: one colour each, with a legend' '
 	test_le 200 "$(pixels 44 160 44 three.ppm)" &&
 	! cmp -s a.ppm three.ppm
 '
+test_expect_success 'an empty name keeps its place in --names' '
+	plot-xy -f ppm -y 2,3 -n ",max" sweep.txt >n1.ppm &&
+	plot-xy -f ppm -y 2,3 -n "max" sweep.txt >n2.ppm &&
+	plot-xy -f ppm -y 2,3 -n "column 2,max" sweep.txt >n3.ppm &&
+	! cmp -s n1.ppm n2.ppm && test_cmp n1.ppm n3.ppm
+'
 test_expect_success 'the series is drawn where its values are: a rising line in the top right' '
 	awk "BEGIN { for (i = 0; i <= 10; i++) print i, i }" >rise.txt &&
 	plot-xy -f ppm -s 200x160 rise.txt >rise.ppm &&

@@ -42,13 +42,19 @@ struct options {
     int nnames;
 };
 
+/* split "a,,c" into {"a", "", "c"}: an empty name keeps its place (the
+ * series gets the default "column N") */
 static char **split_names(const char *s, int *n)
 {
     char *copy = strdup(s), **v = NULL;
     *n = 0;
-    for (char *tok = strtok(copy, ","); tok; tok = strtok(NULL, ",")) {
+    for (char *tok = copy;;) {
+        char *comma = strchr(tok, ',');
+        if (comma) *comma = 0;
         v = realloc(v, (*n + 1) * sizeof *v);
         v[(*n)++] = tok;
+        if (!comma) break;
+        tok = comma + 1;
     }
     return v;
 }
@@ -203,7 +209,7 @@ int main(int argc, char **argv)
             image_fill_rect(&im, (int)qx - 2, (int)qy - 2, 5, 5, col);
             px = qx; py = qy;
         }
-        const char *nm = i < o.nnames ? o.names[i] : NULL;
+        const char *nm = i < o.nnames && *o.names[i] ? o.names[i] : NULL;
         if (!nm) { snprintf(buf, sizeof buf, "column %d", o.ycols[i]); nm = buf; }
         int ly = T + 8 + i * (text_height(1) + 6);
         image_fill_rect(&im, L + pw - 150, ly + 2, 16, 3, col);
