@@ -162,4 +162,8 @@ test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage lib-assemble --bogus cyl.mesh lib_0.mesh:id.lab:p_0.map >>u.out 2>>u.err &&
 	test ! -s u.out
 '
+test_expect_success '--help and --version' '
+	lib-assemble --help >help && grep "^Usage: lib-assemble" help && grep "Example" help &&
+	lib-assemble --version >v && grep "^lib-assemble (stopmo)" v
+'
 test_done

@@ -126,4 +126,8 @@ test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage anim-diff --bogus grid.mesh grid.mesh >>u.out 2>>u.err &&
 	test ! -s u.out
 '
+test_expect_success '--help and --version' '
+	anim-diff --help >help && grep "^Usage: anim-diff" help && grep "Example" help &&
+	anim-diff --version >v && grep "^anim-diff (stopmo)" v
+'
 test_done

@@ -123,4 +123,8 @@ test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage plot-xy --bogus sweep.txt >>u.out 2>>u.err &&
 	test ! -s u.out
 '
+test_expect_success '--help and --version' '
+	plot-xy --help >help && grep "^Usage: plot-xy" help && grep "Example" help &&
+	plot-xy --version >v && grep "^plot-xy (stopmo)" v
+'
 test_done

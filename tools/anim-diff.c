@@ -17,7 +17,8 @@
 
 static const char help[] =
 "Usage: anim-diff [options] REFERENCE.mesh OTHER.mesh\n"
-"Per-frame mean and max vertex distance between two animations (same #V).\n"
+"Per-frame mean and max vertex distance between two animations (same #V),\n"
+"read in lockstep; one of them may be '-' (standard input).\n"
 "\n"
 "Output (stdout): one line per frame 'frame mean max', then summary lines\n"
 "'# mean M', '# max X', '# rms R', '# frames K' (mean and rms over all vertices\n"

@@ -25,6 +25,8 @@ static const char help[] =
 "  BASE.mesh          the segmented (seam-homog) animation: gives faces and #V\n"
 "  LIB:LABELS:MAP     one per part: library MESH (frames = pieces), per-frame\n"
 "                     piece labels (one integer per line), part->BASE vertex map\n"
+"  Seam vertices get the average of their copies; vertices no part covers keep\n"
+"  BASE's frame 0.  One input file at most may be '-' (standard input).\n"
 "\n"
 "Options:\n"
 "      --raw          raw (binary) MESH output (or STOPMO_RAW=1)\n"
