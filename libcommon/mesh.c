@@ -463,11 +463,16 @@ int mesh_writer_open(struct mesh_writer *w, FILE *f, int nv, int nf,
     if (nframes < 0) fputs("frames ?\n", f);
     else fprintf(f, "frames %d\n", nframes);
     if (raw) {
+        /* little-endian int32, in blocks (one fwrite per index was most of
+         * the cost of writing a raw stream's header) */
+        unsigned char b[4096];
+        size_t k = 0;
         for (size_t i = 0; i < (size_t)nf * 3; i++) {
             uint32_t v = (uint32_t)F[i];
-            unsigned char b[4] = {v & 255, (v >> 8) & 255, (v >> 16) & 255, v >> 24};
-            fwrite(b, 1, 4, f);
+            b[k] = v & 255; b[k + 1] = (v >> 8) & 255; b[k + 2] = (v >> 16) & 255; b[k + 3] = v >> 24;
+            if ((k += 4) == sizeof b) { fwrite(b, 1, k, f); k = 0; }
         }
+        if (k) fwrite(b, 1, k, f);
     } else {
         char line[64];
         for (int i = 0; i < nf; i++) {
