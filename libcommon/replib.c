@@ -37,7 +37,7 @@ static double wall(void)
  * N^2 3#V of DSYRK.  Ranks r = 64, 128, ... up to N / 24 are tried (so a
  * failed attempt costs at most half a DSYRK).  Returns the rank used, 0 if
  * Z is not that low-rank (K untouched), -1 on allocation failure. */
-static int gram_lowrank(const double *Z, int N, int m3, double *K)
+static int gram_lowrank(const double *Z, int N, int m3, double **Zr_out)
 {
     double zn = 0;
     for (size_t k = 0; k < (size_t)N * m3; k++) zn += Z[k] * Z[k];
@@ -87,14 +87,26 @@ static int gram_lowrank(const double *Z, int N, int m3, double *K)
         }
         free(T);
         if (en <= 1e-24 * zn) {
-            double *G = malloc(sizeof(double) * (size_t)r * r), *QG = malloc(sizeof(double) * (size_t)N * r);
-            if (!G || !QG) { free(G); free(QG); free(Q); free(B); return cm_seterr("replib: out of memory"); }
-            cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, r, m3, 1.0, B, m3, 0.0, G, r);
-            for (int i = 0; i < r; i++)
-                for (int j = 0; j < i; j++) G[(size_t)i * r + j] = G[(size_t)j * r + i];
-            cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, N, r, r, 1.0, Q, r, G, r, 0.0, QG, r);
-            cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, N, N, r, 1.0, QG, r, Q, r, 0.0, K, N);
-            free(G); free(QG); free(Q); free(B);
+            /* B^T = U R (QR of the 3#V x r matrix B^T, which is B in
+             * column-major storage): B B^T = R^T R, so Zr = Q R^T has
+             * Zr Zr^T = Q B B^T Q^T = K */
+            double *tb = malloc(sizeof(double) * r), *Zr = malloc(sizeof(double) * (size_t)N * r);
+            double *Rt = calloc((size_t)r * r, sizeof(double));
+            int lw = -1, inf = 0;
+            double qq;
+            if (!tb || !Zr || !Rt) { free(tb); free(Zr); free(Rt); free(Q); free(B); return cm_seterr("replib: out of memory"); }
+            dgeqrf_(&m3, &r, B, &m3, tb, &qq, &lw, &inf);
+            lw = (int)qq > r ? (int)qq : r;
+            double *wk = malloc(sizeof(double) * lw);
+            if (!wk) { free(tb); free(Zr); free(Rt); free(Q); free(B); return cm_seterr("replib: out of memory"); }
+            dgeqrf_(&m3, &r, B, &m3, tb, wk, &lw, &inf);
+            free(wk); free(tb);
+            if (inf != 0) { free(Zr); free(Rt); free(Q); free(B); return 0; }
+            for (int i = 0; i < r; i++)          /* Rt[k][j] = R[j][k] = B[j + k m3] for j <= k */
+                for (int j = 0; j <= i; j++) Rt[(size_t)i * r + j] = B[(size_t)j + (size_t)i * m3];
+            cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, N, r, r, 1.0, Q, r, Rt, r, 0.0, Zr, r);
+            free(Rt); free(Q); free(B);
+            *Zr_out = Zr;
             return r;
         }
         free(Q); free(B);
@@ -154,19 +166,29 @@ int replib_prepare(struct replib_data *D)
     free(sw);
     int gram = D->gram;
     if (gram < 0) gram = N <= GRAM_AUTO_MAX;
+    D->zdim = m3;
+    if (!D->no_lowrank && N >= 24 * 64) {
+        double *Zr = NULL;
+        int lr = gram_lowrank(D->Z, N, m3, &Zr);
+        if (lr < 0) { replib_data_free(D); return -1; }
+        if (lr > 0) {
+            /* exact reduced coordinates: the direct back end on r columns */
+            free(D->Z);
+            D->Z = Zr;
+            D->zdim = lr;
+            D->lowrank = lr;
+            gram = 0;
+        }
+    }
     D->gram = gram;
+    int zd = D->zdim;
     if (gram) {
         D->K = malloc(sizeof(double) * (size_t)N * N);
         if (!D->K) {
             replib_data_free(D);
             return cm_seterr("replib: out of memory for the %d x %d Gram matrix", N, N);
         }
-        int lr = D->no_lowrank ? 0 : gram_lowrank(D->Z, N, m3, D->K);
-        if (lr < 0) { replib_data_free(D); return -1; }
-        D->lowrank = lr;
-        if (lr > 0) {
-            /* K = Q (B B^T) Q^T, exact to rounding (checked) */
-        } else if (gram == 2) {
+        if (gram == 2) {
             /* single precision Gram (SSYRK, about 2x faster); costs then carry
              * ~1e-7 relative errors, the reported energies stay exact */
             float *Zf = malloc(sizeof(float) * (size_t)N * m3), *Kf = malloc(sizeof(float) * (size_t)N * N);
@@ -192,14 +214,14 @@ int replib_prepare(struct replib_data *D)
         D->Z = NULL;
     } else {
         for (int g = 0; g < N; g++) {
-            const double *z = D->Z + (size_t)g * m3;
-            D->zz[g] = cblas_ddot(m3, z, 1, z, 1);
+            const double *z = D->Z + (size_t)g * zd;
+            D->zz[g] = cblas_ddot(zd, z, 1, z, 1);
         }
         for (int f = 0; f + 1 < n; f++) {
             if (!D->link[f]) continue;
-            const double *a = D->Z + (size_t)f * m3, *b = a + m3;
+            const double *a = D->Z + (size_t)f * zd, *b = a + zd;
             double s = 0;
-            for (int k = 0; k < m3; k++) s += (b[k] - a[k]) * (b[k] - a[k]);
+            for (int k = 0; k < zd; k++) s += (b[k] - a[k]) * (b[k] - a[k]);
             D->dd[f] = s;
         }
     }
@@ -393,7 +415,7 @@ static int work_init(struct work *w, const struct replib_data *D, int d)
     w->H = calloc(n * d, sizeof(double));
     w->c = calloc(n, sizeof(double));
     if (D->K) w->C = malloc(sizeof(double) * (size_t)d * N);
-    else w->Rw = malloc(sizeof(double) * (size_t)d * D->m3);
+    else w->Rw = malloc(sizeof(double) * (size_t)d * D->zdim);
     if (!w->P || !w->Q || !w->U || !w->T || !w->H || !w->c || !(D->K ? (void *)w->C : (void *)w->Rw)) {
         work_free(w);
         return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, d);
@@ -443,7 +465,7 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
 
 static int compute_costs(const struct replib_data *D, const struct lstate *s, double mu, struct work *w)
 {
-    int N = D->N, n = D->n, d = w->d, m3 = D->m3;
+    int N = D->N, n = D->n, d = w->d, m3 = D->zdim;
     if (D->K) {
         if (gram_costs(D, s, w) < 0) return -1;
     } else {
@@ -499,8 +521,9 @@ static double label_step(struct work *w, enum replib_method m, int *l, int have_
     return chain_swap(&w->ch, l, 0);
 }
 
-/* k-means++ seeding on the Gram matrix (fixed pieces count as centers);
- * Forgy (distinct random frames) in the direct back end. */
+/* k-means++ seeding on the Gram matrix or on low-rank coordinates (fixed
+ * pieces count as centers); Forgy (distinct random frames) in the direct
+ * back end on full coordinates, where distances would cost a GEMM each. */
 static int seed_pieces(const struct replib_data *D, int d, struct rng *r, struct lstate *s)
 {
     int n = D->n, N = D->N, nfix = D->nfix;
@@ -510,15 +533,18 @@ static int seed_pieces(const struct replib_data *D, int d, struct rng *r, struct
     if (!mind || !used) { free(mind); free(used); return cm_seterr("replib: out of memory"); }
     for (int f = 0; f < n; f++) mind[f] = INFINITY;
     const double *K = D->K;
-#define DIST(f, g) (D->zz[f] + D->zz[g] - 2 * K[(size_t)(f) * N + (g)])
+    int zd = D->zdim, useZ = !K && D->Z && zd <= 512;
+    int K_ = K || useZ;
+#define DIST(f, g) (D->zz[f] + D->zz[g] - 2 * (K ? K[(size_t)(f) * N + (g)] : \
+                    cblas_ddot(zd, D->Z + (size_t)(f) * zd, 1, D->Z + (size_t)(g) * zd, 1)))
     for (int a = 0; a < d; a++) {
         int g;
         if (a < nfix) g = n + a;
         else {
             double tot = 0;
-            if (K && a > 0)
+            if (K_ && a > 0)
                 for (int f = 0; f < n; f++) if (!used[f]) tot += mind[f] > 0 ? mind[f] : 0;
-            if (K && a > 0 && tot > 0) {
+            if (K_ && a > 0 && tot > 0) {
                 double u = rng_uniform(r) * tot;
                 g = -1;
                 for (int f = 0; f < n; f++) {
@@ -538,7 +564,7 @@ static int seed_pieces(const struct replib_data *D, int d, struct rng *r, struct
             used[g] = 1;
         }
         s->src[a] = g;
-        if (K)
+        if (K_)
             for (int f = 0; f < n; f++) {
                 double dv = DIST(f, g);
                 if (dv < mind[f]) mind[f] = dv;

@@ -55,11 +55,12 @@ struct replib_data {
     int m3;                     /* 3#V */
     unsigned char *link;        /* n: link[f] = 1 if f, f+1 are in one clip */
     double *mean;               /* 3#V mean frame */
-    double *Z;                  /* N by 3#V centered weighted rows (direct back end only) */
+    double *Z;                  /* N by zdim centered weighted rows (direct back end only) */
+    int zdim;                   /* 3#V, or the rank r of the exact low-rank coordinates */
     double *K;                  /* N by N Gram matrix (Gram back end only) */
     double *zz;                 /* N squared norms |z_g|^2 */
     double *dd;                 /* n: |z_{f+1} - z_f|^2 (0 where not linked) */
-    int lowrank;                /* rank r if K came from the exact low-rank path, else 0 */
+    int lowrank;                /* rank r if Z holds exact low-rank coordinates (Z Z^T = K), else 0 */
     double prep_seconds;        /* time spent in replib_prepare */
 };
 
