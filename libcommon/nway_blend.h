@@ -1,0 +1,46 @@
+/* nway_blend.h -- N-way as-rigid-as-possible blending of compatible 2D
+ * meshes (Baxter, Barla, Anjyo, N-way morphing Sec. 4.2; Alexa et al. 2000).
+ *
+ * For every triangle t and shape i, A_ti = R(alpha_ti) S_ti maps the base
+ * triangle onto shape i (polar2).  Angles are unwrapped consistently: a
+ * breadth-first walk over the triangle adjacency adds multiples of 2 pi so
+ * neighbouring triangles differ by less than pi.  For weights w:
+ *
+ *   alpha_t(w) = sum_i w_i alpha_ti      (always the raw weights)
+ *   S_t(w)     = sum_i w'_i S_ti         (w' = shear-limited weights, or w)
+ *   A_t(w)     = R(alpha_t(w)) S_t(w)
+ *
+ * and the vertices minimize sum_t area_t || J_t(V) - A_t(w) ||_F^2 with one
+ * vertex fixed (translation), J_t(V) the gradient of the map from the base
+ * triangle: a Laplacian system factored once (quad_solver), solved per
+ * frame for x and y.
+ */
+#ifndef CM_NWAY_BLEND_H
+#define CM_NWAY_BLEND_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct nway_blend;
+
+/* X: N arrays of #V by 3 positions (only x, y are used); F: #F by 3;
+ * base: the base pose index.  Fails on a degenerate base triangle. */
+struct nway_blend *nway_blend_new(double *const *X, int N, int nv, const int *F, int nf, int base);
+/* Blend with weights w (N); ws: weights for the stretch part (NULL = w);
+ * anchor: position (2) of the fixed vertex 0; out: #V by 3 (z = 0). */
+int nway_blend_eval(struct nway_blend *B, const double *w, const double *ws, const double anchor[2],
+                    double *out);
+void nway_blend_free(struct nway_blend *B);
+
+/* Hermite smoothstep phi(t, a, b): 0 below a, 1 above b, 3u^2 - 2u^3 between. */
+double hermite_step(double t, double a, double b);
+/* Shear limiting: w'_i = phi(w_i) / sum_j phi(w_j), phi = hermite_step(., 0, 1). */
+void shear_limit_weights(const double *w, int N, double *wl);
+/* Texture weights: w*_i = sigma phi(w'_i, sigma/2, 1 - sigma/2) + (1 - sigma) w'_i,
+ * normalized (w' = shear-limited weights). */
+void texture_weights(const double *w, int N, double sigma, double *wt);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
