@@ -33,7 +33,7 @@ run() { # name V frames d paper_s
                 v["per_iteration_s"], v["energy"], paper, paper / t, paper / (v["cpu_s"] / 2)
             printf "labels %s: dp %s energy in %s s | baseline alpha-expansion %s energy in %s s | ratio %.4f energy, %.1f time\n",
                 name, v["dp_energy"], v["dp_s"], v["expansion_energy"], v["expansion_s"],
-                v["expansion_energy"] / v["dp_energy"], v["expansion_s"] / (v["dp_s"] > 0 ? v["dp_s"] : 1e-9)
+                v["expansion_energy"] / v["dp_energy"], v["expansion_s"] / (v["dp_s"] > 1e-6 ? v["dp_s"] : 1e-6)
         }'
 }
 run oldman 21484 260 20 1

@@ -108,7 +108,7 @@ int main(int argc, char **argv)
     double tdp, texp;
     double Edp = replib_label_timed(&L, 2, REPLIB_DP, l, NULL, NULL, &tdp);
     double Eexp = replib_label_timed(&L, 2, REPLIB_EXPANSION, l, NULL, NULL, &texp);
-    printf("dp_energy=%.10g dp_s=%.4f expansion_energy=%.10g expansion_s=%.4f\n", Edp, tdp, Eexp, texp);
+    printf("dp_energy=%.10g dp_s=%.6f expansion_energy=%.10g expansion_s=%.6f\n", Edp, tdp, Eexp, texp);
     free(l);
     replib_data_free(&L);
     replib_result_free(&res);

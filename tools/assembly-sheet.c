@@ -82,9 +82,9 @@ int main(int argc, char **argv)
     int np = argc - optind;
     if (np < 1) usage_error("expected at least one LABELS file");
     char **name = NULL, **solid = NULL;
-    int k;
-    if (names && (k = split(names, &name)) != np) usage_error("--names: %d names for %d parts", k, np);
-    if (solids && (k = split(solids, &solid)) != np) usage_error("--solids: %d files for %d parts", k, np);
+    int nlist;
+    if (names && (nlist = split(names, &name)) != np) usage_error("--names: %d names for %d parts", nlist, np);
+    if (solids && (nlist = split(solids, &solid)) != np) usage_error("--solids: %d files for %d parts", nlist, np);
 
     int **L = malloc(sizeof(int *) * np), *npieces = calloc(np, sizeof(int)), n = -1;
     double **vol = calloc(np, sizeof(double *));
