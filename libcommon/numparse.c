@@ -296,8 +296,23 @@ const char *parse_long(const char *s, long *out)
  * e < -4 or e >= P.  Returns the length. */
 static int layout_g(char *buf, int neg, uint64_t N, int P, int e)
 {
-    char d[24];
-    for (int i = P - 1; i >= 0; i--) { d[i] = (char)('0' + N % 10); N /= 10; }
+    /* the P digits of N: two independent halves of 8 digits, two digits
+     * per step (the plain writer spends most of its time here) */
+    static const char dig2[201] =
+        "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+        "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+        "8081828384858687888990919293949596979899";
+    char t[24];
+    uint32_t lo = (uint32_t)(N % 100000000), mid = (uint32_t)(N / 100000000 % 100000000);
+    uint32_t hi = (uint32_t)(N / 10000000000000000ULL);      /* < 10 for P <= 17 */
+    for (int i = 7; i > 0; i -= 2) {
+        memcpy(t + 16 + i - 1, dig2 + 2 * (lo % 100), 2);
+        memcpy(t + 8 + i - 1, dig2 + 2 * (mid % 100), 2);
+        lo /= 100;
+        mid /= 100;
+    }
+    t[7] = (char)('0' + hi % 10);
+    const char *d = t + 24 - P;
     int nd = P;
     while (nd > 1 && d[nd - 1] == '0') nd--;
     char *o = buf;
@@ -328,35 +343,48 @@ static int layout_g(char *buf, int neg, uint64_t N, int P, int e)
  * rounded to a P-digit integer, and every candidate is verified with
  * parse_double.  Returns 0 when no candidate verified (near-ties of the
  * scaling; the caller then asks snprintf). */
+/* a * 10^s in extended precision: one rounding for |s| <= 27, two up to
+ * 54, powl beyond (all candidates are verified by reading them back) */
+static long double scale10(long double a, int s)
+{
+    if (s >= 0 && s <= 27) return a * pow10tabl[s];
+    if (s < 0 && s >= -27) return a / pow10tabl[-s];
+    if (s > 27 && s <= 54) return a * pow10tabl[27] * pow10tabl[s - 27];
+    if (s < -27 && s >= -54) return a / pow10tabl[27] / pow10tabl[-s - 27];
+    return a * powl(10.0L, (long double)s);
+}
+
 static int format_fast(char *buf, double x)
 {
     long double a = fabs(x);
-    int e2;
-    frexp(x, &e2);
-    int e = (int)floor((e2 - 1) * 0.30102999566398120);   /* ~floor(log10 |x|) */
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    int e2 = (int)((bits >> 52) & 0x7ff) - 1022;            /* frexp's exponent */
+    int e = ((e2 - 1) * 78913) >> 18;                     /* ~floor(log10 |x|) */
     if (e < -280 || e > 280)
         return 0;
+    /* y = |x| scaled to 17 integer digits, once */
+    long double y = scale10(a, 16 - e);
+    if (y >= pow10tabl[17]) { e++; y = scale10(a, 16 - e); }
+    else if (y < pow10tabl[16]) { e--; y = scale10(a, 16 - e); }
+    if (y >= pow10tabl[17] || y < pow10tabl[16])
+        return 0;
+    /* a padded scratch buffer, so the check reads with parse_double_padded */
+    char tmp[64] = {0};
+    uint64_t N17 = (uint64_t)llrintl(y);
     for (int P = 15; P <= 17; P++) {
-        int s = P - 1 - e, ee = e;
-        long double y;
-        for (int tries = 0; tries < 2; tries++) {
-            if (s >= 0 && s <= 27) y = a * pow10tabl[s];
-            else if (s < 0 && s >= -27) y = a / pow10tabl[-s];
-            else y = a * powl(10.0L, (long double)s);
-            if (y >= pow10tabl[P]) { s--; ee++; continue; }       /* e was low */
-            if (y < pow10tabl[P - 1]) { s++; ee--; continue; }    /* e was high */
-            break;
-        }
-        if (y >= pow10tabl[P] || y < pow10tabl[P - 1])
-            return 0;
-        uint64_t N = (uint64_t)llrintl(y);
+        /* the shorter candidates round the 17-digit integer (a rare
+         * double rounding only costs the verification below) */
+        uint64_t N = P == 17 ? N17 : P == 16 ? (N17 + 5) / 10 : (N17 + 50) / 100;
+        int ee = e;
         if ((long double)N >= pow10tabl[P]) { N /= 10; ee++; }
-        int n = layout_g(buf, x < 0, N, P, ee);
+        int n = layout_g(tmp, x < 0, N, P, ee);
         double back;
-        const char *end = parse_double(buf, &back);
-        if (end && *end == 0 && back == x)
+        const char *end = parse_double_padded(tmp, &back);
+        if (end && *end == 0 && back == x) {
+            memcpy(buf, tmp, (size_t)n + 1);
             return n;
-        e = ee;
+        }
     }
     return 0;
 }
