@@ -792,7 +792,7 @@ static int split_pass(struct compat *c, double target, const double *dg)
 /* one Laplacian smoothing pass of interior vertices, per shape; a move is
  * kept only if no incident triangle inverts and the smallest angle of the
  * vertex's star does not decrease */
-static void smooth_pass(struct compat *c, const struct topology *t)
+static void smooth_pass(struct compat *c, const struct topology *t, int relaxed)
 {
     for (int s = 0; s < c->N; s++) {
         double *X = c->X[s];
@@ -816,7 +816,7 @@ static void smooth_pass(struct compat *c, const struct topology *t)
                     if (orient2(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) <= 0) nq = -1;
                     else nq = fmin(nq, tri_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]));
                 }
-                if (nq >= old) break;
+                if (nq >= old || (nq > 0 && nq > 0.5 * old && relaxed)) break;
                 X[2 * v] = ox; X[2 * v + 1] = oy;
                 cx = 0.5 * (cx + ox); cy = 0.5 * (cy + oy);
             }
@@ -830,15 +830,21 @@ int compat_improve(struct compat *c, double target, int iters)
     for (int s = 0; s < c->N; s++) dg[s] = diag2(c->X[s], c->nb);
     if (target > 0)
         for (int r = 0; r < 30; r++) {
+            /* flips and a little smoothing before every split round, so new
+             * vertices spread out instead of piling up along slivers */
+            for (int k = 0; k < 20; k++) if (flip_pass(c) <= 0) break;
+            struct topology t;
+            if (topology_build(c->F, c->nf, c->nv, &t) < 0) { free(dg); return -1; }
+            for (int k = 0; k < 3; k++) smooth_pass(c, &t, 1);
+            topology_free(&t);
             int n = split_pass(c, target, dg);
             if (n < 0) { free(dg); return -1; }
-            for (int k = 0; k < 20; k++) if (flip_pass(c) <= 0) break;
             if (n == 0) break;
         }
     for (int it = 0; it < iters; it++) {
         struct topology t;
         if (topology_build(c->F, c->nf, c->nv, &t) < 0) { free(dg); return -1; }
-        for (int k = 0; k < 5; k++) smooth_pass(c, &t);
+        for (int k = 0; k < 5; k++) smooth_pass(c, &t, it < iters / 2);
         topology_free(&t);
         int nfl = 0;
         for (int k = 0; k < 20; k++) { int x = flip_pass(c); if (x < 0) { free(dg); return -1; } nfl += x; if (!x) break; }
