@@ -52,7 +52,7 @@ if [ -e "$DATA/scans/camel-gallop-02.off" ]; then
     echo "nricp --init-deform camel 01->02: $hi % in $ti s CPU | baseline plain nricp $h % in $t s | ratio $(ratio "$hi" "$h")"
     if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
         mesh-import "$DATA/scans/camel-gallop-05.off" >"$T/c5.mesh" || exit 1
-        LM5="$ROOT/examples/clay/landmarks-01-05.txt"
+        LM5="$ROOT/examples/clay/landmarks-01-05-direct.txt"
         nricp --init-deform -l "$LM5" "$T/c1.mesh" "$T/c5.mesh" >"$T/r5.mesh" &&
         nricp --nearest-vertex --backward 0 -l "$LM5" "$T/c1.mesh" "$T/c5.mesh" >"$T/b5.mesh" || exit 1
         h5=$(mesh-metrics --no-header -r "$T/c5.mesh" "$T/r5.mesh" | awk '{ print 100 * $3 }')
