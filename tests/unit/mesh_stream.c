@@ -1,0 +1,110 @@
+/* mesh_stream: plain_round_trip_is_bit_exact (random coordinates of every
+ * magnitude, -0, values that are ties for the fast parser, lines across
+ * buffer refills), raw_round_trip, frames_unknown, cut_marks, reader
+ * return codes, whole-mesh read/write */
+#include "mesh.h"
+#include "cm_error.h"
+#include "rng.h"
+#include "tap.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static double random_coord(struct rng *r)
+{
+    switch (rng_int(r, 8)) {
+    case 0: return 0.0;
+    case 1: return -0.0;
+    case 2: return (double)rng_int(r, 1000) / 1000;              /* short decimals */
+    case 3: return rng_normal(r) * 1e-19;                         /* roundoff noise */
+    case 4: return rng_normal(r) * pow(10, rng_int(r, 60) - 30);  /* any magnitude */
+    case 5: { uint64_t u = rng_u64(r); double x; memcpy(&x, &u, 8); return isfinite(x) ? x : 1.5; }
+    case 6: return 0.02164619265807541;                           /* a parser tie */
+    default: return rng_uniform(r) * 2 - 1;
+    }
+}
+
+int main(void)
+{
+    struct rng r;
+    rng_seed(&r, 3);
+    int nv = 40000, nf = 2, nframes = 4;   /* > 1 MB per plain frame: buffer refills */
+    int F[6] = {0, 1, 2, 2, 1, 3};
+    double *V = malloc(sizeof *V * 3 * nv * nframes);
+    for (long i = 0; i < 3L * nv * nframes; i++) V[i] = random_coord(&r);
+    char path[] = "/tmp/stopmo-mesh-XXXXXX";
+    int fd = mkstemp(path);
+    if (fd < 0) { printf("Bail out! mkstemp\n"); return 1; }
+    close(fd);
+
+    for (int raw = 0; raw <= 1; raw++) {
+        for (int known = 0; known <= 1; known++) {
+            FILE *f = fopen(path, "wb");
+            struct mesh_writer w;
+            int ok_w = mesh_writer_open(&w, f, nv, nf, F, known ? nframes : -1, raw) == 0;
+            for (int k = 0; k < nframes; k++)
+                ok_w &= mesh_writer_frame(&w, V + 3L * nv * k, k == 2) == 0;
+            ok_w &= mesh_writer_close(&w) == 0;
+            ok_w &= fclose(f) == 0;
+            ok(ok_w, "mesh_writer: %s, frames %s", raw ? "raw" : "plain", known ? "known" : "?");
+
+            struct mesh_reader rd;
+            int rc = mesh_reader_open(&rd, path);
+            ok(rc == 0 && rd.nv == nv && rd.nf == nf && rd.raw == raw &&
+               rd.nframes == (known ? nframes : -1) && !memcmp(rd.F, F, sizeof F),
+               "mesh_reader_open: header and faces (%s)", rc ? cm_errmsg() : "");
+            double *X = malloc(sizeof *X * 3 * nv);
+            int frames = 0, exact = 1, cuts_ok = 1, cut;
+            while ((rc = mesh_reader_next(&rd, X, &cut)) == 1) {
+                exact &= !memcmp(X, V + 3L * nv * frames, sizeof *X * 3 * nv);
+                cuts_ok &= cut == (frames == 2);
+                frames++;
+            }
+            ok(rc == 0 && frames == nframes, "mesh_reader_next: %d frames, then 0 (%s)", frames,
+               rc ? cm_errmsg() : "");
+            ok(exact, "%s round trip is bit-exact (every magnitude, -0, ties)",
+               raw ? "raw" : "plain");
+            ok(cuts_ok, "cut marks survive (%s)", raw ? "raw" : "plain");
+            mesh_reader_close(&rd);
+            free(X);
+        }
+    }
+
+    /* whole-mesh interface */
+    struct mesh m;
+    ok(mesh_read(path, &m) == 0 && m.nframes == nframes && mesh_nclips(&m) == 2 &&
+       !memcmp(mesh_frame(&m, 3), V + 3L * nv * 3, sizeof(double) * 3 * nv),
+       "mesh_read: frames, clips, positions");
+    FILE *f = fopen(path, "wb");
+    ok(mesh_write(f, &m, 0) == 0, "mesh_write");
+    fclose(f);
+    mesh_free(&m);
+    ok(mesh_read(path, &m) == 0 && !memcmp(m.V, V, sizeof(double) * 3 * nv * nframes),
+       "mesh_write/mesh_read: bit-exact");
+    mesh_free(&m);
+
+    /* a truncated plain stream: the reader reports it, names the file */
+    f = fopen(path, "wb");
+    fputs("MESH 1\nvertices 2\nfaces 0\nframes 2\nframe 0\n1 2 3\n4 5 6\nframe 1\n1 2 3\n", f);
+    fclose(f);
+    ok(mesh_read(path, &m) < 0 && strstr(cm_errmsg(), path) && strstr(cm_errmsg(), "truncated"),
+       "mesh_read: truncated frame reported (%s)", cm_errmsg());
+    /* a writer that is given too many frames refuses */
+    f = fopen(path, "wb");
+    struct mesh_writer w;
+    double x3[3] = {0, 0, 0};
+    mesh_writer_open(&w, f, 1, 0, NULL, 1, 0);
+    mesh_writer_frame(&w, x3, 0);
+    ok(mesh_writer_frame(&w, x3, 0) < 0, "mesh_writer_frame: more than announced refused");
+    fclose(f);
+    f = fopen(path, "wb");
+    mesh_writer_open(&w, f, 1, 0, NULL, 2, 0);
+    mesh_writer_frame(&w, x3, 0);
+    ok(mesh_writer_close(&w) < 0, "mesh_writer_close: fewer than announced reported");
+    fclose(f);
+    unlink(path);
+    free(V);
+    return tap_done();
+}
