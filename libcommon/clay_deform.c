@@ -16,7 +16,7 @@ struct clay_deform {
     int *E;              /* #E by 2 */
     int *VVs, *VVe;      /* CSR of incident edges per vertex */
     int *H;
-    double lambda, vol0;
+    double lambda, vol0, eps;
     struct spd_solver *S;
 };
 
@@ -84,7 +84,10 @@ struct clay_deform *clay_deform_new(const double *V, const int *F, int nv, int n
         triplets_add(&T, i, i, w); triplets_add(&T, j, j, w);
         triplets_add(&T, i, j, -w); triplets_add(&T, j, i, -w);
     }
-    double eps = 1e-9 * mean;
+    /* a weak pull toward the previous iterate keeps pieces without handles
+     * determined (and where they are) */
+    double eps = 1e-6 * mean;
+    c->eps = eps;
     for (int v = 0; v < nv; v++) triplets_add(&T, v, v, eps);
     for (int h = 0; h < nh; h++) triplets_add(&T, H[h], H[h], lambda);
     cholmod_sparse *A = triplets_to_sparse(&T, 0);
@@ -134,6 +137,7 @@ int clay_deform_solve(struct clay_deform *c, const double *T, int iters, int kee
         }
         for (int h = 0; h < c->nh; h++)
             for (int r = 0; r < 3; r++) B[3 * c->H[h] + r] += c->lambda * T[3 * h + r];
+        for (int v = 0; v < 3 * nv; v++) B[v] += c->eps * X[v];
         if (spd_solve(c->S, B, X, 3) < 0) { rc = -1; break; }
         if (keep_volume && c->vol0 != 0) {
             /* restore the enclosed volume: move along the normals */

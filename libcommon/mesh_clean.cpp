@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -82,6 +83,14 @@ extern "C" int mesh_clean(const double *V, int nv, const int *F, int nf,
         PMP::orient_polygon_soup(pts, polys);
         Mesh m;
         PMP::polygon_soup_to_polygon_mesh(pts, polys, m);
+        if (o->min_component > 0) {
+            std::size_t nfm = m.number_of_faces();
+            std::size_t thr = (std::size_t)std::ceil(o->min_component * (double)nfm);
+            if (thr > 1)
+                rep->components_removed = (int)PMP::keep_large_connected_components(m, thr);
+            m.collect_garbage();
+            if (m.number_of_faces() == 0) return cm_seterr("no faces left after removing small components");
+        }
         // 4: holes
         std::vector<Mesh::Halfedge_index> borders;
         PMP::extract_boundary_cycles(m, std::back_inserter(borders));

@@ -8,6 +8,8 @@
  *      orient_polygon_soup: non-manifold vertices are split) and becomes a
  *      halfedge mesh; unreferenced vertices disappear, so vertex indices
  *      change;
+ *   3b. connected components with fewer than min_component of the faces
+ *      (debris, and pieces split off at non-manifold vertices) are removed;
  *   4. holes (boundary loops) with at most max_hole edges are closed by
  *      PMP::triangulate_refine_and_fair_hole;
  *   5. optionally, isotropic remeshing to a target edge length
@@ -24,11 +26,14 @@ struct mesh_clean_opts {
     int max_hole;          /* largest hole to close, in boundary edges (<= 0: any) */
     double edge_length;    /* > 0: isotropic remeshing to this edge length */
     int iterations;        /* remeshing iterations (default 3) */
+    double min_component;  /* remove components with fewer faces than this fraction of
+                              all faces (e.g. 0.01; 0 keeps all) */
 };
 
 struct mesh_clean_report {
     int degenerate, duplicate, fins;   /* faces removed in steps 1-2 */
     int holes_filled, holes_left;      /* boundary loops after step 3 */
+    int components_removed;            /* small pieces removed */
     int nv, nf;                        /* result sizes */
 };
 

@@ -14,7 +14,7 @@ test_expect_success 'fins, duplicates and degenerate faces are removed, the hole
 	     /^f / && n == 0 { print; print; print \"f\", \$2, \$2, \$3; n++; next }
 	     /^f / && n == 1 { print; print \"f\", \$2, \$4, \$3; n++; next } { print }" s.mesh >dirty.mesh &&
 	mesh-clean -v dirty.mesh >c.mesh 2>err &&
-	cat err && grep -q "1 degenerate, 1 duplicate, 2 fin faces; filled 1 holes, 0 left" err &&
+	cat err && grep -q "1 degenerate, 1 duplicate, 2 fin faces, 0 small pieces; filled 1 holes, 0 left" err &&
 	mesh-info c.mesh >info.txt && grep -q "^closed yes" info.txt && grep -q "^manifold yes" info.txt
 '
 test_expect_success '--no-fill keeps holes, --max-hole bounds them' '

@@ -21,6 +21,7 @@ static const char help[] =
 "Options:\n"
 "      --no-fill          keep the holes\n"
 "      --max-hole N       close only holes with at most N boundary edges (default: all)\n"
+"      --min-component F  remove pieces with fewer than F times all faces (default 0.01)\n"
 "  -r, --remesh L         isotropic remeshing to edge length L (model units)\n"
 "  -R, --remesh-rel R     ... to R times the bounding-box diagonal\n"
 "      --iterations N     remeshing iterations (default 3)\n"
@@ -35,19 +36,20 @@ static const char help[] =
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
-    enum { O_NOFILL = 256, O_MAXHOLE, O_ITER, O_RAW, O_VERSION };
+    enum { O_NOFILL = 256, O_MAXHOLE, O_ITER, O_RAW, O_VERSION, O_MINC };
     static const struct option lo[] = {
-        {"no-fill", 0, 0, O_NOFILL}, {"max-hole", 1, 0, O_MAXHOLE}, {"remesh", 1, 0, 'r'},
+        {"no-fill", 0, 0, O_NOFILL}, {"max-hole", 1, 0, O_MAXHOLE}, {"min-component", 1, 0, O_MINC}, {"remesh", 1, 0, 'r'},
         {"remesh-rel", 1, 0, 'R'}, {"iterations", 1, 0, O_ITER}, {"output", 1, 0, 'o'},
         {"raw", 0, 0, O_RAW}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
-    struct mesh_clean_opts o = {1, 0, 0, 3};
+    struct mesh_clean_opts o = {1, 0, 0, 3, 0.01};
     double rel = 0;
     const char *output = NULL;
     int raw = 0, c;
     while ((c = getopt_long(argc, argv, "r:R:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case O_NOFILL: o.fill_holes = 0; break;
+        case O_MINC: o.min_component = arg_double(optarg, "--min-component"); break;
         case O_MAXHOLE: o.max_hole = (int)arg_long(optarg, "--max-hole"); break;
         case 'r': o.edge_length = arg_double(optarg, "--remesh"); break;
         case 'R': rel = arg_double(optarg, "--remesh-rel"); break;
@@ -62,6 +64,7 @@ int main(int argc, char **argv)
     }
     if (o.edge_length < 0 || rel < 0) usage_error("remeshing edge length must be positive");
     if (o.iterations < 1) usage_error("--iterations must be >= 1");
+    if (o.min_component < 0 || o.min_component >= 1) usage_error("--min-component must be in [0, 1)");
     if (argc - optind > 1) usage_error("expected at most one input");
     const char *in = optind < argc ? argv[optind] : "-";
     struct mesh m;
@@ -75,8 +78,9 @@ int main(int argc, char **argv)
     struct mesh_clean_report r;
     if (mesh_clean(m.V, m.nv, m.F, m.nf, &o, &V, &nv, &F, &nf, &r) < 0)
         die("cannot clean '%s': %s", in, cm_errmsg());
-    info(1, "removed %d degenerate, %d duplicate, %d fin faces; filled %d holes, %d left; "
-         "%d vertices, %d faces", r.degenerate, r.duplicate, r.fins, r.holes_filled, r.holes_left, nv, nf);
+    info(1, "removed %d degenerate, %d duplicate, %d fin faces, %d small pieces; filled %d holes, "
+         "%d left; %d vertices, %d faces", r.degenerate, r.duplicate, r.fins, r.components_removed,
+         r.holes_filled, r.holes_left, nv, nf);
     struct mesh out = {0};
     out.nv = nv; out.nf = nf; out.nframes = 1; out.V = V; out.F = F;
     unsigned char cut = 0;
