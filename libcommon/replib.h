@@ -105,7 +105,10 @@ struct replib_result {
     double label_seconds;       /* of which in label steps */
 };
 
-/* Block coordinate descent with restarts.  Returns 0 or -1 (cm_errmsg). */
+/* Block coordinate descent with restarts, run on o->threads threads (BLAS
+ * is set to one thread meanwhile: openblas_set_num_threads is global, so
+ * do not call this from several threads at once).  Returns 0 or -1
+ * (cm_errmsg). */
 int replib_learn(const struct replib_data *D, const struct replib_opts *o,
                  struct replib_result *res);
 void replib_result_free(struct replib_result *res);
