@@ -13,6 +13,7 @@
 #include "rng.h"
 #include "blas_tune.h"
 #include <sys/resource.h>
+#include <sys/mman.h>
 #include <cblas.h>
 #include <math.h>
 #include <stdio.h>
@@ -57,7 +58,9 @@ int main(int argc, char **argv)
     rng_seed(&r, (uint64_t)seed);
     double t0 = wall();
     double *S = malloc(sizeof(double) * (size_t)B * m3), *W = malloc(sizeof(double) * (size_t)n * B);
-    double *X = malloc(sizeof(double) * (size_t)n * m3);
+    double *X = NULL;
+    size_t xb = ((sizeof(double) * (size_t)n * m3) + ((size_t)2 << 20) - 1) & ~(((size_t)2 << 20) - 1);
+    if (posix_memalign((void **)&X, (size_t)2 << 20, xb) == 0) madvise(X, xb, MADV_HUGEPAGE);
     unsigned char *cut = calloc(n, 1);
     if (!S || !W || !X || !cut) { fprintf(stderr, "dict-bench: out of memory\n"); return 1; }
     /* smooth blend shapes: low-frequency functions of a rest position */

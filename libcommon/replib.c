@@ -10,6 +10,7 @@
 #include <time.h>
 #include <pthread.h>
 #include <unistd.h>
+#include <sys/mman.h>
 
 /* LAPACK (column-major Fortran interface, from OpenBLAS/liblapack) */
 extern int openblas_get_num_threads(void);
@@ -27,6 +28,22 @@ static double wall(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+/* Large arrays (the centered frames, the Gram matrix: up to gigabytes) on
+ * transparent huge pages when the kernel allows it: first-touch page faults
+ * of 4 KB pages cost seconds of system time per gigabyte here (measured:
+ * 4.6 s sys for the Bunny-size benchmark). */
+static void *big_alloc(size_t bytes)
+{
+    if (bytes < ((size_t)32 << 20)) return malloc(bytes);
+    void *p = NULL;
+    size_t align = (size_t)2 << 20;
+    if (posix_memalign(&p, align, (bytes + align - 1) / align * align) != 0) return NULL;
+#ifdef MADV_HUGEPAGE
+    madvise(p, (bytes + align - 1) / align * align, MADV_HUGEPAGE);
+#endif
+    return p;
+}
+
 #define GRAM_AUTO_MAX 12000   /* N above this: K would exceed ~1.1 GB; use direct */
 
 /* Exact low-rank Gram matrix.  Blend-shape animations (faces) have a small
@@ -37,27 +54,50 @@ static double wall(void)
  * N^2 3#V of DSYRK.  Ranks r = 64, 128, ... up to N / 24 are tried (so a
  * failed attempt costs at most half a DSYRK).  Returns the rank used, 0 if
  * Z is not that low-rank (K untouched), -1 on allocation failure. */
-static int gram_lowrank(const double *Z, int N, int m3, double **Zr_out)
+/* Rows i0 .. i0+nb-1 of Z (centered, weighted frames and fixed pieces)
+ * into out (nb by 3#V); sw: 3#V square roots of the weights or NULL. */
+static void z_rows(const struct replib_data *D, const double *sw, int i0, int nb, double *out)
 {
-    double zn = 0;
-    for (size_t k = 0; k < (size_t)N * m3; k++) zn += Z[k] * Z[k];
-    if (!(zn > 0)) return 0;
+    int n = D->n, m3 = D->m3;
+    const double *mu = D->mean;
+    for (int g = i0; g < i0 + nb; g++) {
+        const double *x = g < n ? D->X + (size_t)g * m3 : D->Rfix + (size_t)(g - n) * m3;
+        double *z = out + (size_t)(g - i0) * m3;
+        if (sw) for (int k = 0; k < m3; k++) z[k] = sw[k] * (x[k] - mu[k]);
+        else for (int k = 0; k < m3; k++) z[k] = x[k] - mu[k];
+    }
+}
+
+/* The low-rank test streams Z by blocks of rows (never the whole N x 3#V). */
+static int gram_lowrank(const struct replib_data *D, const double *sw, double **Zr_out)
+{
+    int N = D->N, m3 = D->m3, blk = 256;
+    double *Zb = malloc(sizeof(double) * (size_t)blk * m3);
+    if (!Zb) return cm_seterr("replib: out of memory in the low-rank Gram matrix");
+    double zn = 0;      /* |Z|_F^2, summed during the first pass */
+    int rc = 0;
     for (int r = 64; r <= N / 24 && r < m3; r *= 2) {
         double *Om = malloc(sizeof(double) * (size_t)m3 * r), *Y = malloc(sizeof(double) * (size_t)N * r);
         double *Yc = malloc(sizeof(double) * (size_t)N * r), *tau = malloc(sizeof(double) * r);
         double *B = malloc(sizeof(double) * (size_t)r * m3);
-        int blk = 256;
-        double *T = malloc(sizeof(double) * (size_t)blk * m3);
+        double *T = Zb;
         double *work = NULL;
-        if (!Om || !Y || !Yc || !tau || !B || !T) {
-            free(Om); free(Y); free(Yc); free(tau); free(B); free(T);
+        if (!Om || !Y || !Yc || !tau || !B) {
+            free(Om); free(Y); free(Yc); free(tau); free(B); free(Zb);
             return cm_seterr("replib: out of memory in the low-rank Gram matrix");
         }
         struct rng g;
         rng_seed(&g, 0x5eed0000u + (uint64_t)r);
         for (size_t k = 0; k < (size_t)m3 * r; k++) Om[k] = rng_normal(&g);
-        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, N, r, m3, 1.0, Z, m3, Om, r, 0.0, Y, r);
+        for (int i0 = 0; i0 < N; i0 += blk) {
+            int nb = N - i0 < blk ? N - i0 : blk;
+            z_rows(D, sw, i0, nb, Zb);
+            if (r == 64) zn += cblas_ddot(nb * m3, Zb, 1, Zb, 1);
+            cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nb, r, m3, 1.0, Zb, m3, Om, r, 0.0,
+                        Y + (size_t)i0 * r, r);
+        }
         free(Om);
+        if (!(zn > 0)) { free(Y); free(Yc); free(tau); free(B); break; }
         /* Q = orth(Y): LAPACK QR in column-major storage */
         for (int i = 0; i < N; i++)
             for (int j = 0; j < r; j++) Yc[(size_t)j * N + i] = Y[(size_t)i * r + j];
@@ -66,27 +106,32 @@ static int gram_lowrank(const double *Z, int N, int m3, double **Zr_out)
         dgeqrf_(&N, &r, Yc, &N, tau, &q, &lwork, &info);
         lwork = (int)q > r ? (int)q : r;
         work = malloc(sizeof(double) * lwork);
-        if (!work) { free(Y); free(Yc); free(tau); free(B); free(T); return cm_seterr("replib: out of memory"); }
+        if (!work) { free(Y); free(Yc); free(tau); free(B); free(Zb); return cm_seterr("replib: out of memory"); }
         dgeqrf_(&N, &r, Yc, &N, tau, work, &lwork, &info);
         if (info == 0) dorgqr_(&N, &r, &r, Yc, &N, tau, work, &lwork, &info);
         free(work); free(tau);
-        if (info != 0) { free(Y); free(Yc); free(B); free(T); return 0; }
+        if (info != 0) { free(Y); free(Yc); free(B); break; }
         double *Q = Y;   /* N by r row-major */
         for (int i = 0; i < N; i++)
             for (int j = 0; j < r; j++) Q[(size_t)i * r + j] = Yc[(size_t)j * N + i];
         free(Yc);
-        cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, r, m3, N, 1.0, Q, r, Z, m3, 0.0, B, m3);
+        for (int i0 = 0; i0 < N; i0 += blk) {
+            int nb = N - i0 < blk ? N - i0 : blk;
+            z_rows(D, sw, i0, nb, Zb);
+            cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, r, m3, nb, 1.0, Q + (size_t)i0 * r, r, Zb, m3,
+                        i0 ? 1.0 : 0.0, B, m3);
+        }
         /* |Z - Q B|_F^2 by blocks of rows */
         double en = 0;
         for (int i0 = 0; i0 < N; i0 += blk) {
             int nb = N - i0 < blk ? N - i0 : blk;
-            memcpy(T, Z + (size_t)i0 * m3, sizeof(double) * (size_t)nb * m3);
+            z_rows(D, sw, i0, nb, T);
             cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nb, m3, r, -1.0, Q + (size_t)i0 * r, r,
                         B, m3, 1.0, T, m3);
             for (size_t k = 0; k < (size_t)nb * m3; k++) en += T[k] * T[k];
         }
-        free(T);
         if (en <= 1e-24 * zn) {
+            free(Zb);
             /* B^T = U R (QR of the 3#V x r matrix B^T, which is B in
              * column-major storage): B B^T = R^T R, so Zr = Q R^T has
              * Zr Zr^T = Q B B^T Q^T = K */
@@ -112,7 +157,8 @@ static int gram_lowrank(const double *Z, int N, int m3, double **Zr_out)
         free(Q); free(B);
         if (en > 1e-6 * zn) break;    /* far from low rank: stop trying */
     }
-    return 0;
+    free(Zb);
+    return rc;
 }
 
 int replib_prepare(struct replib_data *D)
@@ -142,8 +188,7 @@ int replib_prepare(struct replib_data *D)
     D->mean = calloc(m3, sizeof(double));
     D->zz = calloc(N, sizeof(double));
     D->dd = calloc(n, sizeof(double));
-    D->Z = malloc(sizeof(double) * (size_t)N * m3);
-    if (!D->link || !D->mean || !D->zz || !D->dd || !D->Z) {
+    if (!D->link || !D->mean || !D->zz || !D->dd) {
         replib_data_free(D);
         return cm_seterr("replib: out of memory (%d frames x %d vertices)", n, nv);
     }
@@ -156,34 +201,34 @@ int replib_prepare(struct replib_data *D)
         if (!(sw = malloc(sizeof(double) * m3))) { replib_data_free(D); return cm_seterr("replib: out of memory"); }
         for (int i = 0; i < nv; i++) sw[3 * i] = sw[3 * i + 1] = sw[3 * i + 2] = sqrt(D->w[i]);
     }
-    for (int g = 0; g < N; g++) {
-        const double *x = g < n ? D->X + (size_t)g * m3 : D->Rfix + (size_t)(g - n) * m3;
-        double *z = D->Z + (size_t)g * m3;
-        const double *mu = D->mean;
-        if (sw) for (int k = 0; k < m3; k++) z[k] = sw[k] * (x[k] - mu[k]);
-        else for (int k = 0; k < m3; k++) z[k] = x[k] - mu[k];
-    }
-    free(sw);
     int gram = D->gram;
     if (gram < 0) gram = N <= GRAM_AUTO_MAX;
     D->zdim = m3;
     if (!D->no_lowrank && N >= 24 * 64) {
         double *Zr = NULL;
-        int lr = gram_lowrank(D->Z, N, m3, &Zr);
-        if (lr < 0) { replib_data_free(D); return -1; }
+        int lr = gram_lowrank(D, sw, &Zr);
+        if (lr < 0) { free(sw); replib_data_free(D); return -1; }
         if (lr > 0) {
             /* exact reduced coordinates: the direct back end on r columns */
-            free(D->Z);
             D->Z = Zr;
             D->zdim = lr;
             D->lowrank = lr;
             gram = 0;
         }
     }
+    if (!D->lowrank) {
+        D->Z = big_alloc(sizeof(double) * (size_t)N * m3);
+        if (!D->Z) {
+            free(sw); replib_data_free(D);
+            return cm_seterr("replib: out of memory (%d frames x %d vertices)", n, nv);
+        }
+        z_rows(D, sw, 0, N, D->Z);
+    }
+    free(sw);
     D->gram = gram;
     int zd = D->zdim;
     if (gram) {
-        D->K = malloc(sizeof(double) * (size_t)N * N);
+        D->K = big_alloc(sizeof(double) * (size_t)N * N);
         if (!D->K) {
             replib_data_free(D);
             return cm_seterr("replib: out of memory for the %d x %d Gram matrix", N, N);

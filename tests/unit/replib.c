@@ -222,5 +222,24 @@ int main(void)
             ok(rank == 0 && E[0] == E[1], "replib: full_rank_falls_back_to_dsyrk (rank %d)", rank);
         free(X);
     }
+    /* a long static animation: zero variance, the low-rank test backs off */
+    {
+        int n = 1600, nv = 10;
+        double *X = malloc(sizeof(double) * n * 3 * nv);
+        for (int f = 0; f < n; f++)
+            for (int k = 0; k < 3 * nv; k++) X[f * 3 * nv + k] = k;
+        struct replib_data D = {0};
+        D.n = n; D.nv = nv; D.X = X; D.gram = -1;
+        int rc = replib_prepare(&D);
+        struct replib_opts o = {0};
+        o.d = 3; o.lambda = 2; o.restarts = 2; o.iterations = 5;
+        struct replib_result res;
+        rc |= replib_learn(&D, &o, &res);
+        ok(rc == 0 && D.lowrank == 0 && fabs(res.energy) < 1e-9, "replib: static_animation_zero_energy (%g)",
+           rc ? -1.0 : res.energy);
+        if (!rc) replib_result_free(&res);
+        replib_data_free(&D);
+        free(X);
+    }
     return tap_done();
 }
