@@ -131,12 +131,24 @@ int main(int argc, char **argv)
 
     struct compat cp;
     unsigned char *keep = NULL;
-    if (compat_match(N, P, n, corr, C.rows, &cp, &keep) < 0)
-        die("cannot read '%s': %s", o.corr, cm_errmsg());
-    int M = cp.nb;
-    compat_simplify(&cp, o.err, keep);
-    info(1, "boundary: %d matched points, %d after simplification (error %g)", M, cp.nb, o.err);
-    if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
+    /* a triangulation can fail on near-degenerate sub-polygons (long runs
+     * of nearly collinear matched points); a slightly coarser boundary
+     * avoids them, so retry a few times with a larger simplification error */
+    double err = o.err;
+    for (int attempt = 0;; attempt++) {
+        if (compat_match(N, P, n, corr, C.rows, &cp, &keep) < 0)
+            die("cannot read '%s': %s", o.corr, cm_errmsg());
+        int M = cp.nb;
+        compat_simplify(&cp, err, keep);
+        info(1, "boundary: %d matched points, %d after simplification (error %g)", M, cp.nb, err);
+        if (compat_triangulate(&cp) == 0) break;
+        if (attempt == 5) die("%s", cm_errmsg());
+        info(1, "%s; retrying with a coarser boundary", cm_errmsg());
+        compat_free(&cp);
+        free(keep);
+        keep = NULL;
+        err = err > 0 ? 1.5 * err : 0.001;
+    }
     double ma0, q0 = compat_min_angle(&cp, &ma0);
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d stage III), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
