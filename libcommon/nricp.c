@@ -23,7 +23,7 @@ void nricp_defaults(struct nricp_params *p)
     p->backward = 1;
     p->eps = 1e-4;
     p->max_inner = 3;
-    p->relax = 0;
+    p->relax = 5;
     p->nearest_vertex = 0;
 }
 
@@ -317,6 +317,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
         for (int i = 0; i < nvs; i++)
             if (mark[i])
                 for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++) mark2[ts.VV[q]] = 1;
+        for (int l = 0; l < nl; l++) mark2[lm_src[l]] = 0;   /* landmarks (tips) stay */
         vertex_normals(P, FS, nvs, nfs, NS);
         memcpy(Pold, P, (size_t)nvs * 3 * sizeof *P);
         for (int i = 0; i < nvs; i++) {

@@ -45,7 +45,7 @@ struct nricp_params {
     int nearest_vertex;    /* baseline: correspondence = the nearest corner of the closest
                               triangle (~ the closest target vertex) instead of the closest
                               point; default 0 */
-    int relax;             /* final fold-removal sweeps (default 0: pure Amberg) */
+    int relax;             /* final fold-removal sweeps (default 5; 0: pure Amberg) */
 };
 
 void nricp_defaults(struct nricp_params *p);

@@ -41,7 +41,7 @@ static const char help[] =
 "      --backward W      weight of target->source correspondences (default 1, 0 off)\n"
 "      --max-inner N     iterations per stiffness (default 3)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
-"      --relax N         final fold-removal sweeps (default 0)\n"
+"      --relax N         final fold-removal sweeps (default 5, 0 off)\n"
 "      --eps E           inner loop tolerance, in diagonals (default 1e-4)\n"
 "      --init-deform     first deform the source toward the landmarks with\n"
 "                        clay-deform (volume kept if closed): Algorithm 3\n"
