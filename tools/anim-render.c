@@ -7,13 +7,13 @@
  * its stop-motion result), optionally titled.
  */
 #include "cm_error.h"
-#include "colormap.h"
 #include "image.h"
 #include "mesh.h"
 #include "meshcolor.h"
 #include "mesh_spool.h"
 #include "progress.h"
 #include "raster.h"
+#include "render_options.h"
 #include "tool.h"
 #include <getopt.h>
 #include <stdlib.h>
@@ -38,13 +38,7 @@ static const char help[] =
 "      --each PATTERN     write one image per frame to PATTERN (e.g. 'out_%04d.png',\n"
 "                         one integer conversion); inputs side by side\n"
 "Camera and look (as mesh-render):\n"
-"  -V, --view NAME        front, back, left, right, top, bottom, iso (default front)\n"
-"  -a, --azimuth DEG      -e, --elevation DEG      --up [-]x|y|z (default y)\n"
-"      --perspective      --fov DEG (default 30)\n"
-"  -l, --labels FILE      integer label per face or vertex: categorical colours\n"
-"      --scalars FILE     scalar per vertex or face: viridis; --range MIN,MAX\n"
-"  -w, --wireframe        --flat        --supersample N (default 2)\n"
-"  -c, --color COLOR      -b, --background COLOR   (R,G,B or #rrggbb)\n"
+RENDER_OPTIONS_HELP
 "Output:\n"
 "  -f, --format FMT       png or ppm (default from the -o extension, else png)\n"
 "  -o, --output FILE      write the sheet to FILE (atomically) instead of stdout\n"
@@ -60,34 +54,15 @@ enum { SEL_COUNT, SEL_EVERY, SEL_LIST, SEL_ALL };
 struct options {
     const char **inputs;
     int ninputs;
-    const char *output, *labels, *scalars, *format, *each, *titles_arg;
+    const char *each, *titles_arg;
     int sel, count, every, nlist, *list;
-    int columns, w, h, gap, stamp, up, perspective, wireframe, flat, ss, have_range;
-    double azimuth, elevation, fov, range[2];
-    unsigned char color[3], background[3];
+    int columns, w, h, gap, stamp;
+    struct render_options r;   /* camera and look */
     char **titles;
     int ntitles;
 };
 
-enum { O_UP = 256, O_PERSP, O_FOV, O_SCALARS, O_RANGE, O_FLAT, O_SS, O_VERSION, O_FRAMES,
-       O_EVERY, O_ALL, O_GAP, O_NOSTAMP, O_EACH, O_COMPACT };
-
-static int parse_axis(const char *s)
-{
-    static const char *names[] = {"x", "y", "z", "-x", "-y", "-z"};
-    for (int i = 0; i < 6; i++)
-        if (!strcmp(s, names[i]) || (i < 3 && s[0] == '+' && !strcmp(s + 1, names[i])))
-            return i;
-    usage_error("--up: '%s' is not x, y, z, -x, -y or -z", s);
-}
-
-static const char *format_from_name(const char *path)
-{
-    const char *dot = path ? strrchr(path, '.') : NULL;
-    if (dot && (!strcmp(dot, ".ppm") || !strcmp(dot, ".pnm")))
-        return "ppm";
-    return "png";
-}
+enum { O_VERSION = 256, O_FRAMES, O_EVERY, O_ALL, O_GAP, O_NOSTAMP, O_EACH };
 
 /* PATTERN must hold exactly one integer conversion %[0][width]d (and %%). */
 static int check_pattern(const char *p)
@@ -134,32 +109,20 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"frames", 1, 0, O_FRAMES}, {"every", 1, 0, O_EVERY}, {"count", 1, 0, 'n'},
         {"all", 0, 0, O_ALL}, {"columns", 1, 0, 'C'}, {"size", 1, 0, 's'},
         {"gap", 1, 0, O_GAP}, {"titles", 1, 0, 't'}, {"no-stamp", 0, 0, O_NOSTAMP},
-        {"each", 1, 0, O_EACH}, {"view", 1, 0, 'V'}, {"azimuth", 1, 0, 'a'},
-        {"elevation", 1, 0, 'e'}, {"up", 1, 0, O_UP}, {"perspective", 0, 0, O_PERSP},
-        {"fov", 1, 0, O_FOV}, {"labels", 1, 0, 'l'}, {"scalars", 1, 0, O_SCALARS},
-        {"range", 1, 0, O_RANGE}, {"wireframe", 0, 0, 'w'}, {"flat", 0, 0, O_FLAT},
-        {"color", 1, 0, 'c'}, {"colour", 1, 0, 'c'}, {"background", 1, 0, 'b'},
-        {"supersample", 1, 0, O_SS}, {"format", 1, 0, 'f'}, {"output", 1, 0, 'o'},
-        {"verbose", 0, 0, 'v'}, {"compact", 0, 0, O_COMPACT}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
-        {0, 0, 0, 0}};
-    struct render_style def;
-    render_style_default(&def);
+        {"each", 1, 0, O_EACH}, RENDER_OPTIONS_LONGOPTS, {"verbose", 0, 0, 'v'},
+        {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->sel = SEL_COUNT;
     o->count = 8;
     o->w = o->h = 320;
     o->gap = 4;
     o->stamp = 1;
-    o->up = 1;
-    o->fov = 30;
-    o->ss = def.ss;
-    memcpy(o->color, def.color, 3);
-    memcpy(o->background, def.background, 3);
-    const char *view = "front";
-    int have_az = 0, have_el = 0, nsel = 0;
-    double az = 0, el = 0;
+    render_options_init(&o->r);
+    int nsel = 0;
     int c;
-    while ((c = getopt_long(argc, argv, "n:C:s:t:V:a:e:l:wc:b:f:o:vh", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "n:C:s:t:" RENDER_OPTIONS_SHORTOPTS "vh", lo, NULL)) != -1) {
+        if (render_options_parse(&o->r, c, optarg))
+            continue;
         switch (c) {
         case O_FRAMES: o->sel = SEL_LIST; nsel++; o->nlist = arg_intlist(optarg, "--frames", &o->list); break;
         case O_EVERY: o->sel = SEL_EVERY; nsel++; o->every = (int)arg_long(optarg, "--every"); break;
@@ -178,39 +141,6 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 't': o->titles_arg = optarg; break;
         case O_NOSTAMP: o->stamp = 0; break;
         case O_EACH: o->each = optarg; break;
-        case 'V': view = optarg; break;
-        case 'a': az = arg_double(optarg, "--azimuth"); have_az = 1; break;
-        case 'e': el = arg_double(optarg, "--elevation"); have_el = 1; break;
-        case O_UP: o->up = parse_axis(optarg); break;
-        case O_PERSP: o->perspective = 1; break;
-        case O_FOV: o->fov = arg_double(optarg, "--fov"); break;
-        case 'l': o->labels = optarg; break;
-        case O_SCALARS: o->scalars = optarg; break;
-        case O_RANGE: {
-            char *end;
-            o->range[0] = strtod(optarg, &end);
-            if (end == optarg || *end != ',')
-                usage_error("--range: '%s' is not MIN,MAX", optarg);
-            o->range[1] = arg_double(end + 1, "--range");
-            if (!(o->range[1] > o->range[0]))
-                usage_error("--range: MAX must be greater than MIN");
-            o->have_range = 1;
-            break;
-        }
-        case 'w': o->wireframe = 1; break;
-        case O_FLAT: o->flat = 1; break;
-        case 'c':
-            if (color_parse(optarg, o->color) < 0)
-                usage_error("--color: '%s' is not R,G,B (0..255) or #rrggbb", optarg);
-            break;
-        case 'b':
-            if (color_parse(optarg, o->background) < 0)
-                usage_error("--background: '%s' is not R,G,B (0..255) or #rrggbb", optarg);
-            break;
-        case O_SS: o->ss = (int)arg_long(optarg, "--supersample"); break;
-        case 'f': o->format = optarg; break;
-        case 'o': o->output = optarg; break;
-        case O_COMPACT: image_png_small(1); break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);
         case O_VERSION: print_version_and_exit();
@@ -237,20 +167,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         usage_error("--every must be at least 1");
     if (o->gap < 0 || o->gap > 1000)
         usage_error("--gap must be in 0..1000");
-    if (camera_named_view(view, &o->azimuth, &o->elevation) < 0)
-        usage_error("unknown view '%s' (front, back, left, right, top, bottom, iso)", view);
-    if (have_az) o->azimuth = az;
-    if (have_el) o->elevation = el;
-    if (o->elevation < -90 || o->elevation > 90)
-        usage_error("--elevation must be in -90..90");
-    if (!(o->fov > 1 && o->fov < 170))
-        usage_error("--fov must be in 1..170 degrees");
-    if (o->ss < 1 || o->ss > 8)
-        usage_error("--supersample must be in 1..8");
-    if (o->labels && o->scalars)
-        usage_error("--labels and --scalars exclude each other");
-    if (o->have_range && !o->scalars)
-        usage_error("--range needs --scalars");
+    render_options_check(&o->r);
     if (o->titles_arg) {
         o->titles = split_titles(o->titles_arg, &o->ntitles);
         if (o->ntitles != o->ninputs)
@@ -260,13 +177,10 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->each) {
         if (check_pattern(o->each) < 0)
             usage_error("--each: '%s' needs exactly one integer conversion like %%04d", o->each);
-        if (o->output)
+        if (o->r.output)
             usage_error("--each and --output exclude each other");
     }
-    if (!o->format)
-        o->format = format_from_name(o->each ? o->each : o->output);
-    if (strcmp(o->format, "png") && strcmp(o->format, "ppm"))
-        usage_error("--format: '%s' is not png or ppm", o->format);
+    render_options_format(&o->r, o->each ? o->each : o->r.output);
 }
 
 /* One input.  Memory mode keeps the chosen frames; streaming mode (one
@@ -468,15 +382,15 @@ static void render_tile(const struct options *o, struct input *in, int i,
                         const struct camera *cam, struct render_style *st,
                         const struct mesh_colors *mc, const char *label, struct image *tile)
 {
-    if (o->labels || o->scalars)
+    if (o->r.labels || o->r.scalars)
         mesh_colors_apply(mc, st);
     if (raster_render(get_frame(in, i), in->F, in->nv, in->nf, cam, st, o->w, o->h, tile) < 0)
         die("%s", cm_errmsg());
     if (label) {
         int sc = o->h >= 480 ? 3 : o->h >= 200 ? 2 : 1;
         unsigned char fg[3];
-        text_colour(o->background, fg);
-        image_text(tile, 2 * sc, 2 * sc, label, sc, fg, o->background);
+        text_colour(o->r.background, fg);
+        image_text(tile, 2 * sc, 2 * sc, label, sc, fg, o->r.background);
     }
 }
 
@@ -505,9 +419,7 @@ int main(int argc, char **argv)
     if (keep_bytes > KEEP_LIMIT)
         streaming = 1;
     struct camera cam;
-    camera_init(&cam, o.azimuth, o.elevation, o.up);
-    cam.perspective = o.perspective;
-    cam.fov = o.fov;
+    render_options_camera(&o.r, &cam);
     struct input *in = calloc((size_t)o.ninputs, sizeof *in);
     for (int j = 0; j < o.ninputs; j++) {
         read_input(&o, o.inputs[j], &rd[j], streaming, &cam, &in[j]);
@@ -537,20 +449,15 @@ int main(int argc, char **argv)
         die("no frames to draw");
 
     struct render_style st;
-    render_style_default(&st);
-    memcpy(st.color, o.color, 3);
-    memcpy(st.background, o.background, 3);
-    st.wireframe = o.wireframe;
-    st.flat = o.flat;
-    st.ss = o.ss;
+    render_options_style(&o.r, &st);
     struct mesh_colors mc;
     memset(&mc, 0, sizeof mc);
-    if (o.labels && mesh_colors_labels(o.labels, in[0].nv, in[0].nf, &mc) < 0)
+    if (o.r.labels && mesh_colors_labels(o.r.labels, in[0].nv, in[0].nf, &mc) < 0)
         die("%s", cm_errmsg());
-    if (o.scalars &&
-        mesh_colors_scalars(o.scalars, in[0].nv, in[0].nf, o.have_range ? o.range : NULL, &mc) < 0)
+    if (o.r.scalars &&
+        mesh_colors_scalars(o.r.scalars, in[0].nv, in[0].nf, o.r.have_range ? o.r.range : NULL, &mc) < 0)
         die("%s", cm_errmsg());
-    if (o.labels || o.scalars)
+    if (o.r.labels || o.r.scalars)
         for (int j = 1; j < o.ninputs; j++) {
             char what[512];
             snprintf(what, sizeof what, "cannot colour '%s'", in[j].name);
@@ -564,7 +471,7 @@ int main(int argc, char **argv)
 
     char label[64];
     unsigned char gapc[3];
-    gap_colour(o.background, gapc);
+    gap_colour(o.r.background, gapc);
     if (o.each) {
         /* one image per chosen frame slot: inputs side by side */
         struct progress pr;
@@ -577,7 +484,7 @@ int main(int argc, char **argv)
             for (int j = 0; j < o.ninputs; j++) {
                 image_free(&row[j]);
                 if (i >= in[j].nsel || in[j].sel[i] < 0) {
-                    if (image_alloc(&row[j], o.w, o.h, o.background) < 0)
+                    if (image_alloc(&row[j], o.w, o.h, o.r.background) < 0)
                         die("%s", cm_errmsg());
                     continue;
                 }
@@ -603,7 +510,7 @@ int main(int argc, char **argv)
             char *path = malloc(n);
             snprintf(path, n, o.each, fnum);
             FILE *f = out_open(path);
-            if (image_write(f, &im, o.format) < 0)
+            if (image_write(f, &im, o.r.format) < 0)
                 die("cannot write '%s': %s", path, cm_errmsg());
             out_close(f);
             info(2, "wrote %s", path);
@@ -654,12 +561,12 @@ int main(int argc, char **argv)
         }
         progress_end(&pr);
         double t2 = now_seconds();
-        FILE *out = out_open(o.output);
-        if (image_write(out, &sheet, o.format) < 0)
+        FILE *out = out_open(o.r.output);
+        if (image_write(out, &sheet, o.r.format) < 0)
             die("cannot write output: %s", cm_errmsg());
         out_close(out);
         info(1, "sheet %dx%d (%d columns, %d rows): render %.1f ms, write %s %.1f ms", sheet.w,
-             sheet.h, C, nrows, 1e3 * (t2 - t1), o.format, 1e3 * (now_seconds() - t2));
+             sheet.h, C, nrows, 1e3 * (t2 - t1), o.r.format, 1e3 * (now_seconds() - t2));
         image_free(&sheet);
     }
     for (int j = 0; j < o.ninputs; j++)
