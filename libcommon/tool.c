@@ -198,3 +198,15 @@ int want_raw(int raw_flag)
     const char *e = getenv("STOPMO_RAW");
     return e && *e && strcmp(e, "0") != 0;
 }
+
+const char *arg_labels_and_input(int argc, char **argv, const char *labels)
+{
+    if (!labels)
+        usage_error("missing -l LABELS (per-triangle part labels)");
+    if (optind < argc - 1)
+        usage_error("expected at most one input file");
+    const char *input = optind < argc ? argv[optind] : "-";
+    if (!strcmp(labels, "-") && !strcmp(input, "-"))
+        usage_error("the labels and the animation cannot both come from standard input");
+    return input;
+}

@@ -44,6 +44,13 @@ long arg_long(const char *s, const char *what);
  * the count. */
 int arg_intlist(const char *s, const char *what, int **out);
 
+/* The input operand of a tool that reads per-triangle part labels from
+ * LABELS (-l, required) and one animation (e.g. part-split, seam-homog),
+ * after getopt_long: usage_error() when labels is NULL, when more than one
+ * operand follows the options, or when labels and the input are both "-"
+ * (standard input).  Returns argv[optind], or "-" when there is none. */
+const char *arg_labels_and_input(int argc, char **argv, const char *labels);
+
 /* Output file handling with "nothing half-written":
  * out_open(NULL or "-") returns stdout; otherwise a temporary file next to
  * `path` that out_close() renames into place only on success.  If the

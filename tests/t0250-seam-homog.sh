@@ -130,4 +130,11 @@ test_expect_success 'usage errors' '
 	test_must_fail_usage seam-homog -l cyl.lab --rings -1 cyl.mesh 2>/dev/null &&
 	seam-homog --help >help.txt && grep Usage help.txt
 '
+test_expect_success 'usage errors: labels and the input (tool.h arg_labels_and_input)' '
+	test_must_fail_usage seam-homog cyl.mesh 2>err && grep -q "missing -l LABELS" err &&
+	test_must_fail_usage seam-homog -l cyl.lab cyl.mesh cyl.mesh 2>err &&
+	grep -q "at most one input" err &&
+	test_must_fail_usage seam-homog -l - <cyl.mesh 2>err && grep -q "both come from standard input" err &&
+	test_must_fail_usage seam-homog -l - - <cyl.mesh 2>err && grep -q "both come from standard input" err
+'
 test_done

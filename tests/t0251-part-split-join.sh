@@ -102,4 +102,11 @@ test_expect_success 'usage errors: bad patterns, odd arguments' '
 	test_must_fail_usage part-join p_0.mesh 2>/dev/null &&
 	test_must_fail_usage part-join -f 1,2,3 p_0.mesh p_0.map p_1.mesh p_1.map 2>/dev/null
 '
+test_expect_success 'usage errors: labels and the input (tool.h arg_labels_and_input)' '
+	test_must_fail_usage part-split homog.mesh 2>err && grep -q "missing -l LABELS" err &&
+	test_must_fail_usage part-split -l cyl.lab homog.mesh homog.mesh 2>err &&
+	grep -q "at most one input" err &&
+	test_must_fail_usage part-split -l - <homog.mesh 2>err && grep -q "both come from standard input" err &&
+	test_must_fail_usage part-split -l - - <homog.mesh 2>err && grep -q "both come from standard input" err
+'
 test_done

@@ -92,13 +92,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         default: usage_error("unknown option");
         }
     }
-    if (!o->labels)
-        usage_error("missing -l LABELS (per-triangle part labels)");
-    if (optind < argc - 1)
-        usage_error("expected at most one input file");
-    o->input = optind < argc ? argv[optind] : "-";
-    if (!strcmp(o->labels, "-") && !strcmp(o->input, "-"))
-        usage_error("the labels and the animation cannot both come from standard input");
+    o->input = arg_labels_and_input(argc, argv, o->labels);
     if (o->part < 0 && !o->output)
         o->output = "part_%d.mesh";
     if (o->output && strcmp(o->output, "-"))

@@ -107,13 +107,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         default: usage_error("unknown option");
         }
     }
-    if (!o->labels)
-        usage_error("missing -l LABELS (per-triangle part labels)");
-    if (optind < argc - 1)
-        usage_error("expected at most one input file");
-    o->input = optind < argc ? argv[optind] : "-";
-    if (!strcmp(o->labels, "-") && !strcmp(o->input, "-"))
-        usage_error("the labels and the animation cannot both come from standard input");
+    o->input = arg_labels_and_input(argc, argv, o->labels);
     if (o->rings < 0 || o->rings > 100)
         usage_error("--rings must be in 0..100");
     if (o->batch < 1 || o->batch > 1024)
