@@ -27,13 +27,14 @@ shape() { # n seed -> ring of n points: ellipse with a seeded wobble
 			printf "%.9g %.9g\n", a * r * cos(t), b * r * sin(t) } }'
 }
 
+CT_OPTS=""
 ct_time() { # N n -> seconds for compat-tri on N generated shapes of n points
 	files=""
 	for k in $(seq 1 "$1"); do shape "$2" "$k" >"$T/s$k-$2.rings"; files="$files $T/s$k-$2.rings"; done
 	awk -v N="$1" -v n="$2" 'BEGIN { for (c = 0; c < 5; c++) { line = "";
 		for (k = 0; k < N; k++) line = line (k ? " " : "") int(c * n / 5); print line } }' >"$T/corr-$1-$2.txt"
 	t0=$(now)
-	compat-tri -v -c "$T/corr-$1-$2.txt" $files >"$T/ct.mesh" 2>"$T/ct.log" || { echo "compat-tri failed" >&2; cat "$T/ct.log" >&2; return 1; }
+	compat-tri -v $CT_OPTS -c "$T/corr-$1-$2.txt" $files >"$T/ct.mesh" 2>"$T/ct.log" || { echo "compat-tri failed" >&2; cat "$T/ct.log" >&2; return 1; }
 	t1=$(now)
 	awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f", b - a }'
 	sed -n 's/.*result: \([0-9]*\) vertices.* \([0-9]*\) triangles, min angle \([0-9.]*\) deg.*/ (\1 vertices, \2 triangles, min angle \3 deg/p' "$T/ct.log" | tr -d '\n'
@@ -49,6 +50,17 @@ for n in 100 200 400; do
 		echo "compat-tri N=$N, $n-point outlines: $r s | baseline N=2: $base s | ratio $(awk -v a="$rt" -v b="$bt" 'BEGIN { printf "%.2f", a / (b > 0 ? b : 1e-3) }')"
 	done
 done
+
+# without simplification and refinement (-e 0 -l 0): the stage I-III cost
+# against the outline size itself (baseline: 100-point outlines)
+CT_OPTS="-e 0 -l 0 -s 0"
+# (about n^3: 400-point outlines take ~40 s, left out)
+b100=$(ct_time 4 100) || exit 1
+for n in 200; do
+	r=$(ct_time 4 $n) || exit 1
+	echo "compat-tri -e 0 -l 0, N=4, $n-point outlines: $r s | baseline 100-point outlines: $b100 s | ratio $(awk -v a="${r%% *}" -v b="${b100%% *}" 'BEGIN { printf "%.2f", a / (b > 0 ? b : 1e-3) }')"
+done
+CT_OPTS=""
 
 P="$DATA/shapes2d/poses"
 if [ -e "$P/elephant-pose6.rings.txt" ]; then

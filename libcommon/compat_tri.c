@@ -413,12 +413,16 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
             if (i == 0 && j == m - 1) continue;
             double q = INFINITY;
             int all = 1;
-            for (int s = 0; s < N; s++) {
-                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) {
-                    vis[((size_t)s * m + i) * m + j] = vis[((size_t)s * m + j) * m + i] = 1;
-                    q = fmin(q, cone_quality(&sp[s], i, V(&sp[s], j)));
-                    q = fmin(q, cone_quality(&sp[s], j, V(&sp[s], i)));
-                } else all = 0;
+            /* cheapest test first: the cone angles at both ends; stop at
+             * the first shape where the pair does not see itself (the full
+             * visibility matrix is only needed by stage II, rarely) */
+            for (int s = 0; s < N && all; s++) {
+                if (!incone(&sp[s], i, V(&sp[s], j)) || !incone(&sp[s], j, V(&sp[s], i))) { all = 0; break; }
+                double qq = fmin(cone_quality(&sp[s], i, V(&sp[s], j)), cone_quality(&sp[s], j, V(&sp[s], i)));
+                /* a pair that cannot beat the best score needs no edge tests */
+                if (pair_score(fmin(q, qq), i, j, m) <= best) { all = 0; break; }
+                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) q = fmin(q, qq);
+                else all = 0;
             }
             if (all) {
                 double sc = pair_score(q, i, j, m);
@@ -430,7 +434,15 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         free(vis); free(sp);
         return 0;
     }
-    /* stage II: candidates per shape and their visibility from corners */
+    /* stage II: the full corner visibility matrix, candidates per shape
+     * and their visibility from corners */
+    for (int s = 0; s < N; s++)
+        for (int i = 0; i < m; i++)
+            for (int j = i + 2; j < m; j++) {
+                if (i == 0 && j == m - 1) continue;
+                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j)))
+                    vis[((size_t)s * m + i) * m + j] = vis[((size_t)s * m + j) * m + i] = 1;
+            }
     double **C = malloc(N * sizeof *C);
     int *nc = malloc(N * sizeof *nc);
     unsigned char **cv = malloc(N * sizeof *cv);
