@@ -99,22 +99,24 @@ static void parse_args(int argc, char **argv, struct options *o)
 /* ---- growable arrays ---- */
 struct ivec { int *x; size_t n, cap; };
 struct dvec { double *x; size_t n, cap; };
+/* room for one more element of size sz in x (n used, *cap allocated) */
+static void *reserve(void *x, size_t n, size_t *cap, size_t sz)
+{
+    if (n == *cap) {
+        *cap = *cap ? 2 * *cap : 1024;
+        x = realloc(x, *cap * sz);
+        if (!x) die("out of memory");
+    }
+    return x;
+}
 static void ipush(struct ivec *v, int a)
 {
-    if (v->n == v->cap) {
-        v->cap = v->cap ? 2 * v->cap : 1024;
-        v->x = realloc(v->x, v->cap * sizeof *v->x);
-        if (!v->x) die("out of memory");
-    }
+    v->x = reserve(v->x, v->n, &v->cap, sizeof *v->x);
     v->x[v->n++] = a;
 }
 static void dpush(struct dvec *v, double a)
 {
-    if (v->n == v->cap) {
-        v->cap = v->cap ? 2 * v->cap : 1024;
-        v->x = realloc(v->x, v->cap * sizeof *v->x);
-        if (!v->x) die("out of memory");
-    }
+    v->x = reserve(v->x, v->n, &v->cap, sizeof *v->x);
     v->x[v->n++] = a;
 }
 
