@@ -10,7 +10,8 @@
  * (local stiffness weighting the metric term, landmark term, volume), but
  * the local-global ARAP iteration instead of Gauss-Newton on dihedral
  * angles: one CHOLMOD factorization for the whole run, every iteration is
- * one back-substitution.
+ * one back-substitution.  The thin shell itself is in thin_shell.h
+ * (clay-deform --model shell).
  *
  *   E(X) = sum_edges k_ij w_ij |(x_i - x_j) - R_i (v_i - v_j)|^2
  *        + lambda sum_l |x_l - t_l|^2,

@@ -1,0 +1,348 @@
+/* thin_shell.c -- see thin_shell.h */
+#include "thin_shell.h"
+#include "cm_error.h"
+#include "geometry.h"
+#include "spd.h"
+#include "topology.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct thin_shell {
+    int nv, nf, ne, nb, nh, nres, use_vol;
+    int *F;
+    int *E;            /* ne by 2 */
+    double *L0, *ws;   /* rest length, sqrt stretch weight */
+    int *B;            /* nb by 4: a, b (shared edge a->b in face 1), o1, o2 */
+    double *th0, *wb;  /* rest angle, sqrt bend weight incl. L/sqrt(A/3) */
+    double *vol0, o[3], wv;
+    double V0, wg;     /* rest enclosed volume, sqrt global volume weight / |V0| */
+    int *H;
+    double wl;         /* sqrt(lambda) / Lbar */
+    double damping, mu;
+    struct spd_solver *S;
+};
+
+void thin_shell_defaults(struct thin_shell_params *p)
+{
+    p->ks = 1; p->kb = 1; p->kv = 0; p->kvg = 1; p->lambda = 100; p->damping = 1e-6;
+}
+
+static double face_area3(const double *a, const double *b, const double *c)
+{
+    double u[3], v[3], n[3];
+    sub3(b, a, u); sub3(c, a, v); cross3(u, v, n);
+    return 0.5 * norm3(n);
+}
+
+static double tet_volume(const double *a, const double *b, const double *c, const double *o,
+                         double *ga, double *gb, double *gc)
+{
+    double A[3], B[3], C[3], x[3];
+    sub3(a, o, A); sub3(b, o, B); sub3(c, o, C);
+    cross3(B, C, x);
+    if (ga) {
+        for (int d = 0; d < 3; d++) ga[d] = x[d] / 6;
+        double y[3];
+        cross3(C, A, y); for (int d = 0; d < 3; d++) gb[d] = y[d] / 6;
+        cross3(A, B, y); for (int d = 0; d < 3; d++) gc[d] = y[d] / 6;
+    }
+    return dot3(A, x) / 6;
+}
+
+/* Signed dihedral angle of edge x3 -> x4 between triangle (x3, x4, x1) and
+ * (x4, x3, x2) (both outward), 0 when flat; gradient (Bridson et al. 2003)
+ * g: 4 by 3 for x1, x2, x3, x4 (zero when degenerate). */
+static double dihedral(const double *x1, const double *x2, const double *x3, const double *x4,
+                       double *g)
+{
+    double p[3], q[3], n1[3], n2[3], E[3];
+    sub3(x1, x3, p); sub3(x1, x4, q); cross3(p, q, n1);
+    sub3(x2, x4, p); sub3(x2, x3, q); cross3(p, q, n2);
+    sub3(x4, x3, E);
+    double l1 = dot3(n1, n1), l2 = dot3(n2, n2), le = norm3(E);
+    if (g) memset(g, 0, 12 * sizeof *g);
+    if (!(l1 > 0 && l2 > 0 && le > 0)) return 0;
+    double m = sqrt(l1 * l2), c = dot3(n1, n2) / m, x[3];
+    cross3(n1, n2, x);
+    double s = dot3(x, E) / (m * le);
+    double th = atan2(s, c);
+    if (g) {
+        double d1[3], d2[3];
+        sub3(x1, x4, p); sub3(x2, x4, q);
+        double a14 = dot3(p, E) / le, a24 = dot3(q, E) / le;
+        sub3(x1, x3, p); sub3(x2, x3, q);
+        double a13 = dot3(p, E) / le, a23 = dot3(q, E) / le;
+        for (int d = 0; d < 3; d++) { d1[d] = n1[d] / l1; d2[d] = n2[d] / l2; }
+        for (int d = 0; d < 3; d++) {
+            g[0 + d] = -le * d1[d];
+            g[3 + d] = -le * d2[d];
+            g[6 + d] = -(a14 * d1[d] + a24 * d2[d]);
+            g[9 + d] = (a13 * d1[d] + a23 * d2[d]);
+        }
+    }
+    return th;
+}
+
+static double wrap(double a)
+{
+    while (a > M_PI) a -= 2 * M_PI;
+    while (a <= -M_PI) a += 2 * M_PI;
+    return a;
+}
+
+struct thin_shell *thin_shell_new(const double *V, const int *F, int nv, int nf,
+                                  const double *k, const int *H, int nh,
+                                  const struct thin_shell_params *p)
+{
+    struct thin_shell_params dp;
+    if (!p) { thin_shell_defaults(&dp); p = &dp; }
+    for (int h = 0; h < nh; h++)
+        if (H[h] < 0 || H[h] >= nv) {
+            cm_seterr("landmark %d: vertex %d out of range 0..%d", h + 1, H[h], nv - 1);
+            return NULL;
+        }
+    struct topology t;
+    if (topology_build(F, nf, nv, &t) < 0) return NULL;
+    struct thin_shell *s = calloc(1, sizeof *s);
+    s->nv = nv; s->nf = nf; s->ne = t.ne; s->nh = nh;
+    s->F = malloc((size_t)nf * 3 * sizeof *s->F + 1);
+    memcpy(s->F, F, (size_t)nf * 3 * sizeof *s->F);
+    s->E = malloc((size_t)t.ne * 2 * sizeof *s->E + 1);
+    memcpy(s->E, t.E, (size_t)t.ne * 2 * sizeof *s->E);
+    s->L0 = malloc((size_t)t.ne * sizeof *s->L0 + 1);
+    s->ws = malloc((size_t)t.ne * sizeof *s->ws + 1);
+    s->B = malloc((size_t)t.ne * 4 * sizeof *s->B + 1);
+    s->th0 = malloc((size_t)t.ne * sizeof *s->th0 + 1);
+    s->wb = malloc((size_t)t.ne * sizeof *s->wb + 1);
+    double lbar = 0;
+    for (int e = 0; e < t.ne; e++) {
+        int i = t.E[2 * e], j = t.E[2 * e + 1];
+        double ke = k ? 0.5 * (k[i] + k[j]) : 1;
+        s->L0[e] = dist3(V + 3 * i, V + 3 * j);
+        lbar += s->L0[e] / t.ne;
+        s->ws[e] = s->L0[e] > 0 ? sqrt(p->ks * ke) / s->L0[e] : 0;
+        if (t.EFn[e] != 2 || !(p->kb > 0)) continue;
+        int f1 = t.EF[2 * e], f2 = t.EF[2 * e + 1];
+        /* orient: a -> b as in f1, o1 opposite in f1, o2 opposite in f2 */
+        int a = -1, b = -1, o1 = -1, o2 = -1, ok = 0;
+        for (int q = 0; q < 3; q++) {
+            int u = F[3 * f1 + q], w = F[3 * f1 + (q + 1) % 3];
+            if ((u == i && w == j) || (u == j && w == i)) { a = u; b = w; o1 = F[3 * f1 + (q + 2) % 3]; }
+        }
+        for (int q = 0; q < 3; q++) {
+            int u = F[3 * f2 + q], w = F[3 * f2 + (q + 1) % 3];
+            if (u == b && w == a) { o2 = F[3 * f2 + (q + 2) % 3]; ok = 1; }
+        }
+        if (!ok || o1 < 0 || o1 == o2) continue;    /* inconsistent orientation: no bending */
+        double A = face_area3(V + 3 * F[3 * f1], V + 3 * F[3 * f1 + 1], V + 3 * F[3 * f1 + 2]) +
+                   face_area3(V + 3 * F[3 * f2], V + 3 * F[3 * f2 + 1], V + 3 * F[3 * f2 + 2]);
+        if (!(A > 0)) continue;
+        int *Bq = s->B + 4 * s->nb;
+        Bq[0] = a; Bq[1] = b; Bq[2] = o1; Bq[3] = o2;
+        s->th0[s->nb] = dihedral(V + 3 * o1, V + 3 * o2, V + 3 * a, V + 3 * b, NULL);
+        s->wb[s->nb] = sqrt(p->kb * ke) * s->L0[e] / sqrt(A / 3);
+        s->nb++;
+    }
+    topology_free(&t);
+    s->use_vol = p->kv > 0;
+    s->vol0 = malloc((size_t)nf * sizeof *s->vol0 + 1);
+    for (int v = 0; v < nv; v++)
+        for (int d = 0; d < 3; d++) s->o[d] += V[3 * v + d] / nv;
+    double vbar = 0;
+    for (int f = 0; f < nf; f++) {
+        s->vol0[f] = tet_volume(V + 3 * F[3 * f], V + 3 * F[3 * f + 1], V + 3 * F[3 * f + 2], s->o,
+                                NULL, NULL, NULL);
+        vbar += fabs(s->vol0[f]) / nf;
+    }
+    double kbar = 0;
+    for (int v = 0; v < nv; v++) kbar += (k ? k[v] : 1) / nv;
+    s->wv = vbar > 0 ? sqrt(p->kv * kbar) / vbar : 0;
+    s->V0 = 0;
+    for (int f = 0; f < nf; f++) s->V0 += s->vol0[f];
+    s->wg = p->kvg > 0 && s->V0 != 0 ? sqrt(p->kvg * kbar * nf) / fabs(s->V0) : 0;
+    if (!(vbar > 0)) s->use_vol = 0;
+    s->H = malloc((size_t)nh * sizeof *s->H + 1);
+    memcpy(s->H, H, (size_t)nh * sizeof *s->H);
+    s->wl = lbar > 0 ? sqrt(p->lambda) / lbar : 0;
+    s->damping = p->damping;
+    s->nres = s->ne + s->nb + (s->use_vol ? nf : 0) + 3 * nh;
+    return s;
+}
+
+void thin_shell_free(struct thin_shell *s)
+{
+    if (!s) return;
+    spd_free(s->S);
+    free(s->F); free(s->E); free(s->L0); free(s->ws); free(s->B); free(s->th0); free(s->wb);
+    free(s->vol0); free(s->H);
+    free(s);
+}
+
+int thin_shell_nres(const struct thin_shell *s) { return s->nres; }
+
+double thin_shell_residuals(const struct thin_shell *s, const double *X, const double *T,
+                            double *r, int *idx, double *g)
+{
+    int q = 0;
+    double E = 0;
+    if (idx) for (int i = 0; i < 4 * s->nres; i++) idx[i] = -1;
+    if (g) memset(g, 0, (size_t)12 * s->nres * sizeof *g);
+    for (int e = 0; e < s->ne; e++, q++) {
+        int i = s->E[2 * e], j = s->E[2 * e + 1];
+        double d[3];
+        sub3(X + 3 * i, X + 3 * j, d);
+        double l = norm3(d);
+        r[q] = s->ws[e] * (l - s->L0[e]);
+        if (idx) {
+            idx[4 * q] = i; idx[4 * q + 1] = j;
+            for (int c = 0; c < 3 && l > 0; c++) {
+                g[12 * q + c] = s->ws[e] * d[c] / l;
+                g[12 * q + 3 + c] = -s->ws[e] * d[c] / l;
+            }
+        }
+    }
+    for (int b = 0; b < s->nb; b++, q++) {
+        const int *Bq = s->B + 4 * b;
+        double gg[12];
+        double th = dihedral(X + 3 * Bq[2], X + 3 * Bq[3], X + 3 * Bq[0], X + 3 * Bq[1], idx ? gg : NULL);
+        r[q] = s->wb[b] * wrap(th - s->th0[b]);
+        if (idx) {
+            idx[4 * q] = Bq[2]; idx[4 * q + 1] = Bq[3]; idx[4 * q + 2] = Bq[0]; idx[4 * q + 3] = Bq[1];
+            for (int c = 0; c < 12; c++) g[12 * q + c] = s->wb[b] * gg[c];
+        }
+    }
+    if (s->use_vol)
+        for (int f = 0; f < s->nf; f++, q++) {
+            const int *Fq = s->F + 3 * f;
+            double *gq = g ? g + 12 * q : NULL;
+            double v = tet_volume(X + 3 * Fq[0], X + 3 * Fq[1], X + 3 * Fq[2], s->o,
+                                  gq, gq ? gq + 3 : NULL, gq ? gq + 6 : NULL);
+            r[q] = s->wv * (v - s->vol0[f]);
+            if (idx) {
+                for (int a = 0; a < 3; a++) idx[4 * q + a] = Fq[a];
+                for (int c = 0; c < 9; c++) gq[c] *= s->wv;
+            }
+        }
+    for (int h = 0; h < s->nh; h++)
+        for (int d = 0; d < 3; d++, q++) {
+            r[q] = s->wl * (X[3 * s->H[h] + d] - T[3 * h + d]);
+            if (idx) { idx[4 * q] = s->H[h]; g[12 * q + d] = s->wl; }
+        }
+    for (int i = 0; i < q; i++) E += 0.5 * r[i] * r[i];
+    return E;
+}
+
+double thin_shell_volume_residual(const struct thin_shell *s, const double *X, double *grad)
+{
+    if (grad) memset(grad, 0, (size_t)3 * s->nv * sizeof *grad);
+    if (s->wg == 0) return 0;
+    double v = 0;
+    for (int f = 0; f < s->nf; f++) {
+        const int *Fq = s->F + 3 * f;
+        double g[9];
+        v += tet_volume(X + 3 * Fq[0], X + 3 * Fq[1], X + 3 * Fq[2], s->o, g, g + 3, g + 6);
+        if (grad)
+            for (int a = 0; a < 3; a++)
+                for (int d = 0; d < 3; d++) grad[3 * Fq[a] + d] += s->wg * g[3 * a + d];
+    }
+    return s->wg * (v - s->V0);
+}
+
+double thin_shell_energy(const struct thin_shell *s, const double *X, const double *T)
+{
+    double *r = malloc((size_t)s->nres * sizeof *r + 1);
+    double E = thin_shell_residuals(s, X, T, r, NULL, NULL), rg = thin_shell_volume_residual(s, X, NULL);
+    free(r);
+    return E + 0.5 * rg * rg;
+}
+
+/* J^T J (upper triangle, fixed pattern) + mu I, and J^T r */
+static cholmod_sparse *normal_equations(const struct thin_shell *s, const double *r,
+                                        const int *idx, const double *g, double mu, double *b)
+{
+    int n = 3 * s->nv;
+    struct triplets T;
+    triplets_init(&T, n, n);
+    memset(b, 0, (size_t)n * sizeof *b);
+    for (int q = 0; q < s->nres; q++) {
+        const int *iq = idx + 4 * q;
+        const double *gq = g + 12 * q;
+        for (int a = 0; a < 4; a++) {
+            if (iq[a] < 0) continue;
+            for (int da = 0; da < 3; da++) {
+                int row = 3 * iq[a] + da;
+                b[row] += gq[3 * a + da] * r[q];
+                for (int c = 0; c < 4; c++) {
+                    if (iq[c] < 0) continue;
+                    for (int dc = 0; dc < 3; dc++) {
+                        int col = 3 * iq[c] + dc;
+                        if (row <= col) triplets_add(&T, row, col, gq[3 * a + da] * gq[3 * c + dc]);
+                    }
+                }
+            }
+        }
+    }
+    for (int i = 0; i < n; i++) triplets_add(&T, i, i, mu);
+    cholmod_sparse *A = triplets_to_sparse(&T, 1);
+    triplets_free(&T);
+    return A;
+}
+
+int thin_shell_solve(struct thin_shell *s, const double *T, int iters, double *X, double *Eout)
+{
+    int n = 3 * s->nv, rc = 0;
+    double *r = malloc((size_t)s->nres * sizeof *r + 1), *g = malloc((size_t)s->nres * 12 * sizeof *g + 1);
+    int *idx = malloc((size_t)s->nres * 4 * sizeof *idx + 1);
+    double *b = malloc((size_t)n * sizeof *b + 1), *dx = malloc((size_t)n * sizeof *dx + 1);
+    double *Xt = malloc((size_t)n * sizeof *Xt + 1), *gG = malloc((size_t)n * sizeof *gG + 1);
+    double *B2 = malloc((size_t)n * 2 * sizeof *B2 + 1);
+    double rG = thin_shell_volume_residual(s, X, gG);
+    double E = thin_shell_residuals(s, X, T, r, idx, g) + 0.5 * rG * rG;
+    if (Eout) Eout[0] = E;
+    int done = 0;
+    for (int it = 0; it < iters; it++) {
+        if (done) { if (Eout) Eout[it + 1] = E; continue; }
+        if (s->mu == 0) {
+            /* damping scale from the first J^T J's mean diagonal */
+            double tr = 0;
+            for (int q = 0; q < s->nres; q++)
+                for (int c = 0; c < 12; c++) tr += g[12 * q + c] * g[12 * q + c];
+            s->mu = s->damping * (tr > 0 ? tr / n : 1);
+            if (!(s->mu > 0)) s->mu = 1e-12;
+        }
+        cholmod_sparse *A = normal_equations(s, r, idx, g, s->mu, b);
+        int ok;
+        if (!s->S) { s->S = spd_factor(A); ok = s->S != NULL; }
+        else ok = spd_refactor(s->S, A) == 0;
+        sparse_free(&A);
+        if (!ok) { rc = -1; break; }
+        if (s->wg == 0) {
+            if (spd_solve(s->S, b, dx, 1) < 0) { rc = -1; break; }
+        } else {
+            /* the global volume row is dense: (A + gG gG^T) dx = b + gG rG
+             * by Sherman-Morrison from A^-1 [b + gG rG, gG] */
+            for (int i = 0; i < n; i++) { B2[2 * i] = b[i] + gG[i] * rG; B2[2 * i + 1] = gG[i]; }
+            if (spd_solve(s->S, B2, B2, 2) < 0) { rc = -1; break; }
+            double gy = 0, gz = 0;
+            for (int i = 0; i < n; i++) { gy += gG[i] * B2[2 * i]; gz += gG[i] * B2[2 * i + 1]; }
+            for (int i = 0; i < n; i++) dx[i] = B2[2 * i] - B2[2 * i + 1] * gy / (1 + gz);
+        }
+        double alpha = 1, En = E;
+        int accepted = 0;
+        for (int ls = 0; ls < 30; ls++, alpha *= 0.5) {
+            for (int i = 0; i < n; i++) Xt[i] = X[i] - alpha * dx[i];
+            En = thin_shell_energy(s, Xt, T);
+            if (En < E) { accepted = 1; break; }
+        }
+        if (!accepted) { done = 1; if (Eout) Eout[it + 1] = E; continue; }
+        memcpy(X, Xt, (size_t)n * sizeof *X);
+        double Eold = E;
+        rG = thin_shell_volume_residual(s, X, gG);
+        E = thin_shell_residuals(s, X, T, r, idx, g) + 0.5 * rG * rG;
+        if (Eout) Eout[it + 1] = E;
+        if (Eold - E <= 1e-6 * Eold) done = 1;
+    }
+    free(r); free(g); free(idx); free(b); free(dx); free(Xt); free(gG); free(B2);
+    return rc;
+}
