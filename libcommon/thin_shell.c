@@ -21,6 +21,8 @@ struct thin_shell {
     double wl;         /* sqrt(lambda) / Lbar */
     double damping, mu;
     struct spd_solver *S;
+    cholmod_sparse *A;  /* J^T J + mu I (upper), pattern fixed after the first iteration */
+    int *pos;           /* position in A->x of every contribution */
 };
 
 void thin_shell_defaults(struct thin_shell_params *p)
@@ -174,6 +176,8 @@ void thin_shell_free(struct thin_shell *s)
 {
     if (!s) return;
     spd_free(s->S);
+    sparse_free(&s->A);
+    free(s->pos);
     free(s->F); free(s->E); free(s->L0); free(s->ws); free(s->B); free(s->th0); free(s->wb);
     free(s->vol0); free(s->H);
     free(s);
@@ -257,13 +261,15 @@ double thin_shell_energy(const struct thin_shell *s, const double *X, const doub
     return E + 0.5 * rg * rg;
 }
 
-/* J^T J (upper triangle, fixed pattern) + mu I, and J^T r */
-static cholmod_sparse *normal_equations(const struct thin_shell *s, const double *r,
-                                        const int *idx, const double *g, double mu, double *b)
+/* J^T J (upper triangle) + mu I, and J^T r.  The contributions come in the
+ * same order every iteration: the first time into triplets T, afterwards
+ * straight into Ax at the positions pos found for them in the matrix. */
+static void normal_equations(const struct thin_shell *s, const double *r, const int *idx,
+                             const double *g, double mu, double *b, struct triplets *T,
+                             const int *pos, double *Ax)
 {
     int n = 3 * s->nv;
-    struct triplets T;
-    triplets_init(&T, n, n);
+    size_t k = 0;
     memset(b, 0, (size_t)n * sizeof *b);
     for (int q = 0; q < s->nres; q++) {
         const int *iq = idx + 4 * q;
@@ -277,16 +283,41 @@ static cholmod_sparse *normal_equations(const struct thin_shell *s, const double
                     if (iq[c] < 0) continue;
                     for (int dc = 0; dc < 3; dc++) {
                         int col = 3 * iq[c] + dc;
-                        if (row <= col) triplets_add(&T, row, col, gq[3 * a + da] * gq[3 * c + dc]);
+                        if (row > col) continue;
+                        double v = gq[3 * a + da] * gq[3 * c + dc];
+                        if (T) triplets_add(T, row, col, v);
+                        else Ax[pos[k]] += v;
+                        k++;
                     }
                 }
             }
         }
     }
-    for (int i = 0; i < n; i++) triplets_add(&T, i, i, mu);
-    cholmod_sparse *A = triplets_to_sparse(&T, 1);
-    triplets_free(&T);
-    return A;
+    for (int i = 0; i < n; i++, k++) {
+        if (T) triplets_add(T, i, i, mu);
+        else Ax[pos[k]] += mu;
+    }
+}
+
+/* position of every triplet in the compressed-column matrix A */
+static int *triplet_positions(const struct triplets *T, const cholmod_sparse *A)
+{
+    const int *Ap = A->p, *Ai = A->i;
+    int *pos = malloc(T->nnz * sizeof *pos + 1);
+    for (size_t k = 0; k < T->nnz; k++) {
+        int j = T->j[k], i = T->i[k], lo = Ap[j], hi = Ap[j + 1] - 1, at = -1;
+        if (A->sorted)
+            while (lo <= hi) {
+                int m = (lo + hi) / 2;
+                if (Ai[m] == i) { at = m; break; }
+                if (Ai[m] < i) lo = m + 1; else hi = m - 1;
+            }
+        else
+            for (int m = lo; m <= hi; m++) if (Ai[m] == i) { at = m; break; }
+        if (at < 0) { free(pos); return NULL; }
+        pos[k] = at;
+    }
+    return pos;
 }
 
 int thin_shell_solve(struct thin_shell *s, const double *T, int iters, double *X, double *Eout)
@@ -311,11 +342,22 @@ int thin_shell_solve(struct thin_shell *s, const double *T, int iters, double *X
             s->mu = s->damping * (tr > 0 ? tr / n : 1);
             if (!(s->mu > 0)) s->mu = 1e-12;
         }
-        cholmod_sparse *A = normal_equations(s, r, idx, g, s->mu, b);
         int ok;
-        if (!s->S) { s->S = spd_factor(A); ok = s->S != NULL; }
-        else ok = spd_refactor(s->S, A) == 0;
-        sparse_free(&A);
+        if (!s->S) {
+            struct triplets T;
+            triplets_init(&T, n, n);
+            normal_equations(s, r, idx, g, s->mu, b, &T, NULL, NULL);
+            s->A = triplets_to_sparse(&T, 1);
+            s->pos = triplet_positions(&T, s->A);
+            triplets_free(&T);
+            if (!s->pos) { rc = -1; cm_seterr("thin shell: lost a matrix entry"); break; }
+            s->S = spd_factor(s->A);
+            ok = s->S != NULL;
+        } else {
+            memset(s->A->x, 0, ((int *)s->A->p)[n] * sizeof(double));
+            normal_equations(s, r, idx, g, s->mu, b, NULL, s->pos, s->A->x);
+            ok = spd_refactor(s->S, s->A) == 0;
+        }
         if (!ok) { rc = -1; break; }
         if (s->wg == 0) {
             if (spd_solve(s->S, b, dx, 1) < 0) { rc = -1; break; }

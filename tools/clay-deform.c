@@ -3,6 +3,7 @@
  * landmarks; Gauss-Newton) or an ARAP shell, weighted by a local stiffness
  * map (E-StopMotion thesis Sec. 4.4, Algorithm 3's first loop).
  */
+#include "blas_tune.h"
 #include "clay_deform.h"
 #include "thin_shell.h"
 #include "closest_point.h"
@@ -54,6 +55,7 @@ static const char help[] =
 
 int main(int argc, char **argv)
 {
+    blas_tune(argv);             /* CHOLMOD's supernodal factorization runs on BLAS */
     tool_init(argc, argv);
     enum { O_LAMBDA = 256, O_HAUS, O_NOVOL, O_POSES, O_RAW, O_VERSION, O_KS, O_KB, O_KV, O_KF };
     static const struct option lo[] = {
