@@ -49,6 +49,12 @@ int symmetric_distance(const double *VA, int nva, const int *FA, int nfa,
 int flipped_faces(const double *VA, const int *FA, int nfa, const double *VB, const int *FB,
                   const struct closest_point_tree *TB)
 {
+    return flipped_face_flags(VA, FA, nfa, VB, FB, TB, NULL);
+}
+
+int flipped_face_flags(const double *VA, const int *FA, int nfa, const double *VB, const int *FB,
+                       const struct closest_point_tree *TB, unsigned char *flip)
+{
     double *P = malloc((size_t)nfa * 3 * sizeof *P + 1), *N = malloc((size_t)nfa * 3 * sizeof *N + 1);
     int *I = malloc((size_t)nfa * sizeof *I + 1);
     face_normals(VA, FA, nfa, N);
@@ -63,7 +69,9 @@ int flipped_faces(const double *VA, const int *FA, int nfa, const double *VB, co
         sub3(VB + 3 * g[1], VB + 3 * g[0], e1);
         sub3(VB + 3 * g[2], VB + 3 * g[0], e2);
         cross3(e1, e2, n);
-        if (dot3(n, N + 3 * f) < 0) flipped++;
+        int fl = dot3(n, N + 3 * f) < 0;
+        flipped += fl;
+        if (flip) flip[f] = (unsigned char)fl;
     }
     free(P); free(N); free(I);
     return flipped;

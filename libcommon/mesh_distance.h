@@ -37,6 +37,11 @@ int symmetric_distance(const double *VA, int nva, const int *FA, int nfa,
 int flipped_faces(const double *VA, const int *FA, int nfa, const double *VB, const int *FB,
                   const struct closest_point_tree *TB);
 
+/* The same test per face: flip (#FA, out, may be NULL) gets 1 for every
+ * flipped face of A, 0 otherwise; returns their number. */
+int flipped_face_flags(const double *VA, const int *FA, int nfa, const double *VB, const int *FB,
+                       const struct closest_point_tree *TB, unsigned char *flip);
+
 #ifdef __cplusplus
 }
 #endif

@@ -3,6 +3,8 @@
 #include "closest_point.h"
 #include "cm_error.h"
 #include "geometry.h"
+#include "polar.h"
+#include "mesh_distance.h"
 #include "spd.h"
 #include "topology.h"
 #include "progress.h"
@@ -24,6 +26,8 @@ void nricp_defaults(struct nricp_params *p)
     p->eps = 1e-4;
     p->max_inner = 3;
     p->relax = 5;
+    p->untangle = 10;
+    p->untangle_weight = 100;
     p->nearest_vertex = 0;
 }
 
@@ -164,7 +168,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
 
     struct topology ts = {0}, tt = {0};
     struct system S = {0};
-    struct closest_point_tree *TT = NULL;
+    struct closest_point_tree *TT = NULL, *TT0 = NULL;
     struct spd_solver *L = NULL;
     double *X = calloc((size_t)nvs * 12 + 1, sizeof *X);          /* 4n by 3 */
     double *B = malloc(((size_t)nvs * 12 + 1) * sizeof *B);
@@ -174,6 +178,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
     int *UF = malloc(((size_t)nvs + 1) * sizeof *UF);
     double *TB = malloc(((size_t)nvt * 3 + 1) * sizeof *TB), *TC = malloc(((size_t)nvt * 3 + 1) * sizeof *TC);
     int *TF = malloc(((size_t)nvt + 1) * sizeof *TF);
+    unsigned char *FL = malloc((size_t)nfs + 1), *VM = malloc((size_t)nvs + 1), *VM2 = malloc((size_t)nvs + 1);
     if (topology_build(FS, nfs, nvs, &ts) < 0 || topology_build(FT, nft, nvt, &tt) < 0) goto done;
     if (system_new(&S, &ts, nvs) < 0) goto done;
     TT = closest_point_tree_new(VT, nvt, FT, nft);
@@ -185,6 +190,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
     double g2[4] = {1, 1, 1, p->gamma * p->gamma};
     int K = p->steps < 1 ? 1 : p->steps;
     int first = 1;
+    int nflip = -1;
     for (int k = 0; k < K; k++) {
         double alpha = K == 1 ? p->alpha_max
                               : p->alpha_max * pow(p->alpha_min / p->alpha_max, (double)k / (K - 1));
@@ -245,10 +251,11 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
             double a2 = alpha * alpha;
             for (int e = 0; e < ts.ne; e++) {
                 int i = ts.E[2 * e], j = ts.E[2 * e + 1];      /* i < j */
+                double w = a2;
                 for (int r = 0; r < 4; r++) {
-                    *entry(&S, i, i, r, r) += a2 * g2[r];
-                    *entry(&S, j, j, r, r) += a2 * g2[r];
-                    *entry(&S, i, j, r, r) -= a2 * g2[r];
+                    *entry(&S, i, i, r, r) += w * g2[r];
+                    *entry(&S, j, j, r, r) += w * g2[r];
+                    *entry(&S, i, j, r, r) -= w * g2[r];
                 }
             }
             /* a tiny pull toward the identity map keeps pieces without any
@@ -288,9 +295,92 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
         if (cb) {
             for (int i = 0; i < nvs; i++)
                 for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
-            if (cb(ctx, k, alpha, beta, inner, rejected, Xout)) break;
+            if (cb(ctx, k, alpha, beta, inner, rejected, -1, Xout)) break;
         }
     }
+    /* untangling (outer > 0): ARAP toward the (unfolded) source restricted
+     * to the flipped faces and their one-rings, the closest target points
+     * as soft constraints; then the fold-removal sweeps; the pose with the
+     * fewest flipped faces (flipped_face_flags, in the input coordinates as
+     * the tool measures them) is kept */
+    double *UR = NULL, *Pbest = malloc(((size_t)nvs * 3 + 1) * sizeof *Pbest);
+    int nbest = -1;
+    int nouter = p->untangle > 0 ? p->untangle + 1 : 1;
+    for (int outer = 0; outer < nouter; outer++) {
+    if (outer > 0) {
+        UR = malloc(((size_t)nvs * 9 + 1) * sizeof *UR);
+        unsigned char *VM3 = malloc((size_t)nvs + 1);
+        double *W = malloc(((size_t)nvs + 1) * sizeof *W);
+        for (int round = outer - 1; round < outer; round++) {
+            nflip = flipped_face_flags(P, FS, nfs, VT, FT, TT, FL);
+            if (cb) {
+                for (int i = 0; i < nvs; i++)
+                    for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
+                cb(ctx, K + round, 0, 0, 0, 0, nflip, Xout);
+            }
+            if (!nflip) break;
+            memset(VM, 0, nvs);
+            for (int f = 0; f < nfs; f++)
+                if (FL[f]) for (int q = 0; q < 3; q++) VM[FS[3 * f + q]] = 1;
+            for (int g = 0; g < 1; g++) {     /* and their one-rings */
+                memcpy(VM2, VM, nvs);
+                for (int i = 0; i < nvs; i++)
+                    if (VM2[i]) for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++) VM[ts.VV[q]] = 1;
+            }
+            memcpy(VM3, VM, nvs);                     /* region and its ring: rotations */
+            for (int i = 0; i < nvs; i++)
+                if (VM[i]) for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++) VM3[ts.VV[q]] = 1;
+            vertex_normals(P, FS, nvs, nfs, NS);
+            closest_points_hinted(TT, P, nvs, UF, U, UF, UB, NULL);
+            for (int i = 0; i < nvs; i++) {
+                W[i] = 0;
+                if (!VM[i]) continue;
+                double n[3];
+                interp_normal(NT, FT, UF[i], UB + 3 * i, n);
+                double dd = dist3(P + 3 * i, U + 3 * i);
+                int bad = on_boundary(&tt, FT, UF[i], UB + 3 * i) ||
+                          (p->max_dist > 0 && dd > p->max_dist);
+                W[i] = bad ? 0 : p->untangle_weight;
+            }
+            for (int it = 0; it < 100; it++) {
+                /* local step: best rotation of each one-ring, source -> current */
+                for (int i = 0; i < nvs; i++) {
+                    if (!VM3[i]) continue;
+                    double A[9] = {0}, Sm[9];
+                    for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++) {
+                        int j = ts.VV[q];
+                        double e[3], e2[3];
+                        sub3(VS + 3 * i, VS + 3 * j, e);
+                        sub3(P + 3 * i, P + 3 * j, e2);
+                        for (int r = 0; r < 3; r++)
+                            for (int cc = 0; cc < 3; cc++) A[3 * r + cc] += e2[r] * e[cc];
+                    }
+                    polar3(A, UR + 9 * i, Sm);
+                }
+                /* global step: one Gauss-Seidel sweep over the region */
+                for (int i = 0; i < nvs; i++) {
+                    int deg = ts.VVs[i + 1] - ts.VVs[i];
+                    if (!VM[i] || deg == 0) continue;
+                    double acc[3] = {0, 0, 0};
+                    for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++) {
+                        int j = ts.VV[q];
+                        double e[3];
+                        sub3(VS + 3 * i, VS + 3 * j, e);
+                        for (int r = 0; r < 3; r++) {
+                            double re = 0;
+                            for (int cc = 0; cc < 3; cc++)
+                                re += 0.5 * (UR[9 * i + 3 * r + cc] + UR[9 * j + 3 * r + cc]) * e[cc];
+                            acc[r] += P[3 * j + r] + re;
+                        }
+                    }
+                    for (int r = 0; r < 3; r++)
+                        P[3 * i + r] = (acc[r] + W[i] * U[3 * i + r]) / (deg + W[i]);
+                }
+            }
+        }
+        free(VM3); free(W);
+    }
+    free(UR); UR = NULL;
     /* fold removal: vertices of faces that point against the target (and
      * their one-rings) relax tangentially and are projected back */
     unsigned char *mark = calloc(nvs + 1, 1), *mark2 = calloc(nvs + 1, 1);
@@ -345,16 +435,30 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
         }
     }
     free(mark); free(mark2); free(NF);
+    if (p->untangle > 0) {
+        if (!TT0) TT0 = closest_point_tree_new(VT0, nvt, FT, nft);
+        if (!TT0) goto done;
+        for (int i = 0; i < nvs; i++)
+            for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
+        nflip = flipped_face_flags(Xout, FS, nfs, VT0, FT, TT0, NULL);
+    } else nflip = 0;
+    if (nbest < 0 || nflip < nbest) { nbest = nflip; memcpy(Pbest, P, (size_t)nvs * 3 * sizeof *P); }
+    if (!nflip) break;
+    }
+    memcpy(P, Pbest, (size_t)nvs * 3 * sizeof *P);
+    free(Pbest);
     for (int i = 0; i < nvs; i++)
         for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
     rc = 0;
 done:
     spd_free(L);
     closest_point_tree_free(TT);
+    closest_point_tree_free(TT0);
     system_free(&S);
     topology_free(&ts);
     topology_free(&tt);
     free(VS); free(VT); free(LD); free(X); free(B); free(P); free(Pold); free(NS); free(NT);
     free(U); free(UB); free(UF); free(TB); free(TC); free(TF);
+    free(FL); free(VM); free(VM2);
     return rc;
 }

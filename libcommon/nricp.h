@@ -45,15 +45,25 @@ struct nricp_params {
     int nearest_vertex;    /* baseline: correspondence = the nearest corner of the closest
                               triangle (~ the closest target vertex) instead of the closest
                               point; default 0 */
+    int untangle;          /* untangling rounds after the schedule (default 10; 0 off): while
+                              faces are flipped (mesh_distance.h flipped_face_flags), ARAP
+                              (rest shape: the source, 100 local/global Gauss-Seidel sweeps)
+                              on their vertices and one-rings, the closest target points as
+                              soft constraints, then the relax sweeps; the pose with the
+                              fewest flipped faces is returned */
+    double untangle_weight;/* weight of those constraints against one edge's ARAP term (default 100) */
     int relax;             /* final fold-removal sweeps (default 5; 0: pure Amberg) */
 };
 
 void nricp_defaults(struct nricp_params *p);
 
 /* Called after every stiffness step with the current deformed source
- * (#VS by 3), the step index and its stiffness; return nonzero to stop. */
+ * (#VS by 3), the step index and its stiffness; return nonzero to stop.
+ * Steps >= p->steps are untangling rounds (return value ignored): flipped
+ * is the number of flipped faces that round starts from (-1 for the
+ * schedule's steps). */
 typedef int (*nricp_step_fn)(void *ctx, int step, double alpha, double beta, int inner,
-                             int rejected, const double *X);
+                             int rejected, int flipped, const double *X);
 
 /* VS: #VS by 3 source (already rigidly aligned), FS: #FS by 3;
  * VT: #VT by 3 target, FT: #FT by 3.

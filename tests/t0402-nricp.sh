@@ -92,6 +92,8 @@ test_expect_success 'procrustes without landmarks needs equal vertex counts' '
 test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage nricp src.mesh &&
 	test_must_fail_usage nricp --align sideways src.mesh tgt.mesh &&
-	test_must_fail_usage nricp -k 0 src.mesh tgt.mesh
+	test_must_fail_usage nricp -k 0 src.mesh tgt.mesh &&
+	test_must_fail_usage nricp --untangle -1 src.mesh tgt.mesh &&
+	test_must_fail_usage nricp --untangle-weight 0 src.mesh tgt.mesh
 '
 test_done

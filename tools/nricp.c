@@ -41,6 +41,8 @@ static const char help[] =
 "      --backward W      weight of target->source correspondences (default 1, 0 off)\n"
 "      --max-inner N     iterations per stiffness (default 3)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
+"      --untangle N      untangling rounds while faces are flipped (default 10, 0 off)\n"
+"      --untangle-weight W  weight of the target in untangling (default 100)\n"
 "      --relax N         final fold-removal sweeps (default 5, 0 off)\n"
 "      --eps E           inner loop tolerance, in diagonals (default 1e-4)\n"
 "      --init-deform     first deform the source toward the landmarks with\n"
@@ -65,12 +67,12 @@ struct options {
 static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
-           O_EPS, O_SOUT, O_RAW, O_VERSION, O_RELAX, O_INIT, O_INITK, O_NV };
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_RELAX, O_INIT, O_INITK, O_NV, O_UNT, O_UNTW };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
-        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"relax", 1, 0, O_RELAX}, {"init-deform", 0, 0, O_INIT}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
+        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"relax", 1, 0, O_RELAX}, {"untangle", 1, 0, O_UNT}, {"untangle-weight", 1, 0, O_UNTW}, {"init-deform", 0, 0, O_INIT}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
         {0, 0, 0, 0}};
@@ -94,6 +96,8 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_INIT: o->init_deform = 1; break;
         case O_NV: o->p.nearest_vertex = 1; break;
         case O_INITK: o->init_stiffness = optarg; o->init_deform = 1; break;
+        case O_UNT: o->p.untangle = (int)arg_long(optarg, "--untangle"); break;
+        case O_UNTW: o->p.untangle_weight = arg_double(optarg, "--untangle-weight"); break;
         case O_RELAX: o->p.relax = (int)arg_long(optarg, "--relax"); break;
         case O_EPS: o->p.eps = arg_double(optarg, "--eps"); break;
         case O_SOUT: o->steps_out = optarg; break;
@@ -116,15 +120,23 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->p.max_angle > 0) || o->p.max_angle > 180) usage_error("--max-angle must be in (0, 180]");
     if (o->p.max_inner < 1) usage_error("--max-inner must be >= 1");
     if (o->p.relax < 0) usage_error("--relax must be >= 0");
+    if (o->p.untangle < 0 || o->p.untangle > 1000) usage_error("--untangle must be in 0..1000");
+    if (!(o->p.untangle_weight > 0) || o->p.untangle_weight > 1e9)
+        usage_error("--untangle-weight must be in (0, 1e9]");
     if (!(o->p.eps >= 0)) usage_error("--eps must be >= 0");
 }
 
-struct steps { double *frames; int n, cap, nv; struct progress pr; double t0; };
+struct steps { double *frames; int n, cap, nv, nsteps; struct progress pr; double t0; };
 
 static int on_step(void *ctx, int step, double alpha, double beta, int inner, int rejected,
-                   const double *X)
+                   int flipped, const double *X)
 {
     struct steps *s = ctx;
+    if (flipped >= 0) {
+        info(1, "untangling round %d: %d flipped faces, %.2f s", step - s->nsteps + 1, flipped,
+             now_seconds() - s->t0);
+        return 0;
+    }
     if (s->frames) {
         memcpy(s->frames + (size_t)s->n * s->nv * 3, X, (size_t)s->nv * 3 * sizeof *X);
         s->n++;
@@ -195,6 +207,7 @@ int main(int argc, char **argv)
     }
     struct steps st = {0};
     st.nv = S.nv;
+    st.nsteps = o.p.steps;
     st.t0 = t0;
     if (o.steps_out) {
         st.frames = malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *st.frames);
