@@ -43,14 +43,14 @@ if [ -e "$DATA/scans/camel-gallop-02.off" ]; then
     hb=$(mesh-metrics --no-header -r "$T/c2.mesh" "$T/b.mesh" | awk '{ print 100 * $3 }')
     fb=$(mesh-metrics --no-header -r "$T/c2.mesh" "$T/b.mesh" | awk '{ print $5 }')
     echo "nricp --init-deform camel 01->02 Hausdorff: $h % of the diagonal ($f flipped faces) | baseline nearest-vertex $hb % ($fb flipped) | ratio $(ratio "$h" "$hb") (goal < 1 %; trimesh peer 3.4-3.7 %)"
-    t=$(best3 nricp --relax 0 -l "$LM" "$T/c1.mesh" "$T/c2.mesh")
+    t=$(best3 nricp --relax 0 --untangle 0 -l "$LM" "$T/c1.mesh" "$T/c2.mesh")
     tb=$(best3 nricp --nearest-vertex --backward 0 -l "$LM" "$T/c1.mesh" "$T/c2.mesh")
-    echo "nricp (plain, --relax 0) camel 01->02 time: $t s CPU | baseline nearest-vertex $tb s | ratio $(ratio "$t" "$tb") (goal <= 3 s; trimesh peer 10-17 s)"
-    nricp --relax 0 -l "$LM" "$T/c1.mesh" "$T/c2.mesh" >"$T/rp.mesh" || exit 1
+    echo "nricp (plain, --relax 0 --untangle 0) camel 01->02 time: $t s CPU | baseline nearest-vertex $tb s | ratio $(ratio "$t" "$tb") (goal <= 3 s; trimesh peer 10-17 s)"
+    nricp --relax 0 --untangle 0 -l "$LM" "$T/c1.mesh" "$T/c2.mesh" >"$T/rp.mesh" || exit 1
     hp=$(mesh-metrics --no-header -r "$T/c2.mesh" "$T/rp.mesh" | awk '{ print 100 * $3 }')
     fp=$(mesh-metrics --no-header -r "$T/c2.mesh" "$T/rp.mesh" | awk '{ print $5 }')
     ti=$(best3 nricp --init-deform -l "$LM" "$T/c1.mesh" "$T/c2.mesh")
-    echo "nricp --init-deform camel 01->02: $h % ($f flipped) in $ti s CPU | baseline plain nricp --relax 0 $hp % ($fp flipped) in $t s | ratio $(ratio "$ti" "$t") in time"
+    echo "nricp --init-deform camel 01->02: $h % ($f flipped) in $ti s CPU | baseline plain nricp --relax 0 --untangle 0 $hp % ($fp flipped) in $t s | ratio $(ratio "$ti" "$t") in time"
     if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
         mesh-import "$DATA/scans/camel-gallop-05.off" >"$T/c5.mesh" || exit 1
         LM5="$ROOT/examples/clay/landmarks-01-05-direct.txt"
