@@ -98,6 +98,8 @@ test_expect_success 'bad input: truncated stream' '
 test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage seg-graphcut tube.mesh 2>/dev/null &&
 	test_must_fail_usage seg-graphcut --seed 0-1 tube.mesh 2>/dev/null &&
-	test_must_fail_usage seg-graphcut -g -1 --seed 0:0 --seed 1:3 tube.mesh 2>/dev/null
+	test_must_fail_usage seg-graphcut -g -1 --seed 0:0 --seed 1:3 tube.mesh 2>/dev/null &&
+	test_must_fail_usage seg-graphcut -b -0.1 --seed 0:0 --seed 1:3 tube.mesh 2>/dev/null &&
+	test_must_fail_usage seg-graphcut -r 0.5 --seed 0:0 --seed 1:3 tube.mesh 2>/dev/null
 '
 test_done

@@ -41,6 +41,11 @@ static const char help[] =
 "  -m, --motion K           weight of motion in the seam cost: an edge costs its\n"
 "                           length times 1 + K (d_a + d_b) / d_max, d = mean\n"
 "                           displacement from the average (default 3)\n"
+"  -b, --band B             no unary cost where a triangle's distances to two\n"
+"                           parts' seeds differ by less than B D; D = distance\n"
+"                           between the nearest seeds of two parts (default 0.6)\n"
+"  -r, --seed-radius R      triangles within R D of a seed are fixed to its part\n"
+"                           (default 0.06); -b 0 -r 0: the paper's Eq. 2\n"
 "  -p, --parts S            number of parts (default: largest seed part + 1)\n"
 "      --one-pass           one pass, RMS displacement instead of Eq. 3's sum\n"
 "                           (no second read, no temporary file for pipes)\n"
@@ -60,12 +65,22 @@ static const char help[] =
  * otherwise change with the resolution).  5000 is facecap's resolution. */
 #define UNARY_TRIANGLES 5000.0
 #define DEFAULT_MOTION 3.0
+/* Unary dead band and fixed seed disks (see the unary below), in units of
+ * the distance D between the nearest seeds of two parts.  Measured on
+ * facecap (seeds 1539/1034 and 36 pairs jittered within two rings of
+ * them, gamma 100): with radius 0.06 every band in 0.5..0.8 gives one and
+ * the same labeling for all 36 pairs (band 0.9: the seam leaves the face;
+ * 0.4: 32/36), and so does every radius in 0.03..0.1 at band 0.6 (0.02:
+ * some seeds are cut out alone; 0.15: the seam touches a disk); band 0.6,
+ * radius 0.1 also at gamma 50, 200 and 400. */
+#define DEFAULT_BAND 0.6
+#define DEFAULT_SEED_RADIUS 0.06
 
 struct seed { int part, face; double p[3]; int is_point; long line; };
 
 struct options {
     const char *input, *seeds_file, *output;
-    double gamma, motion;
+    double gamma, motion, band, seed_radius;
     int parts, one_pass, max_cycles, no_weld;
     struct seed *seeds;
     int nseeds, cap;
@@ -84,14 +99,17 @@ static void add_seed(struct options *o, struct seed s)
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
-        {"seed", 1, 0, 'S'}, {"seeds", 1, 0, 'F'}, {"gamma", 1, 0, 'g'}, {"motion", 1, 0, 'm'}, {"parts", 1, 0, 'p'},
+        {"seed", 1, 0, 'S'}, {"seeds", 1, 0, 'F'}, {"gamma", 1, 0, 'g'}, {"motion", 1, 0, 'm'},
+        {"band", 1, 0, 'b'}, {"seed-radius", 1, 0, 'r'}, {"parts", 1, 0, 'p'},
         {"one-pass", 0, 0, '1'}, {"no-weld", 0, 0, 'W'}, {"max-cycles", 1, 0, 'M'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->gamma = 100;
     o->motion = DEFAULT_MOTION;
+    o->band = DEFAULT_BAND;
+    o->seed_radius = DEFAULT_SEED_RADIUS;
     int c;
-    while ((c = getopt_long(argc, argv, "g:m:p:o:vh", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "g:m:b:r:p:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'S': {
             char *colon = strchr(optarg, ':');
@@ -107,6 +125,8 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'F': o->seeds_file = optarg; break;
         case 'g': o->gamma = arg_double(optarg, "--gamma"); break;
         case 'm': o->motion = arg_double(optarg, "--motion"); break;
+        case 'b': o->band = arg_double(optarg, "--band"); break;
+        case 'r': o->seed_radius = arg_double(optarg, "--seed-radius"); break;
         case 'p': o->parts = (int)arg_long(optarg, "--parts"); break;
         case '1': o->one_pass = 1; break;
         case 'W': o->no_weld = 1; break;
@@ -122,6 +142,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->input = optind < argc ? argv[optind] : NULL;
     if (!(o->gamma >= 0) || !isfinite(o->gamma)) usage_error("--gamma must be >= 0");
     if (!(o->motion >= 0) || !isfinite(o->motion)) usage_error("--motion must be >= 0");
+    if (!(o->band >= 0) || !isfinite(o->band)) usage_error("--band must be >= 0");
+    if (!(o->seed_radius >= 0 && o->seed_radius < 0.5)) usage_error("--seed-radius must be in [0, 0.5)");
     if (o->parts && o->parts < 2) usage_error("--parts must be at least 2");
     if (o->max_cycles < 0) usage_error("--max-cycles must be >= 0");
     if (!o->seeds_file && o->nseeds == 0) usage_error("no seeds (--seed PART:FACE or --seeds FILE)");
@@ -431,6 +453,52 @@ int main(int argc, char **argv)
         }
     }
     geodesic_free(g);
+
+    /* Robustness to the seed placement (Fig. 4).  With Eq. 2 literally, a
+     * triangle's preference between parts p and q is d_p - d_q: it changes
+     * sign on the bisector of the seeds, so wherever the bisector crosses
+     * cheap-to-cut, motionless geometry (facecap's ears) a seed moved by one
+     * triangle moves the seam (20 of 36 jittered pairs differed, by up to
+     * 399 triangles).  Larger gamma (200..1000) does not help here: the
+     * chin seed triangle is cut out alone by its 3 short edges.  Measured
+     * and rejected as well: a truncated unary min(d_p, T) (T 0.2..0.7 D: a
+     * seed cut out alone, or the seam leaves the face), a band relative to
+     * d_p + d_q, a band only off the seeds' axis (d_p + d_q > 1.3..1.7 D),
+     * and any slope left in the band (0.2..0.5 of Eq. 2: 8..16 of 36).  The seeds should only pick the sides, the seam goes
+     * where the motion is small and the cut short.  So:
+     *  - dead band: u_p = max(0, d_p - min_q d_q - B D), i.e. no preference
+     *    where the distances to two parts differ by less than B D; there the
+     *    binary term alone places the seam, whatever the seeds' exact spot;
+     *  - seed disks: triangles within R D of a seed of part p are fixed to
+     *    p.  Without them, a single seed triangle is cut out by its 3 short
+     *    edges as soon as the unary is weak near it (what larger gamma did);
+     *  D = the distance between the nearest seeds of two different parts.
+     * Subtracting min_q d_q (a per-triangle constant) does not change the
+     * minimizer, so -b 0 -r 0 is Eq. 2 exactly.  Components without seeds
+     * keep their straight-line distances below (no seam to place there). */
+    double dseeds = INFINITY;
+    for (int f = 0; f < nf; f++)
+        if (seed_part[f] >= 0)
+            for (int p = 0; p < s; p++)
+                if (p != seed_part[f] && U[(size_t)f * s + p] < dseeds) dseeds = U[(size_t)f * s + p];
+    int *disk = malloc(sizeof(int) * (nf ? nf : 1));
+    if (!disk) die("out of memory");
+    int ndisk = 0;
+    for (int f = 0; f < nf; f++) {
+        double *u = U + (size_t)f * s, m = INFINITY;
+        disk[f] = -1;
+        for (int p = 0; p < s; p++)
+            if (u[p] < m) { m = u[p]; if (isfinite(dseeds) && m < o.seed_radius * dseeds) disk[f] = p; }
+        if (!isfinite(m)) continue;   /* no seed in this component */
+        ndisk += disk[f] >= 0 && seed_part[f] < 0;
+        for (int p = 0; p < s; p++)
+            if (isfinite(u[p])) u[p] = fmax(0, u[p] - m - o.band * dseeds);
+    }
+    if (isfinite(dseeds))
+        info(1, "seed distance D %g bbox diagonals: band %g D, %d triangles in seed disks of radius %g D",
+             dseeds, o.band, ndisk, o.seed_radius);
+    else
+        info(1, "the parts' seeds lie in different components: no band, no seed disks");
     double *A = malloc(sizeof(double) * (nf ? nf : 1)), atot = 0;
     if (!A) die("out of memory");
     face_areas(avg, F, nf, A);
@@ -459,10 +527,12 @@ int main(int argc, char **argv)
         }
         /* area weight: as if the surface had UNARY_TRIANGLES equal triangles */
         for (int p = 0; p < s; p++) U[(size_t)f * s + p] *= UNARY_TRIANGLES * A[f] / atot;
-        if (seed_part[f] >= 0)
-            for (int p = 0; p < s; p++) U[(size_t)f * s + p] = p == seed_part[f] ? 0 : INFINITY;
+        int fix = seed_part[f] >= 0 ? seed_part[f] : disk[f];
+        if (fix >= 0)
+            for (int p = 0; p < s; p++) U[(size_t)f * s + p] = p == fix ? 0 : INFINITY;
     }
     free(A);
+    free(disk);
     if (unreachable)
         info(1, "%d triangles in components without seeds: straight-line distances used", unreachable);
     double t3 = now_seconds();
