@@ -59,6 +59,8 @@ test_expect_success 'bad input fails cleanly' '
 	test_fails_cleanly assembly-sheet la short &&
 	printf "0\n9\n1\n1\n" >big &&
 	test_fails_cleanly assembly-sheet -s solid.mesh big &&
+	: >nolabels &&
+	test_fails_cleanly assembly-sheet nolabels &&
 	head -12 lib.mesh >trunc.mesh &&
 	test_fails_cleanly shell-extrude trunc.mesh &&
 	test_must_fail_usage shell-extrude -t -1 lib.mesh &&

@@ -102,6 +102,8 @@ int main(int argc, char **argv)
         int rows;
         if (labels_read(argv[optind + p], n, "frames", 0, hi, &L[p], &rows) < 0) die("%s", cm_errmsg());
         n = rows;
+        if (n == 0)
+            die("cannot read '%s': no labels (one piece id per frame expected)", argv[optind + p]);
         if (!solids)
             for (int f = 0; f < n; f++) if (L[p][f] + 1 > npieces[p]) npieces[p] = L[p][f] + 1;
     }
