@@ -4,6 +4,7 @@
 #include "geometry.h"
 #include "polar.h"
 #include "spd.h"
+#include "laplacian.h"
 #include "topology.h"
 #include <math.h>
 #include <stdlib.h>
@@ -19,17 +20,6 @@ struct clay_deform {
     double lambda, vol0, eps;
     struct spd_solver *S;
 };
-
-static double cot_at(const double *a, const double *b, const double *c)
-{
-    /* cotangent of the angle at a in triangle abc */
-    double u[3], v[3], x[3];
-    sub3(b, a, u);
-    sub3(c, a, v);
-    cross3(u, v, x);
-    double s = norm3(x);
-    return s > 0 ? dot3(u, v) / s : 0;
-}
 
 struct clay_deform *clay_deform_new(const double *V, const int *F, int nv, int nf,
                                     const double *k, const int *H, int nh, double lambda)
@@ -50,12 +40,7 @@ struct clay_deform *clay_deform_new(const double *V, const int *F, int nv, int n
     c->W = calloc((size_t)t.ne + 1, sizeof *c->W);
     c->H = malloc((size_t)nh * sizeof *c->H + 1);
     memcpy(c->H, H, (size_t)nh * sizeof *c->H);
-    for (int f = 0; f < nf; f++)
-        for (int q = 0; q < 3; q++) {
-            int a = F[3 * f + q], b = F[3 * f + (q + 1) % 3], o = F[3 * f + (q + 2) % 3];
-            int e = topology_edge(&t, a, b);
-            c->W[e] += 0.5 * cot_at(V + 3 * o, V + 3 * a, V + 3 * b);
-        }
+    cot_edge_weights(V, F, nf, &t, c->W);
     /* clamp (obtuse pairs) and scale by the edge stiffness */
     double mean = 0;
     for (int e = 0; e < t.ne; e++) mean += fabs(c->W[e]) / t.ne;

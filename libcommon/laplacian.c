@@ -1,6 +1,7 @@
 /* laplacian.c -- see laplacian.h */
 #include "laplacian.h"
 #include "geometry.h"
+#include "topology.h"
 #include <math.h>
 #include <string.h>
 
@@ -37,6 +38,18 @@ void cot_laplacian_triplets(const double *V, const int *F, int nf, double scale,
             triplets_add(T, i, i, -w);
             triplets_add(T, j, j, -w);
         }
+    }
+}
+
+void cot_edge_weights(const double *V, const int *F, int nf, const struct topology *t, double *W)
+{
+    memset(W, 0, (size_t)t->ne * sizeof *W);
+    for (int f = 0; f < nf; f++) {
+        double cot[3], a2;
+        face_cots(V, F, f, cot, &a2);
+        /* FE[3f+c] is the edge from corner c to c+1, opposite corner c+2 */
+        for (int c = 0; c < 3; c++)
+            W[t->FE[3 * f + c]] += 0.5 * cot[(c + 2) % 3];
     }
 }
 

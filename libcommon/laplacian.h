@@ -20,6 +20,13 @@ void cot_laplacian_triplets(const double *V, const int *F, int nf, double scale,
 /* L: #V by #V cot Laplacian, unsymmetric storage (stype 0). */
 cholmod_sparse *cot_laplacian(const double *V, const int *F, int nv, int nf);
 
+/* W: #E per-edge cotangent weights (out), W[e] = (cot a_e + cot b_e) / 2 for
+ * edge e = (E[2e], E[2e+1]) of the topology t built from F (a boundary
+ * edge has one term): the cot Laplacian's off-diagonal entries per edge,
+ * for methods that work on edges (ARAP, shells). */
+struct topology;
+void cot_edge_weights(const double *V, const int *F, int nf, const struct topology *t, double *W);
+
 enum mass_type { MASS_BARYCENTRIC, MASS_VORONOI };
 
 /* M: #V diagonal mass entries (out).  Barycentric: a third of the incident

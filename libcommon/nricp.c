@@ -7,7 +7,6 @@
 #include "mesh_distance.h"
 #include "spd.h"
 #include "topology.h"
-#include "progress.h"
 #include <stdio.h>
 #include <math.h>
 #include <stdlib.h>
@@ -197,7 +196,6 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
         double beta = K == 1 ? 0 : p->beta * (1 - (double)k / (K - 1));
         int inner, rejected = 0;
         for (inner = 0; inner < p->max_inner; inner++) {
-            double tq0 = now_seconds();
             /* correspondences, source -> target */
             vertex_normals(P, FS, nvs, nfs, NS);
             closest_points_hinted(TT, P, nvs, first ? NULL : UF, U, UF, UB, NULL);
@@ -241,7 +239,6 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
                     add_row(&S, B, FS + 3 * f, TB + 3 * j, 3, VS, wb, VT + 3 * j);
                 }
             }
-            double tq1 = now_seconds();
             /* landmarks */
             for (int l = 0; l < nl && beta > 0; l++) {
                 double one = 1;
@@ -267,7 +264,6 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
                     if (r < 3) B[(size_t)(4 * i + r) * 3 + r] += wreg;
                 }
             }
-            double tq2 = now_seconds();
             first = 0;
             /* same pattern every time: analysis once, numeric refactor after */
             if (!L) L = spd_factor(S.A);
@@ -279,8 +275,6 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
                 goto done;
             }
             if (spd_solve(L, B, X, 3) < 0) goto done;
-            if (getenv("STOPMO_NRICP_PROFILE"))
-                fprintf(stderr, "corr %.3f assemble %.3f solve %.3f\n", tq1 - tq0, tq2 - tq1, now_seconds() - tq2);
             memcpy(Pold, P, (size_t)nvs * 3 * sizeof *P);
             double ch = 0;
             for (int i = 0; i < nvs; i++) {

@@ -8,6 +8,7 @@
  * unary cost (Eq. 2); alpha-expansion on BK max-flow minimizes Eq. 1.
  */
 #include "alpha_expansion.h"
+#include "closest_point.h"
 #include "cm_error.h"
 #include "geodesic.h"
 #include "geometry.h"
@@ -194,46 +195,6 @@ static void read_seeds(const char *path, struct options *o)
     if (f != stdin) fclose(f);
 }
 
-/* squared distance from p to triangle abc (Ericson, Real-Time Collision
- * Detection 5.1.5) */
-static double point_triangle_d2(const double *p, const double *a, const double *b, const double *c)
-{
-    double ab[3], ac[3], ap[3], q[3];
-    sub3(b, a, ab); sub3(c, a, ac); sub3(p, a, ap);
-    double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
-    if (d1 <= 0 && d2 <= 0) { memcpy(q, a, sizeof q); goto done; }
-    double bp[3]; sub3(p, b, bp);
-    double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
-    if (d3 >= 0 && d4 <= d3) { memcpy(q, b, sizeof q); goto done; }
-    double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-        double v = d1 / (d1 - d3);
-        for (int k = 0; k < 3; k++) q[k] = a[k] + v * ab[k];
-        goto done;
-    }
-    double cp[3]; sub3(p, c, cp);
-    double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
-    if (d6 >= 0 && d5 <= d6) { memcpy(q, c, sizeof q); goto done; }
-    double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-        double w = d2 / (d2 - d6);
-        for (int k = 0; k < 3; k++) q[k] = a[k] + w * ac[k];
-        goto done;
-    }
-    double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-        double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        for (int k = 0; k < 3; k++) q[k] = b[k] + w * (c[k] - b[k]);
-        goto done;
-    }
-    {
-        double den = 1 / (va + vb + vc), v = vb * den, w = vc * den;
-        for (int k = 0; k < 3; k++) q[k] = a[k] + ab[k] * v + ac[k] * w;
-    }
-done:
-    return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
-}
-
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -354,17 +315,16 @@ int main(int argc, char **argv)
         }
     }
 
-    /* seed points -> nearest triangle of the average mesh */
+    /* seed points -> nearest triangle of the average mesh (CGAL AABB tree) */
+    struct closest_point_tree *tree = NULL;
     for (int i = 0; i < o.nseeds; i++) {
         if (!o.seeds[i].is_point) continue;
-        double best = INFINITY;
-        for (int f = 0; f < nf; f++) {
-            double d2 = point_triangle_d2(o.seeds[i].p, avg + 3 * F[3 * f], avg + 3 * F[3 * f + 1],
-                                          avg + 3 * F[3 * f + 2]);
-            if (d2 < best) { best = d2; o.seeds[i].face = f; }
-        }
-        info(2, "seed point line %ld -> face %d (distance %g)", o.seeds[i].line, o.seeds[i].face, sqrt(best));
+        if (!tree && !(tree = closest_point_tree_new(avg, nv, F, nf)))
+            die("%s", cm_errmsg());
+        double c[3], d = closest_point_query(tree, o.seeds[i].p, c, &o.seeds[i].face, NULL);
+        info(2, "seed point line %ld -> face %d (distance %g)", o.seeds[i].line, o.seeds[i].face, d);
     }
+    closest_point_tree_free(tree);
     int *seed_part = malloc(sizeof(int) * (nf ? nf : 1));
     for (int f = 0; f < nf; f++) seed_part[f] = -1;
     for (int i = 0; i < o.nseeds; i++) {

@@ -3,6 +3,8 @@
 #include "laplacian.h"
 #include "geometry.h"
 #include "tap.h"
+#include "topology.h"
+#include <stdlib.h>
 #include "testmesh.h"
 #include <math.h>
 #include <string.h>
@@ -39,6 +41,18 @@ static void check_symmetric_rowsum(const char *what, const double *V, const int 
     ok(asym == 0, "cot_laplacian: symmetric on %s (max |L - L^T| %g)", what, asym);
     ok(rowsum <= 1e-13 * scale, "cot_laplacian: rows_sum_to_zero on %s (max %g)", what, rowsum);
     ok(diag_neg, "cot_laplacian: nonpositive diagonal on %s", what);
+    /* the per-edge weights are the off-diagonal entries */
+    struct topology t;
+    topology_build(F, nf, nv, &t);
+    double *W = malloc((size_t)t.ne * sizeof *W + 1), werr = 0;
+    cot_edge_weights(V, F, nf, &t, W);
+    for (int e = 0; e < t.ne; e++) {
+        double d = fabs(W[e] - D[(size_t)t.E[2 * e] * nv + t.E[2 * e + 1]]);
+        if (d > werr) werr = d;
+    }
+    ok(werr <= 1e-14 * scale, "cot_edge_weights: equal the Laplacian's off-diagonal on %s (max %g)", what, werr);
+    free(W);
+    topology_free(&t);
     free(D);
     sparse_free(&L);
 }
