@@ -5,13 +5,13 @@
  * elsewhere), a soft landmark term, and the enclosed volume restored after
  * every iteration (thesis Eq. 4.63 as a constraint).
  *
- * This stands in for the Froehlich-Botsch thin shell of thesis Eq. 4.60-4.64
- * (stretch + bend + volume + landmarks, Gauss-Newton): the same ingredients
- * (local stiffness weighting the metric term, landmark term, volume), but
- * the local-global ARAP iteration instead of Gauss-Newton on dihedral
- * angles: one CHOLMOD factorization for the whole run, every iteration is
- * one back-substitution.  The thin shell itself is in thin_shell.h
- * (clay-deform --model shell).
+ * This is clay-deform --model arap (nricp --init-deform uses it too): the
+ * same ingredients as the Froehlich-Botsch thin shell of thesis Eq.
+ * 4.60-4.64 (local stiffness weighting the metric term, landmark term,
+ * volume), but the local-global ARAP iteration instead of Gauss-Newton on
+ * dihedral angles: one CHOLMOD factorization for the whole run, every
+ * iteration is one back-substitution.  The thin shell itself, clay-deform's
+ * default model, is in thin_shell.h.
  *
  *   E(X) = sum_edges k_ij w_ij |(x_i - x_j) - R_i (v_i - v_j)|^2
  *        + lambda sum_l |x_l - t_l|^2,

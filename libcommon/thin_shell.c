@@ -2,6 +2,7 @@
 #include "thin_shell.h"
 #include "cm_error.h"
 #include "geometry.h"
+#include "polar.h"
 #include "spd.h"
 #include "topology.h"
 #include <math.h>
@@ -18,7 +19,7 @@ struct thin_shell {
     double *vol0, o[3], wv;
     double V0, wg;     /* rest enclosed volume, sqrt global volume weight / |V0| */
     int *H;
-    double wl;         /* sqrt(lambda) / Lbar */
+    double wl;         /* sqrt(lambda kbar) / Lbar */
     double damping, mu;
     struct spd_solver *S;
     cholmod_sparse *A;  /* J^T J + mu I (upper), pattern fixed after the first iteration */
@@ -27,7 +28,7 @@ struct thin_shell {
 
 void thin_shell_defaults(struct thin_shell_params *p)
 {
-    p->ks = 1; p->kb = 1; p->kv = 0; p->kvg = 1; p->lambda = 100; p->damping = 1e-6;
+    p->ks = 1; p->kb = 1; p->kv = 0.1; p->kvg = 10; p->lambda = 100; p->damping = 1e-6;
 }
 
 static double face_area3(const double *a, const double *b, const double *c)
@@ -166,7 +167,11 @@ struct thin_shell *thin_shell_new(const double *V, const int *F, int nv, int nf,
     if (!(vbar > 0)) s->use_vol = 0;
     s->H = malloc((size_t)nh * sizeof *s->H + 1);
     memcpy(s->H, H, (size_t)nh * sizeof *s->H);
-    s->wl = lbar > 0 ? sqrt(p->lambda) / lbar : 0;
+    /* the landmark term scales with the mean stiffness like the volume
+     * terms (thesis: "weighted proportional to the stretch and bend
+     * stiffnesses"), so only the shape of the stiffness map matters, not
+     * its scale: k and 10 k give the same deformation */
+    s->wl = lbar > 0 ? sqrt(p->lambda * kbar) / lbar : 0;
     s->damping = p->damping;
     s->nres = s->ne + s->nb + (s->use_vol ? nf : 0) + 3 * nh;
     return s;
@@ -320,6 +325,52 @@ static int *triplet_positions(const struct triplets *T, const cholmod_sparse *A)
     return pos;
 }
 
+/* The apex o of the per-face tetrahedra that fits X best: every tetrahedron
+ * volume is affine in o, vol_f(X, o) = c_f - o . n_f / 6 with
+ * c_f = x_a . (x_b x x_c) / 6 and n_f = x_a x x_b + x_b x x_c + x_c x x_a,
+ * so o = argmin wv^2 sum_f (vol_f(X, o) - vol_f(V))^2 (+ the enclosed-volume
+ * residual, which depends on o only for open meshes) is a 3 by 3 least
+ * squares problem.  Moving o there before every Gauss-Newton iteration
+ * (alternating minimization, so E still never increases) makes the volume
+ * terms blind to rigid motions: X = R V + t has o = R o0 + t and zero
+ * residuals.  With a fixed apex a rigid translation or a rotation about
+ * any other point than o changes the tetrahedra and is resisted.
+ * A tiny Tikhonov term toward the current o keeps flat meshes determined. */
+static void fit_apex(struct thin_shell *s, const double *X)
+{
+    if (!s->use_vol) return;
+    double M[9] = {0}, rhs[3] = {0}, Mi[9], tr = 0;
+    double ng[3] = {0}, cg = 0;
+    for (int f = 0; f < s->nf; f++) {
+        const double *a = X + 3 * s->F[3 * f], *b = X + 3 * s->F[3 * f + 1], *c = X + 3 * s->F[3 * f + 2];
+        double x[3], n[3], y[3];
+        cross3(b, c, x);
+        double cf = dot3(a, x) / 6;
+        cross3(a, b, n);
+        cross3(c, a, y);
+        for (int d = 0; d < 3; d++) n[d] = (n[d] + x[d] + y[d]) / 6;
+        double w2 = s->wv * s->wv, res = cf - s->vol0[f];
+        for (int r = 0; r < 3; r++) {
+            rhs[r] += w2 * n[r] * res;
+            for (int q = 0; q < 3; q++) M[3 * r + q] += w2 * n[r] * n[q];
+        }
+        for (int d = 0; d < 3; d++) ng[d] += n[d];
+        cg += cf;
+    }
+    if (s->wg != 0) {      /* enclosed-volume residual wg (cg - ng . o - V0) */
+        double w2 = s->wg * s->wg;
+        for (int r = 0; r < 3; r++) {
+            rhs[r] += w2 * ng[r] * (cg - s->V0);
+            for (int q = 0; q < 3; q++) M[3 * r + q] += w2 * ng[r] * ng[q];
+        }
+    }
+    tr = M[0] + M[4] + M[8];
+    if (!(tr > 0)) return;
+    for (int d = 0; d < 3; d++) { M[4 * d] += 1e-9 * tr; rhs[d] += 1e-9 * tr * s->o[d]; }
+    if (mat3_inverse(M, Mi) < 0) return;
+    for (int r = 0; r < 3; r++) s->o[r] = Mi[3 * r] * rhs[0] + Mi[3 * r + 1] * rhs[1] + Mi[3 * r + 2] * rhs[2];
+}
+
 int thin_shell_solve(struct thin_shell *s, const double *T, int iters, double *X, double *Eout)
 {
     int n = 3 * s->nv, rc = 0;
@@ -328,6 +379,7 @@ int thin_shell_solve(struct thin_shell *s, const double *T, int iters, double *X
     double *b = malloc((size_t)n * sizeof *b + 1), *dx = malloc((size_t)n * sizeof *dx + 1);
     double *Xt = malloc((size_t)n * sizeof *Xt + 1), *gG = malloc((size_t)n * sizeof *gG + 1);
     double *B2 = malloc((size_t)n * 2 * sizeof *B2 + 1);
+    fit_apex(s, X);
     double rG = thin_shell_volume_residual(s, X, gG);
     double E = thin_shell_residuals(s, X, T, r, idx, g) + 0.5 * rG * rG;
     if (Eout) Eout[0] = E;
@@ -380,6 +432,7 @@ int thin_shell_solve(struct thin_shell *s, const double *T, int iters, double *X
         if (!accepted) { done = 1; if (Eout) Eout[it + 1] = E; continue; }
         memcpy(X, Xt, (size_t)n * sizeof *X);
         double Eold = E;
+        fit_apex(s, X);
         rG = thin_shell_volume_residual(s, X, gG);
         E = thin_shell_residuals(s, X, T, r, idx, g) + 0.5 * rG * rG;
         if (Eout) Eout[it + 1] = E;

@@ -18,14 +18,16 @@
  *   volume, every face f = (a,b,c):
  *       r_f = sqrt(kv kbar) (vol_f(X) - vol_f(V)) / vbar,
  *       vol_f(X) = (x_a - o) . ((x_b - o) x (x_c - o)) / 6
- *     (o: the rest centroid, fixed; vbar: mean |vol_f(V)|; for a closed
- *      mesh sum_f vol_f is the enclosed volume, thesis Eq. 4.63; kbar: the
- *      mean vertex stiffness, so the volume keeps its weight against the
+ *     (o: the apex, see below; vbar: mean |vol_f(V)|; for a closed mesh
+ *      sum_f vol_f is the enclosed volume, thesis Eq. 4.63; kbar: the mean
+ *      vertex stiffness, so the volume keeps its weight against the
  *      stretch and bend terms whatever the scale of the stiffness map)
  *   enclosed volume (one residual, its Jacobian row is dense):
  *       r_V = sqrt(kvg kbar #F) (sum_f vol_f(X) - sum_f vol_f(V)) / |sum_f vol_f(V)|
  *   landmarks, every handle h and coordinate d:
- *       r_hd = sqrt(lambda) (x_{H_h,d} - t_{h,d}) / Lbar
+ *       r_hd = sqrt(lambda kbar) (x_{H_h,d} - t_{h,d}) / Lbar
+ *     (kbar again: the thesis weights the landmarks "proportional to the
+ *      stretch and bend stiffnesses"; so k and c k give the same result)
  *
  * with k_e = (k_i + k_j) / 2 the edge stiffness averaged from the vertex
  * stiffness k (thesis Sec. 4.4.1; see stiffness.h), L_e the rest edge
@@ -40,11 +42,16 @@
  * (one extra right-hand side).  Iterations stop early once the energy
  * decreases by less than 1e-6 relatively.
  *
- * The per-face term pins every tetrahedron (o, face) to its rest volume;
- * as o is fixed, a face that rotates about o (any bend) changes its
- * tetrahedron even when the surface moves isometrically, so this term
- * resists bending.  The enclosed-volume term only constrains the sum.
- * Defaults: kv = 0, kvg = 1 (measured, see clay-deform(1)).
+ * The apex o of the per-face tetrahedra is the rest centroid for the rest
+ * volumes; before every Gauss-Newton iteration it moves to the point that
+ * fits the current tetrahedra best (a 3 by 3 least-squares problem, as
+ * every vol_f is affine in o; alternating minimization, so E still never
+ * increases).  A rigid motion of the whole surface then leaves every
+ * tetrahedron unchanged; with a fixed apex a translation or a rotation
+ * about another point would be resisted.  The per-face term still resists
+ * isometric bending a little (the faces on the outside of a bend move away
+ * from the apex), so its default weight is small: kv = 0.1 with kvg = 10
+ * (measured, see clay-deform(1)).
  */
 #ifndef CM_THIN_SHELL_H
 #define CM_THIN_SHELL_H
@@ -55,8 +62,8 @@ extern "C" {
 struct thin_shell_params {
     double ks;       /* stretch weight, default 1 */
     double kb;       /* bend weight, default 1 */
-    double kv;       /* per-face volume weight, default 0 (0: no per-face term) */
-    double kvg;      /* enclosed-volume weight, default 1 (0: none; closed meshes) */
+    double kv;       /* per-face volume weight, default 0.1 (0: no per-face term) */
+    double kvg;      /* enclosed-volume weight, default 10 (0: none; closed meshes) */
     double lambda;   /* landmark weight, default 100 */
     double damping;  /* Levenberg damping relative to mean diag(J^T J), default 1e-6 */
 };
@@ -77,7 +84,9 @@ void thin_shell_free(struct thin_shell *s);
 /* Number of residuals (stretch, bend, volume, landmark, in that order). */
 int thin_shell_nres(const struct thin_shell *s);
 
-/* Residuals at X (#V by 3) for handle targets T (nh by 3).
+/* Residuals at X (#V by 3) for handle targets T (nh by 3), with the
+ * per-face apex where the last thin_shell_solve left it (at first: the
+ * rest centroid).
  * r: nres (out).  With idx and g non-NULL also the Jacobian: residual q
  * depends on the vertices idx[4q .. 4q+3] (-1 = unused) with gradient
  * g[12q + 3a + d] = d r_q / d X[idx[4q+a]][d].  idx: nres by 4, g: nres by 12.
@@ -89,7 +98,7 @@ double thin_shell_residuals(const struct thin_shell *s, const double *X, const d
  * d r_V / d X (0 when kvg = 0). */
 double thin_shell_volume_residual(const struct thin_shell *s, const double *X, double *grad);
 
-/* Energy 1/2 (sum r^2 + r_V^2) at X. */
+/* Energy 1/2 (sum r^2 + r_V^2) at X (apex as for thin_shell_residuals). */
 double thin_shell_energy(const struct thin_shell *s, const double *X, const double *T);
 
 /* Run `iters` Gauss-Newton iterations toward handle targets T (nh by 3).

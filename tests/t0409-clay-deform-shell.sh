@@ -12,7 +12,7 @@ test_expect_success 'setup: a closed cylinder, its top pulled sideways and down'
 	stiffness -l marks.txt cyl.mesh >k.txt
 '
 test_expect_success 'shell: bends toward the landmarks, volume within 2%, energy never rises' '
-	clay-deform -v -m shell -k k.txt -l marks.txt --poses poses.mesh cyl.mesh >bent.mesh 2>log.txt &&
+	clay-deform -v -k k.txt -l marks.txt --poses poses.mesh cyl.mesh >bent.mesh 2>log.txt &&
 	mesh-metrics --no-header -r cyl.mesh bent.mesh >m.txt &&
 	v=$(awk "{ x = \$6; print (x < 0 ? -x : x) }" m.txt) && echo "volume change $v" &&
 	test_le "$v" 0.02 &&
@@ -23,7 +23,7 @@ test_expect_success 'shell: bends toward the landmarks, volume within 2%, energy
 	awk "/shell energy/ { if (\$(NF) + 0 > \$(NF - 2) + 0) bad = 1 } END { exit bad }" log.txt
 '
 test_expect_success 'shell: local stiffness gives lower mean |area distortion| than global' '
-	clay-deform -m shell -l marks.txt cyl.mesh >global.mesh &&
+	clay-deform -l marks.txt cyl.mesh >global.mesh &&
 	mesh-metrics --no-header -r cyl.mesh global.mesh >g.txt &&
 	v=$(awk "{ x = \$6; print (x < 0 ? -x : x) }" g.txt) && test_le "$v" 0.02 &&
 	al=$(awk "{ print \$12 }" m.txt) && ag=$(awk "{ print \$12 }" g.txt) &&
@@ -36,13 +36,34 @@ test_expect_success 'shell: without volume terms the bend loses more volume' '
 	v=$(awk "{ x = \$6; print (x < 0 ? -x : x) }" m.txt) && echo "no volume $vn, volume kept $v" &&
 	test_le "$v" "$vn"
 '
+test_expect_success 'shell: only the shape of the stiffness map matters, not its scale' '
+	awk "{ print 10 * \$1 }" k.txt >k10.txt &&
+	clay-deform -k k10.txt -l marks.txt cyl.mesh >bent10.mesh &&
+	mesh-metrics --no-header -r cyl.mesh bent10.mesh >m10.txt &&
+	a=$(awk "{ print \$12 }" m.txt) && a10=$(awk "{ print \$12 }" m10.txt) &&
+	echo "mean |d_A| with k $a, with 10 k $a10" && test_near "$a10" "$a" 0.002 &&
+	mesh-metrics --no-header -r bent.mesh bent10.mesh >d10.txt &&
+	h=$(awk "{ print \$3 }" d10.txt) && echo "Hausdorff k vs 10 k: $h diagonals" && test_le "$h" 0.005
+'
+test_expect_success 'shell: landmarks that move rigidly move the cylinder rigidly (volume terms included)' '
+	awk "BEGIN { c = cos(0.5236); s = sin(0.5236) }
+	     /^frame [0-9]/ { on = 1; i = 0; next }
+	     on { if (i == 0 || i == 100 || i == 200 || i == 300 || i == 401)
+	          printf \"%d %.9g %.9g %.9g\\n\", i, c * \$1 - s * \$2 + 0.3, s * \$1 + c * \$2 + 0.2, \$3 + 0.1; i++ }" \
+	    cyl.mesh >rigid.txt &&
+	test "$(wc -l <rigid.txt)" -eq 5 &&
+	clay-deform -k k.txt -l rigid.txt cyl.mesh >rigid.mesh &&
+	mesh-metrics --no-header -r cyl.mesh rigid.mesh >r.txt &&
+	e=$(awk "{ print \$11 }" r.txt) && a=$(awk "{ print \$12 }" r.txt) &&
+	echo "rigid motion: max edge strain $e, mean |d_A| $a" && test_le "$e" 0.03 && test_le "$a" 0.01
+'
 test_expect_success 'shell: per-face volume term and open meshes run' '
-	clay-deform -m shell -n 2 --face-volume 0.1 -k k.txt -l marks.txt cyl.mesh >fv.mesh &&
+	clay-deform -n 2 --face-volume 1 --volume-weight 0 -k k.txt -l marks.txt cyl.mesh >fv.mesh &&
 	mesh-metrics --no-header -r cyl.mesh fv.mesh >/dev/null &&
 	mesh-gen -n 16 -m 24 cylinder >open.mesh &&
 	echo "399 0.6 0 0.75" >open-marks.txt && echo "0 0.25 0 0" >>open-marks.txt &&
-	test_fails_cleanly clay-deform -m shell -l open-marks.txt open.mesh &&
-	clay-deform -m shell --no-volume -n 2 -l open-marks.txt open.mesh >/dev/null
+	test_fails_cleanly clay-deform -l open-marks.txt open.mesh &&
+	clay-deform --no-volume -n 2 -l open-marks.txt open.mesh >/dev/null
 '
 test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage clay-deform -m clay -l marks.txt cyl.mesh &&

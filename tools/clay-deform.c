@@ -31,15 +31,15 @@ static const char help[] =
 "  -l, --landmarks FILE  'src_vertex dst_vertex' (needs TARGET) or 'src_vertex x y z'\n"
 "  -k, --stiffness FILE  per-vertex stiffness column (see stiffness(1)); default uniform\n"
 "  -n, --steps S         landmark targets move there in S steps (default 10)\n"
-"  -m, --model M         shell (Froehlich-Botsch thin shell, Gauss-Newton) or arap\n"
-"                        (ARAP shell + global volume restoration); default arap\n"
+"  -m, --model M         shell (Froehlich-Botsch thin shell, Gauss-Newton; the\n"
+"                        default) or arap (ARAP shell + volume restoration)\n"
 "  -i, --iters N         Gauss-Newton (shell) or local-global (arap) iterations\n"
 "                        per step (default 5)\n"
 "      --lambda L        landmark weight relative to the shell (default 100)\n"
 "      --stretch S       shell: stretch weight (default 1)\n"
 "      --bend B          shell: bend weight (default 1)\n"
-"      --volume-weight W shell: enclosed-volume weight (default 1)\n"
-"      --face-volume W   shell: per-face tetrahedron volume weight (default 0)\n"
+"      --volume-weight W shell: enclosed-volume weight (default 10)\n"
+"      --face-volume W   shell: per-face tetrahedron volume weight (default 0.1)\n"
 "      --hausdorff H     stop once the symmetric Hausdorff distance to TARGET is\n"
 "                        below H bounding-box diagonals (default 0: run all steps)\n"
 "      --no-volume       no volume term / restoration (open meshes need this)\n"
@@ -68,7 +68,7 @@ int main(int argc, char **argv)
         {"face-volume", 1, 0, O_KF}, {0, 0, 0, 0}};
     struct thin_shell_params sp_;
     thin_shell_defaults(&sp_);
-    int shell = 0;
+    int shell = 1;
     const char *lmfile = NULL, *kfile = NULL, *poses = NULL, *output = NULL;
     int steps = 10, iters = 5, keepvol = 1, raw = 0, c;
     double lambda = 100, haus = 0;
