@@ -57,6 +57,35 @@ test_expect_success 'shell: landmarks that move rigidly move the cylinder rigidl
 	e=$(awk "{ print \$11 }" r.txt) && a=$(awk "{ print \$12 }" r.txt) &&
 	echo "rigid motion: max edge strain $e, mean |d_A| $a" && test_le "$e" 0.03 && test_le "$a" 0.01
 '
+# Why the per-face term matters for the local map (clay-deform(1)): the map
+# is soft only around the pulled vertex, so without it the spokes from that
+# vertex take the pull (strain ~0.75) while the rest of the body strains
+# less than with uniform stiffness.  If the stiffness acted inversely the
+# spokes would be the stiffest edges and this would fail.
+test_expect_success 'shell, --face-volume 0: the local map localizes the strain at the soft vertex' '
+	cat >spoke.awk <<\EOF &&
+# spoke.awk P REF DEF: largest |l/L - 1| on edges at vertex P, and elsewhere
+FNR == 1 { fi++ }
+/^f / { if (fi == 1) { a[nf] = $2; b[nf] = $3; c[nf] = $4; nf++ }; next }
+/^frame [0-9]/ { on = 1; n = 0; next }
+on && NF == 3 { if (fi == 1) { X[n] = $1; Y[n] = $2; Z[n] = $3 } else { x[n] = $1; y[n] = $2; z[n] = $3 }; n++ }
+function strain(i, j,   L, l) {
+	L = sqrt((X[i]-X[j])^2 + (Y[i]-Y[j])^2 + (Z[i]-Z[j])^2)
+	l = sqrt((x[i]-x[j])^2 + (y[i]-y[j])^2 + (z[i]-z[j])^2)
+	return l / L - 1 < 0 ? 1 - l / L : l / L - 1
+}
+function edge(i, j,   s) { s = strain(i, j); if (i == P || j == P) { if (s > sp) sp = s } else if (s > so) so = s }
+END { for (f = 0; f < nf; f++) { edge(a[f], b[f]); edge(b[f], c[f]); edge(c[f], a[f]) }; print sp, so }
+EOF
+	p=$(awk "/^vertices/ { print \$2 - 1 }" cyl.mesh) &&
+	clay-deform --face-volume 0 --volume-weight 1 -k k.txt -l marks.txt cyl.mesh >s0l.mesh &&
+	clay-deform --face-volume 0 --volume-weight 1 -l marks.txt cyl.mesh >s0g.mesh &&
+	set -- $(awk -v P=$p -f spoke.awk cyl.mesh s0l.mesh) $(awk -v P=$p -f spoke.awk cyl.mesh s0g.mesh) &&
+	echo "spokes local $1 global $3; elsewhere local $2 global $4" &&
+	test_le "$3" "$1" && test_le "$2" "$4" && test_le "$2" "$1" &&
+	set -- $(awk -v P=$p -f spoke.awk cyl.mesh bent.mesh) &&
+	echo "default (per-face term): spokes $1, elsewhere $2" && test_le "$1" "$2"
+'
 test_expect_success 'shell: per-face volume term and open meshes run' '
 	clay-deform -n 2 --face-volume 1 --volume-weight 0 -k k.txt -l marks.txt cyl.mesh >fv.mesh &&
 	mesh-metrics --no-header -r cyl.mesh fv.mesh >/dev/null &&
