@@ -20,7 +20,7 @@ struct thin_shell {
     double V0, wg;     /* rest enclosed volume, sqrt global volume weight / |V0| */
     int *H;
     double wl;         /* sqrt(lambda kbar) / Lbar */
-    double damping, mu;
+    double damping, mu, mu0;   /* damping: relative; mu: current, mu0: first */
     struct spd_solver *S;
     cholmod_sparse *A;  /* J^T J + mu I (upper), pattern fixed after the first iteration */
     int *pos;           /* position in A->x of every contribution */
@@ -393,23 +393,34 @@ int thin_shell_solve(struct thin_shell *s, const double *T, int iters, double *X
                 for (int c = 0; c < 12; c++) tr += g[12 * q + c] * g[12 * q + c];
             s->mu = s->damping * (tr > 0 ? tr / n : 1);
             if (!(s->mu > 0)) s->mu = 1e-12;
+            s->mu0 = s->mu;
         }
-        int ok;
-        if (!s->S) {
-            struct triplets T;
-            triplets_init(&T, n, n);
-            normal_equations(s, r, idx, g, s->mu, b, &T, NULL, NULL);
-            s->A = triplets_to_sparse(&T, 1);
-            s->pos = triplet_positions(&T, s->A);
-            triplets_free(&T);
-            if (!s->pos) { rc = -1; cm_seterr("thin shell: lost a matrix entry"); break; }
-            s->S = spd_factor(s->A);
-            ok = s->S != NULL;
-        } else {
-            memset(s->A->x, 0, ((int *)s->A->p)[n] * sizeof(double));
-            normal_equations(s, r, idx, g, s->mu, b, NULL, s->pos, s->A->x);
-            ok = spd_refactor(s->S, s->A) == 0;
+        /* Levenberg: a J^T J that CHOLMOD finds numerically singular (a
+         * triangle nearly collapsed makes its bend gradient huge) is
+         * retried with 100 times the damping, up to 6 times; the damping
+         * relaxes back by 10 per accepted step */
+        int ok = 0;
+        for (int tries = 0; tries < 7 && !ok && rc == 0; tries++) {
+            if (tries) s->mu *= 100;
+            if (!s->A) {
+                struct triplets T;
+                triplets_init(&T, n, n);
+                normal_equations(s, r, idx, g, s->mu, b, &T, NULL, NULL);
+                s->A = triplets_to_sparse(&T, 1);
+                s->pos = triplet_positions(&T, s->A);
+                triplets_free(&T);
+                if (!s->pos) { rc = -1; cm_seterr("thin shell: lost a matrix entry"); break; }
+            } else {
+                memset(s->A->x, 0, ((int *)s->A->p)[n] * sizeof(double));
+                normal_equations(s, r, idx, g, s->mu, b, NULL, s->pos, s->A->x);
+            }
+            if (!s->S) {
+                s->S = spd_factor(s->A);
+                ok = s->S != NULL;
+            } else
+                ok = spd_refactor(s->S, s->A) == 0;
         }
+        if (rc < 0) break;
         if (!ok) { rc = -1; break; }
         if (s->wg == 0) {
             if (spd_solve(s->S, b, dx, 1) < 0) { rc = -1; break; }
@@ -431,6 +442,7 @@ int thin_shell_solve(struct thin_shell *s, const double *T, int iters, double *X
         }
         if (!accepted) { done = 1; if (Eout) Eout[it + 1] = E; continue; }
         memcpy(X, Xt, (size_t)n * sizeof *X);
+        if (s->mu > s->mu0) s->mu = s->mu / 10 > s->mu0 ? s->mu / 10 : s->mu0;
         double Eold = E;
         fit_apex(s, X);
         rG = thin_shell_volume_residual(s, X, gG);

@@ -125,11 +125,11 @@ int main(int argc, char **argv)
         struct topology t;
         if (topology_build(S.F, S.nf, S.nv, &t) < 0) die("%s", cm_errmsg());
         int open = t.nboundary > 0 || t.nnonmanifold > 0;
-        int nb = t.nboundary;
+        int nb = t.nboundary, nn = t.nnonmanifold;
         topology_free(&t);
         if (open)
-            die("cannot keep the volume of '%s': the mesh is not closed (%d boundary edges); "
-                "close it (mesh-clean) or use --no-volume", sp, nb);
+            die("cannot keep the volume of '%s': the mesh is not closed (%d boundary edges, "
+                "%d non-manifold edges); close it (mesh-clean) or use --no-volume", sp, nb, nn);
     }
     double t0 = now_seconds();
     struct clay_deform *cd = NULL;
