@@ -122,3 +122,19 @@ extern "C" void closest_points_hinted(const struct closest_point_tree *T, const 
     work(n / 2, n);
     th.join();
 }
+
+extern "C" int closest_point_faces_within(const struct closest_point_tree *T, const double p[3],
+                                          double r, int *out, int max)
+{
+    Point q(p[0], p[1], p[2]);
+    CGAL::Bbox_3 box(p[0] - r, p[1] - r, p[2] - r, p[0] + r, p[1] + r, p[2] + r);
+    std::vector<Tree::Primitive_id> hits;
+    T->tree.all_intersected_primitives(box, std::back_inserter(hits));
+    int n = 0;
+    for (const Tree::Primitive_id &id : hits)
+        if (CGAL::squared_distance(q, *id) <= r * r) {
+            if (n < max) out[n] = (int)(id - T->tris.begin());
+            n++;
+        }
+    return n;
+}

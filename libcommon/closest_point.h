@@ -34,6 +34,12 @@ double closest_point_query(const struct closest_point_tree *T, const double p[3]
 void closest_points(const struct closest_point_tree *T, const double *P, int n, double *C,
                     int *I, double *B, double *D);
 
+/* The faces within distance r of p (r >= 0): their ids go to out (at most
+ * max of them, in no particular order); returns how many there are (which
+ * may exceed max). */
+int closest_point_faces_within(const struct closest_point_tree *T, const double p[3], double r,
+                               int *out, int max);
+
 /* As closest_points(), but with a hint per query: a face id H[i] near the
  * answer (e.g. the previous answer of an iterative method; -1 = none).  A
  * good hint prunes the tree search; the answer is the same. */

@@ -17,10 +17,12 @@
  *      G = diag(1, 1, 1, gamma), one sparse SPD system of size 4 #V with
  *      three right-hand sides, refactored (CHOLMOD, analysis kept) each time.
  * The landmark weight beta fades linearly from beta to 0 over the schedule.
- * Finally (relax > 0) a few sweeps remove the small fold-overs that closest
- * point correspondences leave in concave creases: each vertex moves half way
- * to its one-ring centroid within its tangent plane, then onto its closest
- * point on the target (if that correspondence passes the same tests).
+ * At low stiffness the per-vertex affine maps may mirror a few triangles
+ * where vertices crowd into a crease or onto a tip.  So finally (fit > 0)
+ * the pose is refined by arap_fit (arap_fit.h): the same correspondences
+ * with an as-rigid-as-possible regularizer relative to the source, whose
+ * rotations cannot mirror, point-to-plane data terms that let the mesh slide
+ * along the target, and folded faces released from the data terms.
  * Internally coordinates are centred on the target and divided by its
  * bounding-box diagonal, so the parameters do not depend on the scale.
  */
@@ -31,7 +33,7 @@ extern "C" {
 #endif
 
 struct nricp_params {
-    int steps;             /* stiffness steps (default 12) */
+    int steps;             /* stiffness steps (default 6) */
     double alpha_max;      /* first stiffness (default 50) */
     double alpha_min;      /* last stiffness, geometric schedule (default 0.5) */
     double beta;           /* initial landmark weight (default 10) */
@@ -41,29 +43,24 @@ struct nricp_params {
     double backward;       /* weight of target->source correspondences (default 1; 0 off) */
     double eps;            /* inner loop stops when the RMS change of the deformed vertices,
                               relative to the diagonal, is below eps (default 1e-4) */
-    int max_inner;         /* inner iterations per stiffness (default 3) */
+    int max_inner;         /* inner iterations per stiffness (default 2) */
     int nearest_vertex;    /* baseline: correspondence = the nearest corner of the closest
                               triangle (~ the closest target vertex) instead of the closest
                               point; default 0 */
-    int untangle;          /* untangling rounds after the schedule (default 10; 0 off): while
-                              faces are flipped (mesh_distance.h flipped_face_flags), ARAP
-                              (rest shape: the source, 100 local/global Gauss-Seidel sweeps)
-                              on their vertices and one-rings, the closest target points as
-                              soft constraints, then the relax sweeps; the pose with the
-                              fewest flipped faces is returned */
-    double untangle_weight;/* weight of those constraints against one edge's ARAP term (default 100) */
-    int relax;             /* final fold-removal sweeps (default 5; 0: pure Amberg) */
+    int fit;               /* ARAP fit iterations after the schedule (arap_fit.h; default 30;
+                              0: pure Amberg) */
+    double fit_weight;     /* its final data weight, mu_max of arap_fit (default 30) */
 };
 
 void nricp_defaults(struct nricp_params *p);
 
 /* Called after every stiffness step with the current deformed source
  * (#VS by 3), the step index and its stiffness; return nonzero to stop.
- * Steps >= p->steps are untangling rounds (return value ignored): flipped
- * is the number of flipped faces that round starts from (-1 for the
- * schedule's steps). */
+ * Steps >= p->steps are the ARAP fit's iterations (return value ignored):
+ * alpha is then its data weight and folded the number of folded faces
+ * (-1 for the schedule's steps). */
 typedef int (*nricp_step_fn)(void *ctx, int step, double alpha, double beta, int inner,
-                             int rejected, int flipped, const double *X);
+                             int rejected, int folded, const double *X);
 
 /* VS: #VS by 3 source (already rigidly aligned), FS: #FS by 3;
  * VT: #VT by 3 target, FT: #FT by 3.

@@ -93,7 +93,7 @@ test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage nricp src.mesh &&
 	test_must_fail_usage nricp --align sideways src.mesh tgt.mesh &&
 	test_must_fail_usage nricp -k 0 src.mesh tgt.mesh &&
-	test_must_fail_usage nricp --untangle -1 src.mesh tgt.mesh &&
-	test_must_fail_usage nricp --untangle-weight 0 src.mesh tgt.mesh
+	test_must_fail_usage nricp --fit -1 src.mesh tgt.mesh &&
+	test_must_fail_usage nricp --fit-weight 0 src.mesh tgt.mesh
 '
 test_done

@@ -6,6 +6,7 @@
 #include "mesh.h"
 #include "mesh_clean.h"
 #include "tool.h"
+#include "unfold.h"
 #include "cm_error.h"
 #include <stdlib.h>
 #include <string.h>
@@ -15,7 +16,8 @@ static const char help[] =
 "Usage: mesh-clean [options] [FILE]\n"
 "Clean a static mesh (a scan): remove degenerate faces, duplicate faces and\n"
 "fins (two copies of a face with opposite orientation), split non-manifold\n"
-"vertices, orient, close holes; optionally remesh isotropically.\n"
+"vertices, orient, close holes, turn fold-overs back (faces pointing against\n"
+"all three neighbours); optionally remesh isotropically.\n"
 "Vertex indices change (unreferenced vertices go).\n"
 "\n"
 "Options:\n"
@@ -25,6 +27,7 @@ static const char help[] =
 "  -r, --remesh L         isotropic remeshing to edge length L (model units)\n"
 "  -R, --remesh-rel R     ... to R times the bounding-box diagonal\n"
 "      --iterations N     remeshing iterations (default 3)\n"
+"      --no-unfold        keep fold-overs\n"
 "  -o, --output FILE      write to FILE (atomically) instead of stdout\n"
 "      --raw              write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
 "  -v, --verbose          report what was removed and filled\n"
@@ -36,19 +39,20 @@ static const char help[] =
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
-    enum { O_NOFILL = 256, O_MAXHOLE, O_ITER, O_RAW, O_VERSION, O_MINC };
+    enum { O_NOFILL = 256, O_MAXHOLE, O_ITER, O_RAW, O_VERSION, O_MINC, O_NOUNF };
     static const struct option lo[] = {
-        {"no-fill", 0, 0, O_NOFILL}, {"max-hole", 1, 0, O_MAXHOLE}, {"min-component", 1, 0, O_MINC}, {"remesh", 1, 0, 'r'},
+        {"no-fill", 0, 0, O_NOFILL}, {"no-unfold", 0, 0, O_NOUNF}, {"max-hole", 1, 0, O_MAXHOLE}, {"min-component", 1, 0, O_MINC}, {"remesh", 1, 0, 'r'},
         {"remesh-rel", 1, 0, 'R'}, {"iterations", 1, 0, O_ITER}, {"output", 1, 0, 'o'},
         {"raw", 0, 0, O_RAW}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
     struct mesh_clean_opts o = {1, 0, 0, 3, 0.01};
     double rel = 0;
     const char *output = NULL;
-    int raw = 0, c;
+    int raw = 0, unfold = 1, c;
     while ((c = getopt_long(argc, argv, "r:R:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case O_NOFILL: o.fill_holes = 0; break;
+        case O_NOUNF: unfold = 0; break;
         case O_MINC: o.min_component = arg_double(optarg, "--min-component"); break;
         case O_MAXHOLE: o.max_hole = (int)arg_long(optarg, "--max-hole"); break;
         case 'r': o.edge_length = arg_double(optarg, "--remesh"); break;
@@ -81,6 +85,12 @@ int main(int argc, char **argv)
     info(1, "removed %d degenerate, %d duplicate, %d fin faces, %d small pieces; filled %d holes, "
          "%d left; %d vertices, %d faces", r.degenerate, r.duplicate, r.fins, r.components_removed,
          r.holes_filled, r.holes_left, nv, nf);
+    if (unfold) {
+        /* after remeshing too: fold-overs are faces turned over in place */
+        int found, left = unfold_faces(V, F, nv, nf, -0.5, 20, &found);
+        if (left < 0) die("cannot clean '%s': %s", in, cm_errmsg());
+        info(1, "fold-overs: %d found, %d left", found, left);
+    }
     struct mesh out = {0};
     out.nv = nv; out.nf = nf; out.nframes = 1; out.V = V; out.F = F;
     unsigned char cut = 0;

@@ -108,7 +108,7 @@ int main(int argc, char **argv)
         double h, rms;
         if (symmetric_distance(X, rd.nv, rd.F, rd.nf, TX, R, ref.nv, ref.F, ref.nf, TR, &h, &rms) < 0)
             die("%s", cm_errmsg());
-        int flipped = flipped_faces(X, rd.F, rd.nf, R, ref.F, TR);
+        int flipped = flipped_faces(X, rd.F, rd.nf, R, ref.nv, ref.F, ref.nf, TR, FLIP_THIN_TOL * diag);
         closest_point_tree_free(TX);
         text_add(&out, "%d %.9g %.9g %.9g %d", k, h, diag > 0 ? h / diag : 0, rms, flipped);
         if (same) {

@@ -31,7 +31,7 @@ static const char help[] =
 "                        (optional, but large motions need them)\n"
 "      --align KIND      rigid | similarity | none: Procrustes on the landmarks\n"
 "                        first (default rigid; none without >= 3 landmarks)\n"
-"  -k, --steps K         stiffness steps (default 8)\n"
+"  -k, --steps K         stiffness steps (default 6)\n"
 "      --alpha-max A     first stiffness (default 50)\n"
 "      --alpha-min A     last stiffness, geometric schedule (default 0.5)\n"
 "      --beta B          initial landmark weight, fading to 0 (default 10)\n"
@@ -39,11 +39,11 @@ static const char help[] =
 "      --max-angle DEG   reject correspondences whose normals differ more (default 60)\n"
 "      --max-dist D      reject correspondences farther than D diagonals (default 0.1, 0 off)\n"
 "      --backward W      weight of target->source correspondences (default 1, 0 off)\n"
-"      --max-inner N     iterations per stiffness (default 3)\n"
+"      --max-inner N     iterations per stiffness (default 2)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
-"      --untangle N      untangling rounds while faces are flipped (default 10, 0 off)\n"
-"      --untangle-weight W  weight of the target in untangling (default 100)\n"
-"      --relax N         final fold-removal sweeps (default 5, 0 off)\n"
+"      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
+"                        affine maps folded (default 30, 0: pure Amberg)\n"
+"      --fit-weight W    final data weight of the ARAP fit (default 30)\n"
 "      --eps E           inner loop tolerance, in diagonals (default 1e-4)\n"
 "      --init-deform     first deform the source toward the landmarks with\n"
 "                        clay-deform (volume kept if closed): Algorithm 3\n"
@@ -67,12 +67,12 @@ struct options {
 static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
-           O_EPS, O_SOUT, O_RAW, O_VERSION, O_RELAX, O_INIT, O_INITK, O_NV, O_UNT, O_UNTW };
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
-        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"relax", 1, 0, O_RELAX}, {"untangle", 1, 0, O_UNT}, {"untangle-weight", 1, 0, O_UNTW}, {"init-deform", 0, 0, O_INIT}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
+        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
         {0, 0, 0, 0}};
@@ -96,9 +96,8 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_INIT: o->init_deform = 1; break;
         case O_NV: o->p.nearest_vertex = 1; break;
         case O_INITK: o->init_stiffness = optarg; o->init_deform = 1; break;
-        case O_UNT: o->p.untangle = (int)arg_long(optarg, "--untangle"); break;
-        case O_UNTW: o->p.untangle_weight = arg_double(optarg, "--untangle-weight"); break;
-        case O_RELAX: o->p.relax = (int)arg_long(optarg, "--relax"); break;
+        case O_FIT: o->p.fit = (int)arg_long(optarg, "--fit"); break;
+        case O_FITW: o->p.fit_weight = arg_double(optarg, "--fit-weight"); break;
         case O_EPS: o->p.eps = arg_double(optarg, "--eps"); break;
         case O_SOUT: o->steps_out = optarg; break;
         case 'o': o->output = optarg; break;
@@ -119,22 +118,22 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->p.beta < 0 || o->p.backward < 0 || o->p.gamma < 0) usage_error("weights must be >= 0");
     if (!(o->p.max_angle > 0) || o->p.max_angle > 180) usage_error("--max-angle must be in (0, 180]");
     if (o->p.max_inner < 1) usage_error("--max-inner must be >= 1");
-    if (o->p.relax < 0) usage_error("--relax must be >= 0");
-    if (o->p.untangle < 0 || o->p.untangle > 1000) usage_error("--untangle must be in 0..1000");
-    if (!(o->p.untangle_weight > 0) || o->p.untangle_weight > 1e9)
-        usage_error("--untangle-weight must be in (0, 1e9]");
+    if (o->p.fit < 0 || o->p.fit > 1000) usage_error("--fit must be in 0..1000");
+    if (!(o->p.fit_weight > 0) || o->p.fit_weight > 1e6)
+        usage_error("--fit-weight must be in (0, 1e6]");
     if (!(o->p.eps >= 0)) usage_error("--eps must be >= 0");
 }
 
-struct steps { double *frames; int n, cap, nv, nsteps; struct progress pr; double t0; };
+struct steps { double *frames; int n, cap, nv, nsteps, nfit; struct progress pr; double t0; };
 
 static int on_step(void *ctx, int step, double alpha, double beta, int inner, int rejected,
-                   int flipped, const double *X)
+                   int folded, const double *X)
 {
     struct steps *s = ctx;
-    if (flipped >= 0) {
-        info(1, "untangling round %d: %d flipped faces, %.2f s", step - s->nsteps + 1, flipped,
-             now_seconds() - s->t0);
+    if (folded >= 0) {
+        if (verbose > 1 || step - s->nsteps + 1 == s->nfit)
+            info(1, "ARAP fit iteration %d: data weight %.3g, %d rejected, %d folded faces, %.2f s",
+                 step - s->nsteps + 1, alpha, rejected, folded, now_seconds() - s->t0);
         return 0;
     }
     if (s->frames) {
@@ -208,6 +207,7 @@ int main(int argc, char **argv)
     struct steps st = {0};
     st.nv = S.nv;
     st.nsteps = o.p.steps;
+    st.nfit = o.p.fit;
     st.t0 = t0;
     if (o.steps_out) {
         st.frames = malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *st.frames);
@@ -229,7 +229,8 @@ int main(int argc, char **argv)
             double diag = bbox_diagonal(T.V, T.nv);
             info(1, "registered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), RMS %.4g, "
                  "%d flipped faces", t1 - t0, h, 100 * h / diag, rms,
-                 flipped_faces(X, S.F, S.nf, T.V, T.F, TT));
+                 flipped_faces(X, S.F, S.nf, T.V, T.nv, T.F, T.nf, TT,
+                               FLIP_THIN_TOL * diag));
         }
         closest_point_tree_free(TS);
         closest_point_tree_free(TT);

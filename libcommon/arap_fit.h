@@ -1,0 +1,80 @@
+/* arap_fit.h -- fit a mesh to a target surface, as rigidly as possible:
+ * closest-point data terms with an ARAP regularizer (Sorkine & Alexa 2007)
+ * relative to a rest shape.  The last stage of nricp: the affine
+ * non-rigid ICP of Amberg et al. brings the source close to the target, but
+ * at low stiffness its per-vertex affine maps may fold triangles over where
+ * several vertices crowd into a crease.  An affine map can mirror; the
+ * rotations of ARAP cannot, so a folded triangle costs energy here and
+ * the fit unfolds it while it stays on the target.
+ *
+ * Each iteration minimizes over the pose P (#V by 3)
+ *   E(P) = sum_edges |(p_i - p_j) - (R_i + R_j)/2 (r_i - r_j)|^2
+ *        + mu sum_i |p_i - g_i|^2
+ * with r the rest shape and g_i the goal of vertex i, the weighted mean of
+ *   - its closest point u_i on the target, moved back along the target's
+ *     tangent plane by the fraction 'plane' of the tangential offset
+ *     (point-to-plane: the mesh may slide along the target), weight 1,
+ *     unless rejected (normals more than max_angle apart, on the target's
+ *     boundary, farther than max_dist: correspond.h);
+ *   - for every target vertex t whose closest point c on the current mesh
+ *     lies in a face with corner i (barycentric b_i): p_i + (t - c), weight
+ *     backward * b_i * #V / #T (coverage: every part of the target pulls);
+ *   - its own position when it has neither, or when it was released.
+ * So every vertex has one goal of weight mu and the matrix is L + mu I, L
+ * the graph Laplacian of the edges: CHOLMOD factors it once per data weight
+ * (levels of them, mu_min .. mu_max geometrically: first the shape, then
+ * the fit) and each iteration is one solve with three right-hand sides.
+ * Local step: R_i the rotation closest to sum_j (p_i - p_j)(r_i - r_j)^T
+ * (polar.h).  After each iteration, folded faces (normal against the rest
+ * normal turned by the mean rotation of the corners) release their
+ * vertices and release_rings rings around them: no goal next time, so the
+ * rotations unfold them.
+ */
+#ifndef CM_ARAP_FIT_H
+#define CM_ARAP_FIT_H
+#include "closest_point.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct arap_fit_params {
+    int iters;          /* correspondence updates (default 30) */
+    int inner;          /* local/global iterations per update (default 1) */
+    double mu_min;      /* first data weight, per vertex against one edge's ARAP term (default 0.1) */
+    double mu_max;      /* last data weight (default 30) */
+    double backward;    /* weight of the target -> mesh terms relative to mu (default 1; 0 off) */
+    double max_angle;   /* rejection angle between normals, degrees (default 60) */
+    double max_dist;    /* rejection distance, same units as the points (<= 0: off) */
+    int levels;         /* distinct data weights, mu_min .. mu_max geometrically, each
+                           used for iters / levels iterations (default 6) */
+    double plane;       /* 0: point-to-point goals; s in (0, 1]: the goal keeps the
+                           fraction s of the tangential offset from the closest
+                           point, so the mesh slides along the target (default 0.9) */
+    int release_rings;  /* folded faces free their vertices and this many rings around
+                           them from the data terms for the next iteration (default 2) */
+};
+
+void arap_fit_defaults(struct arap_fit_params *p);
+
+/* Called after every correspondence update with the iteration, mu, the
+ * number of rejected forward correspondences, the number of folded faces
+ * (normal against the rest normal turned by the corners' rotations) and
+ * the pose (#V by 3);
+ * return nonzero to stop. */
+typedef int (*arap_fit_step_fn)(void *ctx, int iter, double mu, int rejected, int folded,
+                                const double *P);
+
+/* R: #V by 3 rest shape; F: #F by 3 faces (nv, nf);
+ * VT: #VT by 3 target vertices, FT: #FT by 3 its faces, TT: a tree of them
+ * (closest_point.h);
+ * P: #V by 3, in: the start pose (close to the target), out: the fit.
+ * Returns 0, or -1 (cm_errmsg set). */
+int arap_fit(const double *R, const int *F, int nv, int nf,
+             const double *VT, const int *FT, int nvt, int nft,
+             const struct closest_point_tree *TT, const struct arap_fit_params *p,
+             double *P, arap_fit_step_fn cb, void *ctx);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
