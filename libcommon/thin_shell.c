@@ -16,6 +16,7 @@ struct thin_shell {
     double *L0, *ws;   /* rest length, sqrt stretch weight */
     int *B;            /* nb by 4: a, b (shared edge a->b in face 1), o1, o2 */
     double *th0, *wb;  /* rest angle, sqrt bend weight incl. L/sqrt(A/3) */
+    double *fl;        /* nb by 2: floors of |n1|^2, |n2|^2 in the bend gradient */
     double *vol0, o[3], wv;
     double V0, wg;     /* rest enclosed volume, sqrt global volume weight / |V0| */
     int *H;
@@ -57,7 +58,7 @@ static double tet_volume(const double *a, const double *b, const double *c, cons
  * (x4, x3, x2) (both outward), 0 when flat; gradient (Bridson et al. 2003)
  * g: 4 by 3 for x1, x2, x3, x4 (zero when degenerate). */
 static double dihedral(const double *x1, const double *x2, const double *x3, const double *x4,
-                       double *g)
+                       double *g, double f1, double f2)
 {
     double p[3], q[3], n1[3], n2[3], E[3];
     sub3(x1, x3, p); sub3(x1, x4, q); cross3(p, q, n1);
@@ -76,7 +77,8 @@ static double dihedral(const double *x1, const double *x2, const double *x3, con
         double a14 = dot3(p, E) / le, a24 = dot3(q, E) / le;
         sub3(x1, x3, p); sub3(x2, x3, q);
         double a13 = dot3(p, E) / le, a23 = dot3(q, E) / le;
-        for (int d = 0; d < 3; d++) { d1[d] = n1[d] / l1; d2[d] = n2[d] / l2; }
+        double c1 = l1 > f1 ? l1 : f1, c2 = l2 > f2 ? l2 : f2;
+        for (int d = 0; d < 3; d++) { d1[d] = n1[d] / c1; d2[d] = n2[d] / c2; }
         for (int d = 0; d < 3; d++) {
             g[0 + d] = -le * d1[d];
             g[3 + d] = -le * d2[d];
@@ -118,6 +120,7 @@ struct thin_shell *thin_shell_new(const double *V, const int *F, int nv, int nf,
     s->B = malloc((size_t)t.ne * 4 * sizeof *s->B + 1);
     s->th0 = malloc((size_t)t.ne * sizeof *s->th0 + 1);
     s->wb = malloc((size_t)t.ne * sizeof *s->wb + 1);
+    s->fl = malloc((size_t)t.ne * 2 * sizeof *s->fl + 1);
     double lbar = 0;
     for (int e = 0; e < t.ne; e++) {
         int i = t.E[2 * e], j = t.E[2 * e + 1];
@@ -143,7 +146,14 @@ struct thin_shell *thin_shell_new(const double *V, const int *F, int nv, int nf,
         if (!(A > 0)) continue;
         int *Bq = s->B + 4 * s->nb;
         Bq[0] = a; Bq[1] = b; Bq[2] = o1; Bq[3] = o2;
-        s->th0[s->nb] = dihedral(V + 3 * o1, V + 3 * o2, V + 3 * a, V + 3 * b, NULL);
+        s->th0[s->nb] = dihedral(V + 3 * o1, V + 3 * o2, V + 3 * a, V + 3 * b, NULL, 0, 0);
+        {
+            double p[3], q[3], n1[3];
+            sub3(V + 3 * o1, V + 3 * a, p); sub3(V + 3 * o1, V + 3 * b, q); cross3(p, q, n1);
+            s->fl[2 * s->nb] = 1e-2 * dot3(n1, n1);
+            sub3(V + 3 * o2, V + 3 * b, p); sub3(V + 3 * o2, V + 3 * a, q); cross3(p, q, n1);
+            s->fl[2 * s->nb + 1] = 1e-2 * dot3(n1, n1);
+        }
         s->wb[s->nb] = sqrt(p->kb * ke) * s->L0[e] / sqrt(A / 3);
         s->nb++;
     }
@@ -183,7 +193,7 @@ void thin_shell_free(struct thin_shell *s)
     spd_free(s->S);
     sparse_free(&s->A);
     free(s->pos);
-    free(s->F); free(s->E); free(s->L0); free(s->ws); free(s->B); free(s->th0); free(s->wb);
+    free(s->F); free(s->E); free(s->L0); free(s->ws); free(s->B); free(s->th0); free(s->wb); free(s->fl);
     free(s->vol0); free(s->H);
     free(s);
 }
@@ -214,7 +224,8 @@ double thin_shell_residuals(const struct thin_shell *s, const double *X, const d
     for (int b = 0; b < s->nb; b++, q++) {
         const int *Bq = s->B + 4 * b;
         double gg[12];
-        double th = dihedral(X + 3 * Bq[2], X + 3 * Bq[3], X + 3 * Bq[0], X + 3 * Bq[1], idx ? gg : NULL);
+        double th = dihedral(X + 3 * Bq[2], X + 3 * Bq[3], X + 3 * Bq[0], X + 3 * Bq[1], idx ? gg : NULL,
+                             s->fl[2 * b], s->fl[2 * b + 1]);
         r[q] = s->wb[b] * wrap(th - s->th0[b]);
         if (idx) {
             idx[4 * q] = Bq[2]; idx[4 * q + 1] = Bq[3]; idx[4 * q + 2] = Bq[0]; idx[4 * q + 3] = Bq[1];

@@ -34,8 +34,14 @@
  * length and Lbar the mean rest edge length.
  *
  * One Gauss-Newton iteration solves (J^T J + mu I) dx = -J^T r (mu =
- * damping * mean diagonal of the first J^T J) and backtracks alpha = 1,
- * 1/2, ... until E(X + alpha dx) < E(X), so the energy never increases.
+ * damping * mean diagonal of the first J^T J; when CHOLMOD finds the
+ * matrix numerically singular, mu grows 100-fold and the factorization is
+ * retried, up to 6 times; mu relaxes by 10 per accepted step) and
+ * backtracks alpha = 1, 1/2, ... until E(X + alpha dx) < E(X), so the
+ * energy never increases.  The bend Jacobian of a face squashed below a
+ * tenth of its rest area uses that tenth instead (the exact one grows
+ * like 1/area and swamps J^T J as an obtuse face flattens under
+ * compression; seen on the camel scans).
  * The sparse part of J^T J is factored by CHOLMOD (analysis on the first
  * iteration, numeric refactorization after); the dense rank-one part
  * g_V g_V^T of the enclosed-volume residual is added by Sherman-Morrison
