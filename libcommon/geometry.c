@@ -54,30 +54,6 @@ void vertex_normals(const double *V, const int *F, int nv, int nf, double *N)
     }
 }
 
-void vertex_pseudo_normals(const double *V, const int *F, int nv, int nf, double *N)
-{
-    memset(N, 0, (size_t)nv * 3 * sizeof *N);
-    for (int f = 0; f < nf; f++) {
-        double n[3], l;
-        face_cross(V, F, f, n);
-        if (!((l = norm3(n)) > 0)) continue;
-        for (int c = 0; c < 3; c++) {
-            const double *p = V + 3 * F[3 * f + c], *a = V + 3 * F[3 * f + (c + 1) % 3],
-                         *b = V + 3 * F[3 * f + (c + 2) % 3];
-            double u[3], w[3];
-            sub3(a, p, u);
-            sub3(b, p, w);
-            double cs = dot3(u, w) / (norm3(u) * norm3(w));
-            double ang = acos(cs < -1 ? -1 : cs > 1 ? 1 : cs);
-            for (int d = 0; d < 3; d++) N[3 * F[3 * f + c] + d] += ang * n[d] / l;
-        }
-    }
-    for (int v = 0; v < nv; v++) {
-        double l = norm3(N + 3 * v);
-        if (l > 0) for (int d = 0; d < 3; d++) N[3 * v + d] /= l;
-    }
-}
-
 void bounding_box(const double *V, int nv, double lo[3], double hi[3])
 {
     for (int d = 0; d < 3; d++) { lo[d] = nv ? V[d] : 0; hi[d] = lo[d]; }

@@ -13,10 +13,6 @@ void face_areas(const double *V, const int *F, int nf, double *A);
 void face_normals(const double *V, const int *F, int nf, double *N);
 /* N: #V by 3 area-weighted unit vertex normals (out). */
 void vertex_normals(const double *V, const int *F, int nv, int nf, double *N);
-/* N: #V by 3 angle-weighted unit vertex normals (out): the pseudo-normals
- * of Baerentzen & Aanaes 2005, for which the sign of (p - v) . N tells
- * inside from outside when v is the closest point to p. */
-void vertex_pseudo_normals(const double *V, const int *F, int nv, int nf, double *N);
 /* lo, hi: 3 each (out). */
 void bounding_box(const double *V, int nv, double lo[3], double hi[3]);
 /* Length of the bounding-box diagonal. */

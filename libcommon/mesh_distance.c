@@ -60,7 +60,7 @@ int flipped_face_flags(const double *VA, const int *FA, int nfa, const double *V
     int near[64];
     double *P = malloc((size_t)nfa * 3 * sizeof *P + 1), *N = malloc((size_t)nfa * 3 * sizeof *N + 1);
     double *Bc = malloc((size_t)nfa * 3 * sizeof *Bc + 1);
-    double *NF = malloc((size_t)nfb * 3 * sizeof *NF + 1), *NV = malloc((size_t)nvb * 3 * sizeof *NV + 1);
+    double *NF = malloc((size_t)nfb * 3 * sizeof *NF + 1);
     double *D = malloc((size_t)nfa * sizeof *D + 1);
     int *I = malloc((size_t)nfa * sizeof *I + 1);
     struct topology t = {0};
@@ -68,31 +68,29 @@ int flipped_face_flags(const double *VA, const int *FA, int nfa, const double *V
     if (topology_build(FB, nfb, nvb, &t) < 0) goto done;
     face_normals(VA, FA, nfa, N);
     face_normals(VB, FB, nfb, NF);
-    vertex_pseudo_normals(VB, FB, nvb, nfb, NV);
     for (int f = 0; f < nfa; f++)
         for (int d = 0; d < 3; d++)
             P[3 * f + d] = (VA[3 * FA[3 * f] + d] + VA[3 * FA[3 * f + 1] + d] + VA[3 * FA[3 * f + 2] + d]) / 3;
     closest_points(TB, P, nfa, NULL, I, Bc, D);
     flipped = 0;
     for (int f = 0; f < nfa; f++) {
-        /* the pseudo-normal of the closest feature: face, edge or vertex */
+        /* the normal cone of the closest feature: the face's normal inside a
+         * face, both face normals on an edge, all of them at a vertex; the
+         * face is flipped when it points against every one of them */
         const double eps = 1e-9, *b = Bc + 3 * f;
         int g = I[f], zeros = (b[0] < eps) + (b[1] < eps) + (b[2] < eps);
-        double n[3];
-        if (zeros >= 2) {
-            int c = b[0] >= b[1] && b[0] >= b[2] ? 0 : b[1] >= b[2] ? 1 : 2;
-            memcpy(n, NV + 3 * FB[3 * g + c], sizeof n);
-        } else if (zeros == 1) {
+        const double *nf = N + 3 * f;
+        int fl = dot3(NF + 3 * g, nf) < 0;
+        if (fl && zeros >= 2) {
+            int c = b[0] >= b[1] && b[0] >= b[2] ? 0 : b[1] >= b[2] ? 1 : 2, v = FB[3 * g + c];
+            for (int q = t.VFs[v]; q < t.VFs[v + 1] && fl; q++)
+                if (dot3(NF + 3 * t.VF[q], nf) >= 0) fl = 0;
+        } else if (fl && zeros == 1) {
             int c = b[0] < eps ? 0 : b[1] < eps ? 1 : 2;
             int e = t.FE[3 * g + (c + 1) % 3];        /* the edge opposite corner c */
-            memcpy(n, NF + 3 * g, sizeof n);
-            if (t.EFn[e] == 2) {
-                int h = t.EF[2 * e] == g ? t.EF[2 * e + 1] : t.EF[2 * e];
-                for (int d = 0; d < 3; d++) n[d] += NF[3 * h + d];
-            }
-        } else
-            memcpy(n, NF + 3 * g, sizeof n);
-        int fl = dot3(n, N + 3 * f) < 0;
+            for (int q = 0; q < 2 && fl; q++)
+                if (t.EF[2 * e + q] >= 0 && dot3(NF + 3 * t.EF[2 * e + q], nf) >= 0) fl = 0;
+        }
         if (fl && tol > 0) {
             /* a thin part of B (an ear, a fin): is a side facing this way near too? */
             int m = closest_point_faces_within(TB, P + 3 * f, D[f] + tol, near, 64);
@@ -104,6 +102,6 @@ int flipped_face_flags(const double *VA, const int *FA, int nfa, const double *V
     }
 done:
     topology_free(&t);
-    free(P); free(D); free(N); free(Bc); free(NF); free(NV); free(I);
+    free(P); free(D); free(N); free(Bc); free(NF); free(I);
     return flipped;
 }

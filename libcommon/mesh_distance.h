@@ -32,18 +32,19 @@ int symmetric_distance(const double *VA, int nva, const int *FA, int nfa,
                        const double *VB, int nvb, const int *FB, int nfb,
                        const struct closest_point_tree *TB, double *hausdorff, double *rms);
 
-/* Faces of A that point against B: the normal of a face of A and the
- * pseudo-normal of B at the closest point to the face's centroid have a
- * negative dot product.  The pseudo-normal (Baerentzen & Aanaes 2005) is
- * B's face normal inside a face, the sum of the two face normals on an
- * edge, the angle-weighted normal at a vertex, so a face lying on a sharp
- * crease or a thin part of B is judged against both sides, not against
- * whichever side happened to be nearest.  Where B is thinner than the
- * distance of A to it (an ear, a fin) either side may be nearest, so with
- * tol > 0 a face is not counted when a face of B within its distance + tol
- * faces its way (normal dot > 0).  VB: #VB by 3 (nvb), FB: #FB by 3 (nfb),
- * TB: the tree of B, tol: a distance (0: no allowance).  Returns the count,
- * or -1 (out of memory). */
+/* Faces of A that point against B: the normal of a face of A points
+ * against the whole normal cone of B at the point closest to the face's
+ * centroid, i.e. has a negative dot product with B's face normal there
+ * inside a face, with both face normals on an edge, with all the incident
+ * face normals at a vertex.  So a face that lies across a sharp crease of B
+ * (cutting its corner) is judged against both sides, not against whichever
+ * side happened to be nearest.  Where B is thinner than the distance of A
+ * to it (an ear, a fin) either side may be nearest, so with tol > 0 a face
+ * is not counted when a face of B within its distance + tol faces its way
+ * (normal dot > 0).  VB: #VB by 3 (nvb), FB: #FB by 3 (nfb), TB: the tree
+ * of B, tol: a distance (0: no allowance).  Returns the count, or -1 (out
+ * of memory). */
+
 /* The tools' allowance for thin parts: this fraction of B's bounding-box
  * diagonal (about a tenth of an edge on a 10k-face scan). */
 #define FLIP_THIN_TOL 1e-3

@@ -1,4 +1,4 @@
-/* arap_fit.c -- unit tests of unfold_faces, flipped_faces (pseudo-normals,
+/* arap_fit.c -- unit tests of unfold_faces, flipped_faces (normal cones,
  * thin parts) and arap_fit on small grids. */
 #include "tap.h"
 #include "testmesh.h"
