@@ -77,6 +77,30 @@ int main(void)
     ok(f0 == nf && f1 == 0, "flipped_faces: a downward sheet on a thin plate: %d without, %d with "
        "the thin-part allowance", f0, f1);
 
+    /* a ridge (the grid folded to z = 0.5 - |x - 0.5|, a 90 degree crease
+     * along x = 0.5): a triangle standing over the crease whose normal is
+     * within 90 degrees of one side's normal only is not flipped; turned
+     * against both sides, it is */
+    double *Vr = malloc(sizeof(double) * 3 * nv);
+    memcpy(Vr, V0, sizeof(double) * 3 * nv);
+    for (int v = 0; v < nv; v++) Vr[3 * v + 2] = 0.5 - fabs(Vr[3 * v] - 0.5);
+    struct closest_point_tree *Tr = closest_point_tree_new(Vr, nv, F, nf);
+    /* centroid (0.5, 0.45, 0.6), normal ~ (1, 0, -0.2) */
+    double tri[9] = {0.5 - 0.02, 0.35, 0.6 - 0.1, 0.5 + 0.02, 0.35, 0.6 + 0.1, 0.5, 0.65, 0.6};
+    int t1[3] = {0, 1, 2}, t2[3] = {0, 2, 1};
+    double nt[3];
+    face_normals(tri, t1, 1, nt);
+    int fa = flipped_faces(tri, t1, 1, Vr, nv, F, nf, Tr, 0), fb = flipped_faces(tri, t2, 1, Vr, nv, F, nf, Tr, 0);
+    ok(fabs(nt[0]) > 0.9 && nt[0] * nt[2] < 0 && fa == 0, "flipped_faces: across a crease, facing one side: not flipped (normal %.2f %.2f %.2f)",
+       nt[0], nt[1], nt[2]);
+    ok(fb == 0, "flipped_faces: across a crease, facing the other side: not flipped either");
+    double tri2[9] = {0.45, 0.35, 0.6, 0.55, 0.35, 0.6, 0.5, 0.6, 0.6};   /* flat, facing +z */
+    ok(flipped_faces(tri2, t1, 1, Vr, nv, F, nf, Tr, 0) == 0 &&
+       flipped_faces(tri2, t2, 1, Vr, nv, F, nf, Tr, 0) == 1,
+       "flipped_faces: over a crease, facing up: fine; facing down: flipped");
+    closest_point_tree_free(Tr);
+    free(Vr);
+
     /* arap_fit: start folded and noisy, target = the rest grid */
     struct rng r;
     rng_seed(&r, 7);
