@@ -22,9 +22,16 @@ test_expect_success 'scaled sphere: Hausdorff 0.1, area +21%, volume +33.1%' '
 '
 test_expect_success 'different connectivity: surface columns only, small distance' '
 	mesh-metrics -r sphere.mesh coarse.mesh >c.txt &&
-	test "$(awk "!/^#/ { print NF }" c.txt)" = 5 &&
+	test "$(awk "!/^#/ { print NF }" c.txt)" = 7 &&
 	h=$(awk "!/^#/ { print \$3 }" c.txt) && test_le "$h" 0.02 &&
-	test "$(awk "!/^#/ { print \$5 }" c.txt)" = 0
+	test "$(awk "!/^#/ { print \$5 }" c.txt)" = 0 &&
+	awk "!/^#/ { m = \$6 > \$7 ? \$6 : \$7; d = m - \$3; exit !(d < 1e-15 && d > -1e-15) }" c.txt
+'
+test_expect_success 'one-sided distances: a half sphere fits the sphere but does not cover it' '
+	awk "/^frame/ { body = 1; print; next } body && NF == 3 { z = \$3 > 0 ? \$3 : 0; print \$1, \$2, z; next } { print }" sphere.mesh >half.mesh &&
+	mesh-metrics --no-header -r sphere.mesh half.mesh >hm.txt && cat hm.txt &&
+	fit=$(awk "{ print \$(NF - 1) }" hm.txt) && cover=$(awk "{ print \$NF }" hm.txt) &&
+	test_le "$fit" 0.6 && test_le 0.2 "$cover" && test_le "$fit" "$cover"
 '
 test_expect_success 'an inside-out copy has every face flipped' '
 	awk "/^f / { print \"f\", \$2, \$4, \$3; next } { print }" sphere.mesh >inv.mesh &&

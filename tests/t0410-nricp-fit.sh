@@ -1,7 +1,8 @@
 #!/bin/sh
-test_description='nricp ARAP fit on the cleaned camel gallop scans: fewer flipped faces, closer'
+test_description='nricp ARAP fit on the cleaned camel gallop scans: fewer flipped faces, closer; 01 -> 05 coverage'
 . "$(dirname "$0")/test-lib.sh"
 need_shared_data scans/camel-gallop-02.off
+need_shared_data scans/camel-gallop-05.off
 
 EX="$STOPMO_ROOT/examples/clay"
 # mesh-clean keeps the vertex order of these two scans (it only removes
@@ -28,5 +29,19 @@ test_expect_success 'without the ARAP fit: farther, and more flipped faces' '
 	mesh-metrics --no-header -r c2.mesh r0.mesh >m0.txt && cat m0.txt &&
 	test_le "$(awk "{ print \$5 + 4 }" m.txt)" "$(awk "{ print \$5 }" m0.txt)" &&
 	test_le "$(awk "{ print \$3 + 0.002 }" m.txt)" "$(awk "{ print \$3 }" m0.txt)"
+'
+# the legs swap places; the landmark file names vertices of the raw scan 05,
+# whose indices mesh-clean shifts: pass them as points
+# measured: cover 1.65% of the diagonal, fit 5.0% (a fold of chest skin stays
+# inside the body at the front armpit: the issue's 2% is not reached)
+test_expect_success 'camel 01 -> 05 directly: every part of the target covered to 2%' '
+	mesh-import "$SHARED_DATA/scans/camel-gallop-05.off" >s5.mesh &&
+	mesh-clean s5.mesh >c5.mesh &&
+	awk "NR == FNR { if (\$1 == \"frame\") on = 1; else if (on && NF == 3) v[n++] = \$0; next }
+	     /^#/ || NF == 0 { next } NF == 2 { print \$1, v[\$2] }" s5.mesh "$EX/landmarks-01-05-direct.txt" >m5.txt &&
+	test "$(wc -l <m5.txt)" = 15 &&
+	nricp --init-deform -l m5.txt c1.mesh c5.mesh >r5.mesh &&
+	mesh-metrics --no-header -r c5.mesh r5.mesh >d5.txt && cat d5.txt &&
+	test_le "$(awk "{ print \$NF }" d5.txt)" 0.02
 '
 test_done

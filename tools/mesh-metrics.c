@@ -21,6 +21,8 @@ static const char help[] =
 "  frame hausdorff hausdorff_rel rms flipped\n"
 "and when ANIM has the reference's connectivity also\n"
 "  volume_rel area_mean area_sigma vol_mean vol_sigma edge_max area_abs\n"
+"and last, the two one-sided distances over the diagonal\n"
+"  fit_rel cover_rel\n"
 "(hausdorff_rel: over the reference's bounding-box diagonal; see mesh-metrics(1)).\n"
 "\n"
 "Options:\n"
@@ -98,16 +100,21 @@ int main(int argc, char **argv)
     double *X = malloc((size_t)rd.nv * 3 * sizeof *X + 1);
     struct text out = {0};
     if (!o.no_header)
-        text_add(&out, "# frame hausdorff hausdorff_rel rms flipped%s\n",
+        text_add(&out, "# frame hausdorff hausdorff_rel rms flipped%s fit_rel cover_rel\n",
                  same ? " volume_rel area_mean area_sigma vol_mean vol_sigma edge_max area_abs" : "");
     int rc;
     while ((rc = mesh_reader_next(&rd, X, NULL)) == 1) {
         int k = rd.frame - 1;
         struct closest_point_tree *TX = closest_point_tree_new(X, rd.nv, rd.F, rd.nf);
         if (!TX) die("%s: frame %d: %s", rd.name, k, cm_errmsg());
-        double h, rms;
-        if (symmetric_distance(X, rd.nv, rd.F, rd.nf, TX, R, ref.nv, ref.F, ref.nf, TR, &h, &rms) < 0)
+        /* one-sided both ways: the frame's samples to the reference (fit),
+         * the reference's samples to the frame (cover) */
+        struct one_sided fit, cover;
+        if (one_sided_distance(X, rd.nv, rd.F, rd.nf, TR, &fit) < 0 ||
+            one_sided_distance(R, ref.nv, ref.F, ref.nf, TX, &cover) < 0)
             die("%s", cm_errmsg());
+        double h = fit.max > cover.max ? fit.max : cover.max;
+        double rms = sqrt((fit.sumsq + cover.sumsq) / (fit.n + cover.n));
         int flipped = flipped_faces(X, rd.F, rd.nf, R, ref.nv, ref.F, ref.nf, TR, FLIP_THIN_TOL * diag);
         closest_point_tree_free(TX);
         text_add(&out, "%d %.9g %.9g %.9g %d", k, h, diag > 0 ? h / diag : 0, rms, flipped);
@@ -117,7 +124,7 @@ int main(int argc, char **argv)
             text_add(&out, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g", d.volume_rel, d.area_mean,
                      d.area_sigma, d.vol_mean, d.vol_sigma, d.edge_max, d.area_abs);
         }
-        text_add(&out, "\n");
+        text_add(&out, " %.9g %.9g\n", diag > 0 ? fit.max / diag : 0, diag > 0 ? cover.max / diag : 0);
     }
     if (rc < 0) die("%s", cm_errmsg());
     mesh_reader_close(&rd);
