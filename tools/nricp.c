@@ -4,6 +4,7 @@
  * alignment on the landmarks.
  */
 #include "clay_deform.h"
+#include "thin_shell.h"
 #include "closest_point.h"
 #include "geometry.h"
 #include "landmarks.h"
@@ -47,6 +48,8 @@ static const char help[] =
 "      --eps E           inner loop tolerance, in diagonals (default 1e-4)\n"
 "      --init-deform     first deform the source toward the landmarks with\n"
 "                        clay-deform (volume kept if closed): Algorithm 3\n"
+"      --init-model M    its model: arap (default, fast) or shell (the thin shell\n"
+"                        of clay-deform(1); implies --init-deform)\n"
 "      --init-stiffness FILE  per-vertex stiffness for --init-deform (stiffness(1));\n"
 "                        default uniform\n"
 "      --steps-out FILE  also write the pose after every stiffness step (animation)\n"
@@ -60,19 +63,19 @@ static const char help[] =
 
 struct options {
     const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness;
-    int raw, init_deform;
+    int raw, init_deform, init_shell;
     struct nricp_params p;
 };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
-           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW };
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
-        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
+        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
         {0, 0, 0, 0}};
@@ -94,6 +97,11 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_BACK: o->p.backward = arg_double(optarg, "--backward"); break;
         case O_INNER: o->p.max_inner = (int)arg_long(optarg, "--max-inner"); break;
         case O_INIT: o->init_deform = 1; break;
+        case O_INITM:
+            if (!strcmp(optarg, "shell")) o->init_shell = 1;
+            else if (strcmp(optarg, "arap")) usage_error("--init-model must be arap or shell");
+            o->init_deform = 1;
+            break;
         case O_NV: o->p.nearest_vertex = 1; break;
         case O_INITK: o->init_stiffness = optarg; o->init_deform = 1; break;
         case O_FIT: o->p.fit = (int)arg_long(optarg, "--fit"); break;
@@ -186,8 +194,18 @@ int main(int argc, char **argv)
         if (topology_build(S.F, S.nf, S.nv, &t) < 0) die("%s", cm_errmsg());
         int closed = t.nboundary == 0 && t.nnonmanifold == 0;
         topology_free(&t);
-        struct clay_deform *cd = clay_deform_new(VS, S.F, S.nv, S.nf, k, L.src, L.n, 100);
-        if (!cd) die("--init-deform: %s", cm_errmsg());
+        /* arap: clay_deform.h, one factorization; shell: thin_shell.h (the
+         * thesis' Froehlich-Botsch shell, clay-deform's default; slower) */
+        struct clay_deform *cd = NULL;
+        struct thin_shell *sh = NULL;
+        if (o.init_shell) {
+            struct thin_shell_params sp;
+            thin_shell_defaults(&sp);
+            if (!closed) sp.kv = sp.kvg = 0;
+            sh = thin_shell_new(VS, S.F, S.nv, S.nf, k, L.src, L.n, &sp);
+        } else
+            cd = clay_deform_new(VS, S.F, S.nv, S.nf, k, L.src, L.n, 100);
+        if (!cd && !sh) die("--init-deform: %s", cm_errmsg());
         double *X0 = malloc((size_t)S.nv * 3 * sizeof *X0), *TL = malloc((size_t)L.n * 3 * sizeof *TL);
         memcpy(X0, VS, (size_t)S.nv * 3 * sizeof *X0);
         const int nsteps = 10;
@@ -196,12 +214,14 @@ int main(int argc, char **argv)
             for (int l = 0; l < L.n; l++)
                 for (int d = 0; d < 3; d++)
                     TL[3 * l + d] = (1 - a) * VS[3 * (size_t)L.src[l] + d] + a * L.P[3 * l + d];
-            if (clay_deform_solve(cd, TL, 5, closed, X0) < 0) die("--init-deform: %s", cm_errmsg());
+            if ((sh ? thin_shell_solve(sh, TL, 5, X0, NULL) : clay_deform_solve(cd, TL, 5, closed, X0)) < 0)
+                die("--init-deform: %s", cm_errmsg());
         }
         memcpy(VS, X0, (size_t)S.nv * 3 * sizeof *VS);
-        info(1, "clay deformation toward %d landmarks%s: %.2f s", L.n,
-             closed ? " (volume kept)" : "", now_seconds() - t0);
+        info(1, "clay deformation (%s) toward %d landmarks%s: %.2f s", sh ? "thin shell" : "arap",
+             L.n, closed ? " (volume kept)" : "", now_seconds() - t0);
         clay_deform_free(cd);
+        thin_shell_free(sh);
         free(X0); free(TL); free(k);
     }
     struct steps st = {0};
