@@ -72,6 +72,7 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
     # 01 -> 05, the legs swap places: directly (a landmark set marking every
     # leg three times) and chained through 02, 03, 04 as examples/clay does
     nricp --init-deform -l "$T/m05-direct.txt" "$T/c01.mesh" "$T/c05.mesh" >"$T/d5.mesh" &&
+    nricp --init-model shell -l "$T/m05-direct.txt" "$T/c01.mesh" "$T/c05.mesh" >"$T/s5.mesh" &&
     nricp --nearest-vertex --backward 0 --fit 0 -l "$T/m05-direct.txt" "$T/c01.mesh" "$T/c05.mesh" >"$T/b5.mesh" || exit 1
     prev="$T/c01.mesh"
     for k in 02 03 04 05; do
@@ -79,9 +80,10 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
         prev="$T/ch$k.mesh"
     done
     set -- $(hf "$T/c05.mesh" "$T/d5.mesh"); h5=$1 f5=$2
+    set -- $(hf "$T/c05.mesh" "$T/s5.mesh"); hs5=$1 fs5=$2
     set -- $(hf "$T/c05.mesh" "$T/ch05.mesh"); hc=$1 fc=$2
     set -- $(hf "$T/c05.mesh" "$T/b5.mesh"); hb5=$1 fb5=$2
-    echo "nricp camel 01->05 chained through 02-04: $hc % ($fc flipped); direct $h5 % ($f5 flipped) | baseline nearest-vertex direct $hb5 % | ratio $(ratio "$hc" "$hb5") chained, $(ratio "$h5" "$hb5") direct (goal < 2 %; trimesh peer 21 %)"
+    echo "nricp camel 01->05 direct, --init-model shell: $hs5 % ($fs5 flipped); with the arap start $h5 % ($f5 flipped); chained through 02-04 $hc % ($fc flipped) | baseline nearest-vertex direct $hb5 % | ratio $(ratio "$hs5" "$hb5") shell, $(ratio "$h5" "$hb5") arap, $(ratio "$hc" "$hb5") chained (goal < 2 %; trimesh peer 21 %)"
 else
     echo "nricp camel: skipped (needs ../shared/data/scans)"
 fi

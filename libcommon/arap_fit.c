@@ -19,6 +19,7 @@ void arap_fit_defaults(struct arap_fit_params *p)
     p->backward = 1;
     p->max_angle = 60;
     p->max_dist = 0;
+    p->search = 0;
     p->release_rings = 2;
     p->plane = 0.9;
     p->levels = 6;
@@ -91,7 +92,7 @@ int arap_fit(const double *R, const int *F, int nv, int nf,
          * point u_i, moved back along the target's tangent plane by the
          * fraction 'plane' of the tangential offset (point-to-plane) */
         vertex_normals(P, F, nv, nf, NS);
-        int rejected = correspond(TT, FT, NT, &tt, P, NS, nv, cosmax, p->max_dist, k > 0,
+        int rejected = correspond(TT, FT, NT, &tt, P, NS, nv, cosmax, p->max_dist, p->search, k > 0,
                                   U, UF, UB, uok);
         for (int i = 0; i < nv; i++) {
             double n[3], dv[3];
@@ -112,7 +113,7 @@ int arap_fit(const double *R, const int *F, int nv, int nf,
         if (p->backward > 0) {
             struct closest_point_tree *TS = closest_point_tree_new(P, nv, F, nf);
             if (!TS) goto done;
-            correspond(TS, F, NS, &ts, VT, NT, nvt, cosmax, p->max_dist, k > 0, TC, TF, TB, tok);
+            correspond(TS, F, NS, &ts, VT, NT, nvt, cosmax, p->max_dist, p->search, k > 0, TC, TF, TB, tok);
             closest_point_tree_free(TS);
             double wb = p->backward * (double)nv / nvt;
             for (int j = 0; j < nvt; j++) {

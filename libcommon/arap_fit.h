@@ -14,8 +14,9 @@
  *   - its closest point u_i on the target, moved back along the target's
  *     tangent plane by the fraction 'plane' of the tangential offset
  *     (point-to-plane: the mesh may slide along the target), weight 1,
- *     unless rejected (normals more than max_angle apart, on the target's
- *     boundary, farther than max_dist: correspond.h);
+ *     unless rejected (normals more than max_angle apart and no agreeing
+ *     point within search farther, on the target's boundary, farther than
+ *     max_dist: correspond.h);
  *   - for every target vertex t whose closest point c on the current mesh
  *     lies in a face with corner i (barycentric b_i): p_i + (t - c), weight
  *     backward * b_i * #V / #T (coverage: every part of the target pulls);
@@ -45,6 +46,9 @@ struct arap_fit_params {
     double backward;    /* weight of the target -> mesh terms relative to mu (default 1; 0 off) */
     double max_angle;   /* rejection angle between normals, degrees (default 60) */
     double max_dist;    /* rejection distance, same units as the points (<= 0: off) */
+    double search;      /* a closest point whose normal disagrees is replaced by the
+                           nearest agreeing one within its distance + search (the other
+                           side of a thin part; correspond.h), same units (default 0: off) */
     int levels;         /* distinct data weights, mu_min .. mu_max geometrically, each
                            used for iters / levels iterations (default 6) */
     double plane;       /* 0: point-to-point goals; s in (0, 1]: the goal keeps the

@@ -138,3 +138,13 @@ extern "C" int closest_point_faces_within(const struct closest_point_tree *T, co
         }
     return n;
 }
+
+extern "C" double closest_point_on_face(const struct closest_point_tree *T, int f, const double p[3],
+                                        double c[3], double bary[3])
+{
+    Point q(p[0], p[1], p[2]);
+    Point x = K().construct_projected_point_3_object()(T->tris[f], q);
+    if (c) { c[0] = x.x(); c[1] = x.y(); c[2] = x.z(); }
+    if (bary) barycentric(T->tris[f], x, bary);
+    return std::sqrt(CGAL::squared_distance(q, x));
+}

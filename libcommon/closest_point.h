@@ -40,6 +40,11 @@ void closest_points(const struct closest_point_tree *T, const double *P, int n, 
 int closest_point_faces_within(const struct closest_point_tree *T, const double p[3], double r,
                                int *out, int max);
 
+/* The closest point to p on face f only: c (3, out, may be NULL), its
+ * barycentrics (3, out, may be NULL); returns the distance. */
+double closest_point_on_face(const struct closest_point_tree *T, int f, const double p[3],
+                             double c[3], double bary[3]);
+
 /* As closest_points(), but with a hint per query: a face id H[i] near the
  * answer (e.g. the previous answer of an iterative method; -1 = none).  A
  * good hint prunes the tree search; the answer is the same. */

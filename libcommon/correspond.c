@@ -1,7 +1,9 @@
 /* correspond.c -- see correspond.h */
 #include "correspond.h"
 #include "geometry.h"
+#include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 void correspond_normal(const double *N, const int *F, int f, const double *b, double n[3])
 {
@@ -23,8 +25,8 @@ int correspond_on_boundary(const struct topology *t, int f, const double *b)
 
 int correspond(const struct closest_point_tree *T, const int *F, const double *N,
                const struct topology *t, const double *Q, const double *M,
-               int n, double cosmax, double max_dist, int hinted, double *C, int *I, double *B,
-               unsigned char *ok)
+               int n, double cosmax, double max_dist, double search, int hinted, double *C,
+               int *I, double *B, unsigned char *ok)
 {
     closest_points_hinted(T, Q, n, hinted ? I : NULL, C, I, B, NULL);
     int rejected = 0;
@@ -32,6 +34,25 @@ int correspond(const struct closest_point_tree *T, const int *F, const double *N
         double m[3];
         correspond_normal(N, F, I[i], B + 3 * i, m);
         const double *q = M + 3 * i;
+        if (search > 0 && dot3(m, q) < cosmax * norm3(m) * norm3(q)) {
+            /* the nearest point whose normal agrees, a little farther away
+             * (the other side of a thin part: an ear, a leg against the body) */
+            int near[256];
+            double d0 = dist3(Q + 3 * i, C + 3 * i), best = INFINITY;
+            int k = closest_point_faces_within(T, Q + 3 * i, d0 + search, near, 256);
+            for (int j = 0; j < k && j < 256; j++) {
+                double c[3], b[3], mm[3];
+                double d = closest_point_on_face(T, near[j], Q + 3 * i, c, b);
+                if (!(d < best)) continue;
+                correspond_normal(N, F, near[j], b, mm);
+                if (dot3(mm, q) < cosmax * norm3(mm) * norm3(q)) continue;
+                best = d;
+                I[i] = near[j];
+                memcpy(C + 3 * i, c, sizeof c);
+                memcpy(B + 3 * i, b, sizeof b);
+                memcpy(m, mm, sizeof mm);
+            }
+        }
         int bad = correspond_on_boundary(t, I[i], B + 3 * i) ||
                   dot3(m, q) < cosmax * norm3(m) * norm3(q) ||
                   (max_dist > 0 && dist3(Q + 3 * i, C + 3 * i) > max_dist);

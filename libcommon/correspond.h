@@ -19,13 +19,16 @@ extern "C" {
  * normals (any length); t: its topology (for the boundary test);
  * Q: n by 3 query points, M: n by 3 their normals;
  * cosmax: cos(max_angle); max_dist <= 0: no distance test;
+ * search > 0: when the closest point's normal disagrees, take instead the
+ * nearest point within its distance + search whose normal agrees (the other
+ * side of a thin part), if any;
  * I: n (in: hints, face ids from a previous call when hinted != 0; out: the
  * closest faces), C: n by 3 closest points, B: n by 3 their barycentrics,
  * ok: n flags (out; may be NULL).  Returns the number of rejected pairs. */
 int correspond(const struct closest_point_tree *T, const int *F, const double *N,
                const struct topology *t, const double *Q, const double *M,
-               int n, double cosmax, double max_dist, int hinted, double *C, int *I, double *B,
-               unsigned char *ok);
+               int n, double cosmax, double max_dist, double search, int hinted, double *C,
+               int *I, double *B, unsigned char *ok);
 
 /* The surface normal at barycentrics b of face f: sum_k b_k N[F[f][k]]. */
 void correspond_normal(const double *N, const int *F, int f, const double *b, double n[3]);

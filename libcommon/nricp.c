@@ -25,6 +25,7 @@ void nricp_defaults(struct nricp_params *p)
     p->eps = 1e-4;
     p->max_inner = 2;
     p->fit = 30;
+    p->search = 0.01;
     p->fit_weight = 30;
     p->nearest_vertex = 0;
 }
@@ -197,7 +198,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
         for (inner = 0; inner < p->max_inner; inner++) {
             /* correspondences, source -> target */
             vertex_normals(P, FS, nvs, nfs, NS);
-            rejected = correspond(TT, FT, NT, &tt, P, NS, nvs, cosmax, p->max_dist, !first,
+            rejected = correspond(TT, FT, NT, &tt, P, NS, nvs, cosmax, p->max_dist, p->search, !first,
                                   U, UF, UB, uok);
             if (p->nearest_vertex)
                 for (int i = 0; i < nvs; i++) {
@@ -216,7 +217,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
             if (p->backward > 0) {
                 struct closest_point_tree *TS = closest_point_tree_new(P, nvs, FS, nfs);
                 if (!TS) goto done;
-                correspond(TS, FS, NS, &ts, VT, NT, nvt, cosmax, p->max_dist, !first, TC, TF, TB, tok);
+                correspond(TS, FS, NS, &ts, VT, NT, nvt, cosmax, p->max_dist, p->search, !first, TC, TF, TB, tok);
                 closest_point_tree_free(TS);
                 double wb = p->backward * (double)nvs / nvt;
                 for (int j = 0; j < nvt; j++)
@@ -287,6 +288,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
         ap.backward = p->backward;
         ap.max_angle = p->max_angle;
         ap.max_dist = p->max_dist;
+        ap.search = p->search;
         int frc = arap_fit(VS, FS, nvs, nfs, VT, FT, nvt, nft, TT, &ap, P, cb ? fit_step : NULL, &fc);
         if (frc < 0) goto done;
     }

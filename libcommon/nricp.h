@@ -6,7 +6,8 @@
  * the maps stop changing:
  *   1. correspondences: the closest POINT u_i on the target surface to each
  *      deformed source vertex (closest_point.h), weight w_i = 1, or 0 when
- *      the normals differ by more than max_angle, when u_i lies on the
+ *      the normals differ by more than max_angle (unless an agreeing point
+ *      lies within search farther: then that one), when u_i lies on the
  *      target's boundary, or when it is farther than max_dist;
  *      and, if backward > 0, the other way round: the closest point of the
  *      current source surface to each target vertex (so every part of the
@@ -40,6 +41,9 @@ struct nricp_params {
     double gamma;          /* weight of the translation column in G (default 1) */
     double max_angle;      /* normal rejection angle, degrees (default 60) */
     double max_dist;       /* rejection distance, fraction of the target diagonal (default 0.1; <= 0 off) */
+    double search;         /* a closest point whose normal disagrees gives way to the nearest
+                              agreeing point within its distance + search diagonals: the
+                              other side of a thin part (correspond.h; default 0.01; 0 off) */
     double backward;       /* weight of target->source correspondences (default 1; 0 off) */
     double eps;            /* inner loop stops when the RMS change of the deformed vertices,
                               relative to the diagonal, is below eps (default 1e-4) */

@@ -39,6 +39,8 @@ static const char help[] =
 "      --gamma G         translation weight in the smoothness term (default 1)\n"
 "      --max-angle DEG   reject correspondences whose normals differ more (default 60)\n"
 "      --max-dist D      reject correspondences farther than D diagonals (default 0.1, 0 off)\n"
+"      --search D        where the closest point's normal disagrees, take the nearest\n"
+"                        agreeing point up to D diagonals farther (default 0.01, 0 off)\n"
 "      --backward W      weight of target->source correspondences (default 1, 0 off)\n"
 "      --max-inner N     iterations per stiffness (default 2)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
@@ -70,12 +72,12 @@ struct options {
 static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
-           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM };
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
-        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
+        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
         {0, 0, 0, 0}};
@@ -97,6 +99,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_BACK: o->p.backward = arg_double(optarg, "--backward"); break;
         case O_INNER: o->p.max_inner = (int)arg_long(optarg, "--max-inner"); break;
         case O_INIT: o->init_deform = 1; break;
+        case O_SEARCH: o->p.search = arg_double(optarg, "--search"); break;
         case O_INITM:
             if (!strcmp(optarg, "shell")) o->init_shell = 1;
             else if (strcmp(optarg, "arap")) usage_error("--init-model must be arap or shell");
@@ -127,6 +130,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->p.max_angle > 0) || o->p.max_angle > 180) usage_error("--max-angle must be in (0, 180]");
     if (o->p.max_inner < 1) usage_error("--max-inner must be >= 1");
     if (o->p.fit < 0 || o->p.fit > 1000) usage_error("--fit must be in 0..1000");
+    if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
     if (!(o->p.fit_weight > 0) || o->p.fit_weight > 1e6)
         usage_error("--fit-weight must be in (0, 1e6]");
     if (!(o->p.eps >= 0)) usage_error("--eps must be >= 0");
