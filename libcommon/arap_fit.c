@@ -20,7 +20,7 @@ void arap_fit_defaults(struct arap_fit_params *p)
     p->max_angle = 60;
     p->max_dist = 0;
     p->search = 0;
-    p->release_rings = 2;
+    p->release_rings = 1;
     p->plane = 0.9;
     p->levels = 6;
 }

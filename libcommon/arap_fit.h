@@ -55,7 +55,7 @@ struct arap_fit_params {
                            fraction s of the tangential offset from the closest
                            point, so the mesh slides along the target (default 0.9) */
     int release_rings;  /* folded faces free their vertices and this many rings around
-                           them from the data terms for the next iteration (default 2) */
+                           them from the data terms for the next iteration (default 1) */
 };
 
 void arap_fit_defaults(struct arap_fit_params *p);
