@@ -21,6 +21,7 @@ void arap_fit_defaults(struct arap_fit_params *p)
     p->max_dist = 0;
     p->search = 0;
     p->release_rings = 1;
+    p->rest_smooth = 1;
     p->plane = 0.9;
     p->levels = 6;
 }
@@ -42,7 +43,7 @@ static cholmod_sparse *system_matrix(const struct topology *t, const int *isolat
     return A;
 }
 
-int arap_fit(const double *R, const int *F, int nv, int nf,
+int arap_fit(const double *R0, const int *F, int nv, int nf,
              const double *VT, const int *FT, int nvt, int nft,
              const struct closest_point_tree *TT, const struct arap_fit_params *p,
              double *P, arap_fit_step_fn cb, void *ctx)
@@ -50,7 +51,7 @@ int arap_fit(const double *R, const int *F, int nv, int nf,
     int rc = -1;
     struct topology ts = {0}, tt = {0};
     struct spd_solver *S = NULL;
-    double *Rot = malloc(((size_t)nv * 9 + 1) * sizeof *Rot);
+    double *Rot = malloc(((size_t)nv * 9 + 1) * sizeof *Rot), *R = malloc(((size_t)nv * 3 + 1) * sizeof *R);
     double *NS = malloc(((size_t)nv * 3 + 1) * sizeof *NS), *NT = malloc(((size_t)nvt * 3 + 1) * sizeof *NT);
     double *U = malloc(((size_t)nv * 3 + 1) * sizeof *U), *UB = malloc(((size_t)nv * 3 + 1) * sizeof *UB);
     double *TC = malloc(((size_t)nvt * 3 + 1) * sizeof *TC), *TB = malloc(((size_t)nvt * 3 + 1) * sizeof *TB);
@@ -63,6 +64,19 @@ int arap_fit(const double *R, const int *F, int nv, int nf,
     double *NR = malloc(((size_t)nf * 3 + 1) * sizeof *NR), *NP = malloc(((size_t)nf * 3 + 1) * sizeof *NP);
     if (topology_build(F, nf, nv, &ts) < 0 || topology_build(FT, nft, nvt, &tt) < 0) goto done;
     for (int i = 0; i < nv; i++) iso[i] = ts.VFs[i + 1] == ts.VFs[i];
+    /* the rest shape, smoothed: p_i <- (p_i + mean of its neighbours) / 2 */
+    memcpy(R, R0, (size_t)nv * 3 * sizeof *R);
+    for (int it = 0; it < p->rest_smooth; it++) {
+        memcpy(G, R, (size_t)nv * 3 * sizeof *G);
+        for (int i = 0; i < nv; i++) {
+            int deg = ts.VVs[i + 1] - ts.VVs[i];
+            for (int d = 0; d < 3 && deg > 0; d++) {
+                double m = 0;
+                for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++) m += G[3 * ts.VV[q] + d];
+                R[3 * i + d] = 0.5 * G[3 * i + d] + 0.5 * m / deg;
+            }
+        }
+    }
     vertex_normals(VT, FT, nvt, nft, NT);
     face_normals(R, F, nf, NR);
     double cosmax = cos(p->max_angle * M_PI / 180);
@@ -199,7 +213,7 @@ done:
     spd_free(S);
     topology_free(&ts);
     topology_free(&tt);
-    free(Rot); free(NS); free(NT); free(U); free(UB); free(TC); free(TB); free(G); free(Gw);
+    free(Rot); free(R); free(NS); free(NT); free(U); free(UB); free(TC); free(TB); free(G); free(Gw);
     free(rhs); free(UF); free(TF); free(iso); free(uok); free(tok); free(loose); free(loose2);
     free(NR); free(NP);
     return rc;

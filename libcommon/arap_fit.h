@@ -10,7 +10,8 @@
  * Each iteration minimizes over the pose P (#V by 3)
  *   E(P) = sum_edges |(p_i - p_j) - (R_i + R_j)/2 (r_i - r_j)|^2
  *        + mu sum_i |p_i - g_i|^2
- * with r the rest shape and g_i the goal of vertex i, the weighted mean of
+ * with r the rest shape (smoothed rest_smooth times) and g_i the goal of
+ * vertex i, the weighted mean of
  *   - its closest point u_i on the target, moved back along the target's
  *     tangent plane by the fraction 'plane' of the tangential offset
  *     (point-to-plane: the mesh may slide along the target), weight 1,
@@ -54,6 +55,10 @@ struct arap_fit_params {
     double plane;       /* 0: point-to-point goals; s in (0, 1]: the goal keeps the
                            fraction s of the tangential offset from the closest
                            point, so the mesh slides along the target (default 0.9) */
+    int rest_smooth;    /* sweeps of Laplacian smoothing of the rest shape, each moving
+                           every vertex half way to the mean of its neighbours (default
+                           1): the fit keeps the shape, not the remeshing noise (turned
+                           triangles, knife-edge rims) that the target does not share */
     int release_rings;  /* folded faces free their vertices and this many rings around
                            them from the data terms for the next iteration (default 1) */
 };
@@ -68,7 +73,7 @@ void arap_fit_defaults(struct arap_fit_params *p);
 typedef int (*arap_fit_step_fn)(void *ctx, int iter, double mu, int rejected, int folded,
                                 const double *P);
 
-/* R: #V by 3 rest shape; F: #F by 3 faces (nv, nf);
+/* R: #V by 3 rest shape (copied, then smoothed); F: #F by 3 faces (nv, nf);
  * VT: #VT by 3 target vertices, FT: #FT by 3 its faces, TT: a tree of them
  * (closest_point.h);
  * P: #V by 3, in: the start pose (close to the target), out: the fit.

@@ -25,6 +25,7 @@ void nricp_defaults(struct nricp_params *p)
     p->eps = 1e-4;
     p->max_inner = 2;
     p->fit = 30;
+    p->fit_smooth = 1;
     p->search = 0.01;
     p->fit_weight = 30;
     p->nearest_vertex = 0;
@@ -289,6 +290,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
         ap.max_angle = p->max_angle;
         ap.max_dist = p->max_dist;
         ap.search = p->search;
+        ap.rest_smooth = p->fit_smooth;
         int frc = arap_fit(VS, FS, nvs, nfs, VT, FT, nvt, nft, TT, &ap, P, cb ? fit_step : NULL, &fc);
         if (frc < 0) goto done;
     }

@@ -54,6 +54,7 @@ struct nricp_params {
     int fit;               /* ARAP fit iterations after the schedule (arap_fit.h; default 30;
                               0: pure Amberg) */
     double fit_weight;     /* its final data weight, mu_max of arap_fit (default 30) */
+    int fit_smooth;        /* smoothing sweeps of its rest shape (arap_fit rest_smooth; default 1) */
 };
 
 void nricp_defaults(struct nricp_params *p);
