@@ -23,7 +23,7 @@ void nricp_defaults(struct nricp_params *p)
     p->max_dist = 0.1;
     p->backward = 1;
     p->eps = 1e-4;
-    p->max_inner = 2;
+    p->max_inner = 1;
     p->fit = 30;
     p->fit_smooth = 1;
     p->search = 0.01;

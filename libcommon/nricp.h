@@ -47,7 +47,7 @@ struct nricp_params {
     double backward;       /* weight of target->source correspondences (default 1; 0 off) */
     double eps;            /* inner loop stops when the RMS change of the deformed vertices,
                               relative to the diagonal, is below eps (default 1e-4) */
-    int max_inner;         /* inner iterations per stiffness (default 2) */
+    int max_inner;         /* inner iterations per stiffness (default 1) */
     int nearest_vertex;    /* baseline: correspondence = the nearest corner of the closest
                               triangle (~ the closest target vertex) instead of the closest
                               point; default 0 */

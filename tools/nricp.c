@@ -42,7 +42,7 @@ static const char help[] =
 "      --search D        where the closest point's normal disagrees, take the nearest\n"
 "                        agreeing point up to D diagonals farther (default 0.01, 0 off)\n"
 "      --backward W      weight of target->source correspondences (default 1, 0 off)\n"
-"      --max-inner N     iterations per stiffness (default 2)\n"
+"      --max-inner N     iterations per stiffness (default 1)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
