@@ -35,12 +35,6 @@ best3() {
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3g", (b > 0 ? a / b : 0) }'; }
 
 # ---- nricp on the camel scans (cleaned by mesh-clean, as examples/clay does)
-# landmark rows 'src dst' -> 'src x y z' with dst looked up in the raw scan
-# (cleaning may shift the vertex indices)
-points() {
-    awk 'NR == FNR { if ($1 == "frame") on = 1; else if (on && NF == 3) v[n++] = $0; next }
-         /^#/ || NF == 0 { print; next } NF == 2 { print $1, v[$2]; next } { print }' "$1" "$2"
-}
 walltime() {
     b=
     for i in 1 2 3; do
@@ -56,27 +50,28 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
         mesh-clean "$T/raw$k.mesh" >"$T/c$k.mesh" || exit 1
     done
     EX="$ROOT/examples/clay"
-    for k in 02 03 04 05 05-direct; do points "$T/raw${k%-direct}.mesh" "$EX/landmarks-01-$k.txt" >"$T/m$k.txt"; done
-    nricp --init-deform -l "$T/m02.txt" "$T/c01.mesh" "$T/c02.mesh" >"$T/r.mesh" &&
-    nricp --init-deform --fit 0 -l "$T/m02.txt" "$T/c01.mesh" "$T/c02.mesh" >"$T/r0.mesh" &&
-    nricp --nearest-vertex --backward 0 --fit 0 -l "$T/m02.txt" "$T/c01.mesh" "$T/c02.mesh" >"$T/b.mesh" || exit 1
+    # (cleaning may shift vertex indices: the landmark files name raw ones)
+    lm() { echo "-l $EX/landmarks-01-$1.txt --landmark-mesh $T/raw${1%-direct}.mesh"; }
+    nricp --init-deform $(lm 02) "$T/c01.mesh" "$T/c02.mesh" >"$T/r.mesh" &&
+    nricp --init-deform --fit 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh" >"$T/r0.mesh" &&
+    nricp --nearest-vertex --backward 0 --fit 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh" >"$T/b.mesh" || exit 1
     set -- $(hf "$T/c02.mesh" "$T/r.mesh"); h=$1 f=$2
     set -- $(hf "$T/c02.mesh" "$T/r0.mesh"); h0=$1 f0=$2
     set -- $(hf "$T/c02.mesh" "$T/b.mesh"); hb=$1 fb=$2
     echo "nricp --init-deform camel 01->02 Hausdorff: $h % of the diagonal ($f flipped faces) | baseline nearest-vertex $hb % ($fb flipped) | ratio $(ratio "$h" "$hb") (goal < 1 % and no flipped face; trimesh peer 3.4-3.7 %)"
     echo "nricp ARAP fit camel 01->02: $h % ($f flipped) | baseline --fit 0 (Amberg + backward term) $h0 % ($f0 flipped) | ratio $(ratio "$h" "$h0")"
-    tw=$(walltime nricp --init-deform -l "$T/m02.txt" "$T/c01.mesh" "$T/c02.mesh")
-    t=$(best3 nricp --init-deform -l "$T/m02.txt" "$T/c01.mesh" "$T/c02.mesh")
-    tb=$(best3 nricp --nearest-vertex --backward 0 --fit 0 -l "$T/m02.txt" "$T/c01.mesh" "$T/c02.mesh")
+    tw=$(walltime nricp --init-deform $(lm 02) "$T/c01.mesh" "$T/c02.mesh")
+    t=$(best3 nricp --init-deform $(lm 02) "$T/c01.mesh" "$T/c02.mesh")
+    tb=$(best3 nricp --nearest-vertex --backward 0 --fit 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh")
     echo "nricp --init-deform camel 01->02 time: $tw s wall ($t s CPU) | baseline nearest-vertex $tb s CPU | ratio $(ratio "$t" "$tb") in CPU (goal <= 3 s on 2 cores; trimesh peer 10-17 s)"
     # 01 -> 05, the legs swap places: directly (a landmark set marking every
     # leg three times) and chained through 02, 03, 04 as examples/clay does
-    nricp --init-deform -l "$T/m05-direct.txt" "$T/c01.mesh" "$T/c05.mesh" >"$T/d5.mesh" &&
-    nricp --init-model shell -l "$T/m05-direct.txt" "$T/c01.mesh" "$T/c05.mesh" >"$T/s5.mesh" &&
-    nricp --nearest-vertex --backward 0 --fit 0 -l "$T/m05-direct.txt" "$T/c01.mesh" "$T/c05.mesh" >"$T/b5.mesh" || exit 1
+    nricp --init-deform $(lm 05-direct) "$T/c01.mesh" "$T/c05.mesh" >"$T/d5.mesh" &&
+    nricp --init-model shell $(lm 05-direct) "$T/c01.mesh" "$T/c05.mesh" >"$T/s5.mesh" &&
+    nricp --nearest-vertex --backward 0 --fit 0 $(lm 05-direct) "$T/c01.mesh" "$T/c05.mesh" >"$T/b5.mesh" || exit 1
     prev="$T/c01.mesh"
     for k in 02 03 04 05; do
-        nricp --init-deform -l "$T/m$k.txt" "$prev" "$T/c$k.mesh" >"$T/ch$k.mesh" || exit 1
+        nricp --init-deform $(lm $k) "$prev" "$T/c$k.mesh" >"$T/ch$k.mesh" || exit 1
         prev="$T/ch$k.mesh"
     done
     set -- $(hf "$T/c05.mesh" "$T/d5.mesh"); h5=$1 f5=$2

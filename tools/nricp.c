@@ -29,6 +29,8 @@ static const char help[] =
 "\n"
 "Options:\n"
 "  -l, --landmarks FILE  rows 'src_vertex dst_vertex' or 'src_vertex x y z'\n"
+"      --landmark-mesh M the mesh whose vertices dst_vertex names, if not TARGET\n"
+"                        (e.g. the scan before mesh-clean renumbered it)\n"
 "                        (optional, but large motions need them)\n"
 "      --align KIND      rigid | similarity | none: Procrustes on the landmarks\n"
 "                        first (default rigid; none without >= 3 landmarks)\n"
@@ -65,7 +67,7 @@ static const char help[] =
 "Example: nricp -v -l marks-01-02.txt camel-01.mesh camel-02.mesh > camel-02-reg.mesh\n";
 
 struct options {
-    const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness;
+    const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness, *lm_mesh;
     int raw, init_deform, init_shell;
     struct nricp_params p;
 };
@@ -73,12 +75,12 @@ struct options {
 static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
-           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS };
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
-        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
+        {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
         {0, 0, 0, 0}};
@@ -100,6 +102,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_BACK: o->p.backward = arg_double(optarg, "--backward"); break;
         case O_INNER: o->p.max_inner = (int)arg_long(optarg, "--max-inner"); break;
         case O_INIT: o->init_deform = 1; break;
+        case O_LMESH: o->lm_mesh = optarg; break;
         case O_FITS: o->p.fit_smooth = (int)arg_long(optarg, "--fit-smooth"); break;
         case O_SEARCH: o->p.search = arg_double(optarg, "--search"); break;
         case O_INITM:
@@ -131,6 +134,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->p.beta < 0 || o->p.backward < 0 || o->p.gamma < 0) usage_error("weights must be >= 0");
     if (!(o->p.max_angle > 0) || o->p.max_angle > 180) usage_error("--max-angle must be in (0, 180]");
     if (o->p.max_inner < 1) usage_error("--max-inner must be >= 1");
+    if (o->lm_mesh && !o->landmarks) usage_error("--landmark-mesh needs --landmarks");
     if (o->p.fit < 0 || o->p.fit > 1000) usage_error("--fit must be in 0..1000");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
@@ -171,7 +175,12 @@ int main(int argc, char **argv)
     if (mesh_read(o.dst, &T) < 0) die("%s", cm_errmsg());
     if (S.nf < 1 || T.nf < 1) die("cannot register: %s has no faces", S.nf < 1 ? o.src : o.dst);
     struct landmarks L = {0};
-    if (o.landmarks && landmarks_read(o.landmarks, S.nv, T.V, T.nv, &L) < 0) die("%s", cm_errmsg());
+    struct mesh LM = {0};
+    if (o.lm_mesh && mesh_read(o.lm_mesh, &LM) < 0) die("%s", cm_errmsg());
+    if (o.landmarks && landmarks_read(o.landmarks, S.nv, o.lm_mesh ? LM.V : T.V,
+                                      o.lm_mesh ? LM.nv : T.nv, &L) < 0)
+        die("%s", cm_errmsg());
+    if (o.lm_mesh) mesh_free(&LM);
     double t0 = now_seconds();
     /* Procrustes on the landmarks (Algorithm 2, first line) */
     double *VS = malloc((size_t)S.nv * 3 * sizeof *VS + 1);
