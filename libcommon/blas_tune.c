@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 extern char *openblas_get_corename(void);
+extern void openblas_set_num_threads(int);
 
 const char *blas_corename(void)
 {
@@ -26,4 +27,9 @@ void blas_tune(char **argv)
     setenv("OPENBLAS_CORETYPE", want, 1);
     execv("/proc/self/exe", argv);
     unsetenv("OPENBLAS_CORETYPE");      /* exec failed: carry on as we are */
+}
+
+void blas_single_thread(void)
+{
+    if (!getenv("OPENBLAS_NUM_THREADS") && !getenv("OMP_NUM_THREADS")) openblas_set_num_threads(1);
 }

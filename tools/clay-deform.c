@@ -56,6 +56,7 @@ static const char help[] =
 int main(int argc, char **argv)
 {
     blas_tune(argv);             /* CHOLMOD's supernodal factorization runs on BLAS */
+    blas_single_thread();        /* small supernodes: more threads only spin */
     tool_init(argc, argv);
     enum { O_LAMBDA = 256, O_HAUS, O_NOVOL, O_POSES, O_RAW, O_VERSION, O_KS, O_KB, O_KV, O_KF };
     static const struct option lo[] = {

@@ -3,6 +3,7 @@
  * E-StopMotion thesis Sec. 5.2.1, Algorithm 2, after a Procrustes
  * alignment on the landmarks.
  */
+#include "blas_tune.h"
 #include "clay_deform.h"
 #include "thin_shell.h"
 #include "closest_point.h"
@@ -168,6 +169,7 @@ static int on_step(void *ctx, int step, double alpha, double beta, int inner, in
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
+    blas_single_thread();          /* small supernodes: threads only spin */
     struct options o;
     parse_args(argc, argv, &o);
     struct mesh S, T;
