@@ -3,6 +3,7 @@
 #include "cm_error.h"
 #include "correspond.h"
 #include "geometry.h"
+#include "laplacian.h"
 #include "polar.h"
 #include "spd.h"
 #include "topology.h"
@@ -66,17 +67,7 @@ int arap_fit(const double *R0, const int *F, int nv, int nf,
     for (int i = 0; i < nv; i++) iso[i] = ts.VFs[i + 1] == ts.VFs[i];
     /* the rest shape, smoothed: p_i <- (p_i + mean of its neighbours) / 2 */
     memcpy(R, R0, (size_t)nv * 3 * sizeof *R);
-    for (int it = 0; it < p->rest_smooth; it++) {
-        memcpy(G, R, (size_t)nv * 3 * sizeof *G);
-        for (int i = 0; i < nv; i++) {
-            int deg = ts.VVs[i + 1] - ts.VVs[i];
-            for (int d = 0; d < 3 && deg > 0; d++) {
-                double m = 0;
-                for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++) m += G[3 * ts.VV[q] + d];
-                R[3 * i + d] = 0.5 * G[3 * i + d] + 0.5 * m / deg;
-            }
-        }
-    }
+    if (umbrella_smooth(&ts, NULL, 0.5, p->rest_smooth, R) < 0) goto done;
     vertex_normals(VT, FT, nvt, nft, NT);
     face_normals(R, F, nf, NR);
     double cosmax = cos(p->max_angle * M_PI / 180);

@@ -1,8 +1,10 @@
 /* laplacian.c -- see laplacian.h */
 #include "laplacian.h"
+#include "cm_error.h"
 #include "geometry.h"
 #include "topology.h"
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* cotangent of the angle at corner c of face f */
@@ -91,4 +93,26 @@ void mass_diag(const double *V, const int *F, int nv, int nf, enum mass_type typ
             M[F[3 * f + c]] += (dq * dq * cot[(c + 2) % 3] + dr * dr * cot[(c + 1) % 3]) / 8;
         }
     }
+}
+
+int umbrella_smooth(const struct topology *t, const unsigned char *mask, double lambda, int sweeps,
+                    double *V)
+{
+    if (sweeps < 1) return 0;
+    double *W = malloc(((size_t)t->nv * 3 + 1) * sizeof *W);
+    if (!W) return cm_seterr("out of memory");
+    for (int s = 0; s < sweeps; s++) {
+        memcpy(W, V, (size_t)t->nv * 3 * sizeof *W);
+        for (int i = 0; i < t->nv; i++) {
+            int deg = t->VVs[i + 1] - t->VVs[i];
+            if (deg == 0 || (mask && !mask[i])) continue;
+            for (int d = 0; d < 3; d++) {
+                double m = 0;
+                for (int q = t->VVs[i]; q < t->VVs[i + 1]; q++) m += W[3 * t->VV[q] + d];
+                V[3 * i + d] = (1 - lambda) * W[3 * i + d] + lambda * m / deg;
+            }
+        }
+    }
+    free(W);
+    return 0;
 }

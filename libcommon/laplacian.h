@@ -27,6 +27,15 @@ cholmod_sparse *cot_laplacian(const double *V, const int *F, int nv, int nf);
 struct topology;
 void cot_edge_weights(const double *V, const int *F, int nf, const struct topology *t, double *W);
 
+/* Umbrella (uniform Laplacian) smoothing, explicit: in each of `sweeps`
+ * sweeps every vertex i with mask[i] != 0 (mask NULL: all) moves by
+ * lambda times the way to the mean of its neighbours at the start of the
+ * sweep, p_i <- (1 - lambda) p_i + lambda mean_j p_j.  V: #V by 3 (in/out),
+ * t: its topology; vertices without neighbours stay.  Returns 0, or -1
+ * (cm_errmsg set) when out of memory. */
+int umbrella_smooth(const struct topology *t, const unsigned char *mask, double lambda, int sweeps,
+                    double *V);
+
 enum mass_type { MASS_BARYCENTRIC, MASS_VORONOI };
 
 /* M: #V diagonal mass entries (out).  Barycentric: a third of the incident

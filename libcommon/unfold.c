@@ -2,6 +2,7 @@
 #include "unfold.h"
 #include "cm_error.h"
 #include "geometry.h"
+#include "laplacian.h"
 #include "topology.h"
 #include <stdlib.h>
 #include <string.h>
@@ -36,28 +37,18 @@ int unfold_faces(double *V, const int *F, int nv, int nf, double min_cos, int ma
     struct topology t;
     if (topology_build(F, nf, nv, &t) < 0) return -1;
     double *N = malloc(((size_t)nf * 3 + 1) * sizeof *N);
-    double *W = malloc(((size_t)nv * 3 + 1) * sizeof *W);
     unsigned char *mark = malloc((size_t)nv + 1);
-    if (!N || !W || !mark) {
-        free(N); free(W); free(mark); topology_free(&t);
+    if (!N || !mark) {
+        free(N); free(mark); topology_free(&t);
         return cm_seterr("out of memory");
     }
     int n = find_folds(V, F, nf, &t, N, min_cos, mark, nv);
     if (found) *found = n;
     for (int s = 0; s < max_sweeps && n > 0; s++) {
-        memcpy(W, V, (size_t)nv * 3 * sizeof *W);
-        for (int i = 0; i < nv; i++) {
-            int deg = t.VVs[i + 1] - t.VVs[i];
-            if (!mark[i] || deg == 0) continue;
-            for (int d = 0; d < 3; d++) {
-                double m = 0;
-                for (int q = t.VVs[i]; q < t.VVs[i + 1]; q++) m += W[3 * t.VV[q] + d];
-                V[3 * i + d] = m / deg;
-            }
-        }
+        if (umbrella_smooth(&t, mark, 1, 1, V) < 0) { n = -1; break; }
         n = find_folds(V, F, nf, &t, N, min_cos, mark, nv);
     }
-    free(N); free(W); free(mark);
+    free(N); free(mark);
     topology_free(&t);
     return n;
 }

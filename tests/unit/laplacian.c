@@ -163,5 +163,33 @@ int main(void)
     for (int k = 0; k < ((int *)L->p)[3]; k++) finite &= isfinite(x[k]);
     ok(finite, "cot_laplacian: degenerate face gives finite entries");
     sparse_free(&L);
+
+    /* umbrella_smooth: a jittered flat grid gets smoother and stays flat;
+     * a regular grid's interior is a fixed point; the mask is respected */
+    {
+        double *Vg, *Vr;
+        int *Fg, *Fr, ng, nfg;
+        grid_mesh(8, 8, 0.8, 3, &Vg, &Fg, &ng, &nfg);
+        grid_mesh(8, 8, 0, 3, &Vr, &Fr, &ng, &nfg);
+        struct topology tg;
+        topology_build(Fg, nfg, ng, &tg);
+        double before = 0, after = 0, z = 0;
+        for (int v = 0; v < 3 * ng; v++) before += fabs(Vg[v] - Vr[v]);
+        unsigned char *mask = calloc(ng, 1);
+        for (int j = 1; j < 8; j++) for (int i = 1; i < 8; i++) mask[j * 9 + i] = 1;
+        double *Vb = malloc(sizeof(double) * 3 * ng);
+        memcpy(Vb, Vg, sizeof(double) * 3 * ng);
+        ok(umbrella_smooth(&tg, mask, 0.5, 20, Vg) == 0, "umbrella_smooth runs");
+        int still = 1;
+        for (int v = 0; v < ng; v++) {
+            for (int d = 0; d < 3; d++) after += fabs(Vg[3 * v + d] - Vr[3 * v + d]);
+            z += fabs(Vg[3 * v + 2]);
+            if (!mask[v]) still &= !memcmp(Vg + 3 * v, Vb + 3 * v, 3 * sizeof(double));
+        }
+        ok(after < 0.5 * before && z == 0, "umbrella_smooth: jitter %.3g -> %.3g, flat", before, after);
+        ok(still, "umbrella_smooth: unmasked (boundary) vertices stay");
+        free(Vg); free(Vr); free(Fg); free(Fr); free(mask); free(Vb);
+        topology_free(&tg);
+    }
     return tap_done();
 }
