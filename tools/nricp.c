@@ -198,7 +198,7 @@ int main(int argc, char **argv)
     }
     if (o.init_deform) {
         /* Algorithm 3, first loop: clay deformation toward the landmarks */
-        if (L.n < 1) die("--init-deform needs landmarks (-l)");
+        if (L.n < 1) die("--init-deform and --init-model need landmarks (-l)");
         double *k = NULL;
         if (o.init_stiffness) {
             struct columns col;
