@@ -477,6 +477,47 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
             return cm_seterr("cannot read '%s': mesh %d: morph target %d has no positions for all vertices",
                              path, mi, i);
 
+    /* ---- merge: the other mesh instances of the scene, placed relative
+     * to the chosen mesh's node ---- */
+    struct Extra { const aiMesh *mesh; aiMatrix4x4 M; };
+    std::vector<Extra> extra;
+    int nv_all = nv;
+    if (o->merge) {
+        aiMatrix4x4 toprim;                       /* identity */
+        if (!o->world && node) toprim = node_global(node).Inverse();
+        std::vector<const aiNode *> stack{sc->mRootNode};
+        while (!stack.empty()) {
+            const aiNode *n = stack.back();
+            stack.pop_back();
+            for (unsigned i = 0; i < n->mNumMeshes; i++) {
+                unsigned j = n->mMeshes[i];
+                if (j >= sc->mNumMeshes || (n == node && (int)j == mi)) continue;
+                const aiMesh *em = sc->mMeshes[j];
+                if (!(em->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || !em->mNumVertices) continue;
+                extra.push_back({em, toprim * node_global(n)});
+                for (unsigned t = 0; t < em->mNumFaces; t++) {
+                    const aiFace &fc = em->mFaces[t];
+                    for (unsigned k = 0; k < fc.mNumIndices; k++)
+                        if (fc.mIndices[k] >= em->mNumVertices)
+                            return cm_seterr("cannot read '%s': mesh %u: vertex index %u out of range",
+                                             path, j, fc.mIndices[k]);
+                    for (unsigned k = 1; k + 1 < fc.mNumIndices; k++) {
+                        F.push_back(nv_all + (int)fc.mIndices[0]);
+                        F.push_back(nv_all + (int)fc.mIndices[k]);
+                        F.push_back(nv_all + (int)fc.mIndices[k + 1]);
+                    }
+                }
+                if ((long)nv_all + em->mNumVertices > 100000000L)
+                    return cm_seterr("cannot read '%s': too many vertices to merge", path);
+                nv_all += (int)em->mNumVertices;
+                inf.merged_morph += em->mNumAnimMeshes > 0;
+            }
+            for (unsigned c = n->mNumChildren; c-- > 0;) stack.push_back(n->mChildren[c]);
+        }
+        inf.merged = (int)extra.size();
+        inf.merged_nv = nv_all - nv;
+    }
+
     /* ---- the morph animation ---- */
     const aiMeshMorphAnim *mc = nullptr;
     const aiAnimation *anim = nullptr;
@@ -605,7 +646,7 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
         times = tr.time;
     }
 
-    if (mesh_alloc(m, nv, (int)(F.size() / 3), (int)times.size()) < 0)
+    if (mesh_alloc(m, nv_all, (int)(F.size() / 3), (int)times.size()) < 0)
         return -1;
     memcpy(m->F, F.data(), F.size() * sizeof(int));
     std::vector<double> w, D((size_t)nt * nv * 3);
@@ -640,7 +681,16 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
                 X[3 * v + 2] = M.c1 * x + M.c2 * y + M.c3 * z + M.c4;
             }
         }
-        for (int c = 0; c < 3 * nv; c++)
+        double *Y = X + 3 * (size_t)nv;
+        for (const Extra &e : extra)
+            for (unsigned v = 0; v < e.mesh->mNumVertices; v++, Y += 3) {
+                const aiVector3D &p = e.mesh->mVertices[v];
+                const aiMatrix4x4 &M = e.M;
+                Y[0] = M.a1 * p.x + M.a2 * p.y + M.a3 * p.z + M.a4;
+                Y[1] = M.b1 * p.x + M.b2 * p.y + M.b3 * p.z + M.b4;
+                Y[2] = M.c1 * p.x + M.c2 * p.y + M.c3 * p.z + M.c4;
+            }
+        for (int c = 0; c < 3 * nv_all; c++)
             if (!std::isfinite(X[c])) {
                 mesh_free(m);
                 return cm_seterr("cannot read '%s': non-finite position in frame %zu", path, k);

@@ -28,6 +28,18 @@
  * whose weight accessor is not FLOAT, the weights are therefore decoded
  * here from the file's accessor (byte / 255, short / 65535, ...).
  *
+ * With `merge`, every other mesh instance of the scene (a node that
+ * references a triangle mesh, depth-first in node order) is appended after
+ * the chosen mesh: the chosen mesh keeps vertex and face numbers 0..n-1,
+ * the others follow, each placed by its rest-pose transform relative to
+ * the chosen mesh's node (inverse(global(chosen)) * global(node); with
+ * `world`, global(node)), so the merged head is where the viewer shows it
+ * and the chosen mesh is where it is without merging.  Appended meshes
+ * are static: their base positions repeated in every frame (their node
+ * animations, e.g. eye rotations, are not applied, as above; a morph
+ * animation of their own is not applied either: info->merged_morph counts
+ * those so the caller can say so).
+ *
  * Returns < 0 with cm_errmsg() naming the file on any failure.
  */
 #ifndef CM_ANIM_IMPORT_H
@@ -57,6 +69,8 @@ struct anim_import_opts {
                                 weights; else an index or a name */
     double fps;              /* <= 0: sample at the keyframes */
     int world;               /* apply the node's global rest-pose transform */
+    int merge;               /* also append every other triangle mesh instance
+                                of the scene (eyes, teeth, ...), see below */
 };
 
 struct anim_import_info {
@@ -68,6 +82,10 @@ struct anim_import_info {
     int nkeys;               /* keys of the morph channel (0: static mesh) */
     double duration;         /* seconds from 0 to the last key */
     int decoded_weights;     /* 1 if weights were decoded from the glTF accessor */
+    int merged;              /* merge: mesh instances appended */
+    int merged_nv;           /* merge: vertices they added */
+    int merged_morph;        /* merge: appended meshes that have morph targets
+                                of their own (taken at their base shape) */
 };
 
 /* Read the animation of one mesh.

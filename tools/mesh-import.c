@@ -41,6 +41,9 @@ static const char help[] =
 "                       morph targets, the largest if several)\n"
 "      --animation NAME|I  animations: which animation (default: the one\n"
 "                       that drives the mesh's morph weights)\n"
+"      --merge          animations: append every other mesh of the scene (eyes,\n"
+"                       teeth, ...) after the chosen one, placed as in the\n"
+"                       scene, static (repeated in every frame)\n"
 "      --world          animations: apply the mesh's node transform\n"
 "                       (default: mesh coordinates, like a baked OBJ export)\n"
 "      --weld [EPS]     merge vertices within EPS in every frame (default 0:\n"
@@ -58,7 +61,7 @@ static const char help[] =
 struct options {
     const char *list, *format, *mesh, *animation;
     double fps, weld_eps;
-    int weld, world, raw;
+    int weld, world, raw, merge;
     char **files;
     int nfiles;
 };
@@ -130,7 +133,7 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"list", 1, 0, 'l'}, {"format", 1, 0, 'F'}, {"fps", 1, 0, 'P'}, {"mesh", 1, 0, 'M'},
-        {"animation", 1, 0, 'A'}, {"world", 0, 0, 'W'}, {"weld", 2, 0, 'w'}, {"raw", 0, 0, 'R'},
+        {"animation", 1, 0, 'A'}, {"world", 0, 0, 'W'}, {"merge", 0, 0, 'G'}, {"weld", 2, 0, 'w'}, {"raw", 0, 0, 'R'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     int c, cap = 0;
@@ -145,6 +148,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'M': o->mesh = optarg; break;
         case 'A': o->animation = optarg; break;
         case 'W': o->world = 1; break;
+        case 'G': o->merge = 1; break;
         case 'w': {
             double e;
             o->weld = 1;
@@ -251,6 +255,7 @@ static void read_animation(const struct options *o, const char *path, int fmt, s
     ao.animation = o->animation;
     ao.fps = o->fps;
     ao.world = o->world;
+    ao.merge = o->merge;
     double t0 = now_seconds();
     if (anim_import(path, &ao, out, &ai) < 0)
         die("%s", cm_errmsg());
@@ -263,6 +268,12 @@ static void read_animation(const struct options *o, const char *path, int fmt, s
     else
         info(1, "%s: mesh %d '%s' (%d morph targets, no morph animation): %d vertices, %d triangles, %.2f s",
              path, ai.mesh_index, ai.mesh_name, ai.ntargets, out->nv, out->nf, now_seconds() - t0);
+    if (o->merge)
+        info(1, "merged %d other mesh%s (%d vertices) after mesh %d", ai.merged, ai.merged == 1 ? "" : "es",
+             ai.merged_nv, ai.mesh_index);
+    if (ai.merged_morph)
+        warn("%s: %d merged mesh%s morph targets of its own, taken at the base shape (import it alone with --mesh)",
+             path, ai.merged_morph, ai.merged_morph == 1 ? " has" : "es have");
 }
 
 int main(int argc, char **argv)
@@ -274,6 +285,8 @@ int main(int argc, char **argv)
     struct mesh m;
     int fmt;
     enum kind kd = file_kind(&o, o.files[0], &fmt);
+    if (o.merge && !(o.nfiles == 1 && kd == K_ANIM))
+        usage_error("--merge is for one glTF, GLB or FBX scene (an OBJ file is read whole already)");
     if (o.nfiles == 1 && kd == K_ANIM)
         read_animation(&o, o.files[0], fmt, &m);
     else if (o.nfiles == 1 && kd == K_UNKNOWN)
