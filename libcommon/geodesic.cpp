@@ -12,6 +12,8 @@
 
 #include <cmath>
 #include <memory>
+#include <queue>
+#include <utility>
 #include <vector>
 
 typedef CGAL::Simple_cartesian<double> K;
@@ -275,4 +277,49 @@ extern "C" int geodesic_distance(const double *V, const int *F, int nv, int nf,
     if (r == 0)
         for (int v = 0; v < nv; v++) D[v] = D2[v];
     return r;
+}
+
+extern "C" int geodesic_extend(const double *V, const int *F, int nv, int nf, const int *B, int nb,
+                               double *D)
+{
+    for (int i = 0; i < 3 * nf; i++)
+        if (F[i] < 0 || F[i] >= nv)
+            return cm_seterr("geodesic: face %d: vertex index %d out of range", i / 3, F[i]);
+    for (int i = 0; i < 2 * nb; i++)
+        if (B[i] < 0 || B[i] >= nv)
+            return cm_seterr("geodesic: bridge %d: vertex index %d out of range", i / 2, B[i]);
+    // adjacency (CSR) of mesh edges and bridges; an edge may appear twice
+    std::vector<int> deg(nv + 1, 0), adj;
+    auto each = [&](auto fn) {
+        for (int f = 0; f < nf; f++)
+            for (int k = 0; k < 3; k++) fn(F[3 * f + k], F[3 * f + (k + 1) % 3]);
+        for (int i = 0; i < nb; i++) fn(B[2 * i], B[2 * i + 1]);
+    };
+    each([&](int a, int b) { deg[a + 1]++; deg[b + 1]++; });
+    for (int v = 0; v < nv; v++) deg[v + 1] += deg[v];
+    adj.resize(deg[nv]);
+    std::vector<int> fill(deg.begin(), deg.end() - 1);
+    each([&](int a, int b) { adj[fill[a]++] = b; adj[fill[b]++] = a; });
+    typedef std::pair<double, int> Q;
+    std::priority_queue<Q, std::vector<Q>, std::greater<Q>> q;
+    std::vector<char> fixed(nv, 0);
+    for (int v = 0; v < nv; v++)
+        if (std::isfinite(D[v])) { fixed[v] = 1; q.push(Q(D[v], v)); }
+    while (!q.empty()) {
+        Q t = q.top();
+        q.pop();
+        int v = t.second;
+        if (t.first > D[v]) continue;
+        for (int i = deg[v]; i < deg[v + 1]; i++) {
+            int u = adj[i];
+            if (fixed[u]) continue;
+            double l = 0;
+            for (int k = 0; k < 3; k++) l += (V[3 * u + k] - V[3 * v + k]) * (V[3 * u + k] - V[3 * v + k]);
+            double d = D[v] + std::sqrt(l);
+            if (d < D[u]) { D[u] = d; q.push(Q(d, u)); }
+        }
+    }
+    int left = 0;
+    for (int v = 0; v < nv; v++) left += !std::isfinite(D[v]);
+    return left;
 }

@@ -67,6 +67,19 @@ int geodesic_distance(const double *V, const int *F, int nv, int nf,
                       const int *S, int ns, const int *SF, const double *SB, int nsf,
                       double *D);
 
+/* Carry distances over to the vertices no source reaches (other
+ * components), across bridges: shortest paths (Dijkstra) over the mesh
+ * edges and the bridge edges, both with their Euclidean lengths, starting
+ * from the vertices whose distance is already finite (kept as they are).
+ *   V   #V by 3 vertex positions,  F  #F by 3 faces
+ *   B   nb by 2 vertex pairs (bridge edges, e.g. corners of bridges.h pairs)
+ *   D   #V in: distances, INFINITY where unknown; out: INFINITY only where
+ *       no path leads
+ * Returns the number of vertices still at INFINITY, or -1 (cm_errmsg set)
+ * on an index out of range. */
+int geodesic_extend(const double *V, const int *F, int nv, int nf, const int *B, int nb,
+                    double *D);
+
 #ifdef __cplusplus
 }
 #endif

@@ -8,6 +8,7 @@
  * unary cost (Eq. 2); alpha-expansion on BK max-flow minimizes Eq. 1.
  */
 #include "alpha_expansion.h"
+#include "bridges.h"
 #include "closest_point.h"
 #include "cm_error.h"
 #include "geodesic.h"
@@ -48,6 +49,12 @@ static const char help[] =
 "  -r, --seed-radius R      triangles within R D of a seed are fixed to its part\n"
 "                           (default 0.06); -b 0 -r 0: the paper's Eq. 2\n"
 "  -p, --parts S            number of parts (default: largest seed part + 1)\n"
+"      --bridge R           components (eyes, teeth) are linked where they come\n"
+"                           within R bbox diagonals of each other (default 0.01;\n"
+"                           one without, to its nearest component): distances\n"
+"                           and labels pass through these bridges\n"
+"      --seed-snap T        a seed point farther than T bbox diagonals from the\n"
+"                           surface is an error (default 0.05)\n"
 "      --one-pass           one pass, RMS displacement instead of Eq. 3's sum\n"
 "                           (no second read, no temporary file for pipes)\n"
 "      --max-cycles N       limit alpha-expansion cycles (default: to convergence)\n"
@@ -76,12 +83,24 @@ static const char help[] =
  * radius 0.1 also at gamma 50, 200 and 400. */
 #define DEFAULT_BAND 0.6
 #define DEFAULT_SEED_RADIUS 0.06
+/* Components closer than this (bbox diagonals) are bridged.  facecap's
+ * eyeballs come within 0.0009 of the eyelids, its teeth within 0.0018 of
+ * the face (closest vertices): 0.01 links them with margin. */
+#define DEFAULT_BRIDGE 0.01
+#define DEFAULT_SEED_SNAP 0.05
+/* A part that keeps less than this share of the area its seeds' geodesic
+ * distances claim (the triangles nearest to its seeds) has collapsed: its
+ * seam closed around the seed disk.  Measured with forehead + chin seeds:
+ * the collapsed caps of head-gen's head keep 0.24 and 0.27 (alone and
+ * with eyeballs), the good cuts of facecap and of head-gen with four seeds
+ * keep 0.68 or more of their region. */
+#define COLLAPSE_SHARE 0.5
 
 struct seed { int part, face; double p[3]; int is_point; long line; };
 
 struct options {
     const char *input, *seeds_file, *output;
-    double gamma, motion, band, seed_radius;
+    double gamma, motion, band, seed_radius, bridge, seed_snap;
     int parts, one_pass, max_cycles, no_weld;
     struct seed *seeds;
     int nseeds, cap;
@@ -102,6 +121,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     static const struct option lo[] = {
         {"seed", 1, 0, 'S'}, {"seeds", 1, 0, 'F'}, {"gamma", 1, 0, 'g'}, {"motion", 1, 0, 'm'},
         {"band", 1, 0, 'b'}, {"seed-radius", 1, 0, 'r'}, {"parts", 1, 0, 'p'},
+        {"bridge", 1, 0, 'B'}, {"seed-snap", 1, 0, 'T'},
         {"one-pass", 0, 0, '1'}, {"no-weld", 0, 0, 'W'}, {"max-cycles", 1, 0, 'M'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -109,6 +129,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->motion = DEFAULT_MOTION;
     o->band = DEFAULT_BAND;
     o->seed_radius = DEFAULT_SEED_RADIUS;
+    o->bridge = DEFAULT_BRIDGE;
+    o->seed_snap = DEFAULT_SEED_SNAP;
     int c;
     while ((c = getopt_long(argc, argv, "g:m:b:r:p:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -128,6 +150,8 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'm': o->motion = arg_double(optarg, "--motion"); break;
         case 'b': o->band = arg_double(optarg, "--band"); break;
         case 'r': o->seed_radius = arg_double(optarg, "--seed-radius"); break;
+        case 'B': o->bridge = arg_double(optarg, "--bridge"); break;
+        case 'T': o->seed_snap = arg_double(optarg, "--seed-snap"); break;
         case 'p': o->parts = (int)arg_long(optarg, "--parts"); break;
         case '1': o->one_pass = 1; break;
         case 'W': o->no_weld = 1; break;
@@ -145,6 +169,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->motion >= 0) || !isfinite(o->motion)) usage_error("--motion must be >= 0");
     if (!(o->band >= 0) || !isfinite(o->band)) usage_error("--band must be >= 0");
     if (!(o->seed_radius >= 0 && o->seed_radius < 0.5)) usage_error("--seed-radius must be in [0, 0.5)");
+    if (!(o->bridge >= 0) || !isfinite(o->bridge)) usage_error("--bridge must be >= 0");
+    if (!(o->seed_snap > 0) || !isfinite(o->seed_snap)) usage_error("--seed-snap must be > 0");
     if (o->parts && o->parts < 2) usage_error("--parts must be at least 2");
     if (o->max_cycles < 0) usage_error("--max-cycles must be >= 0");
     if (!o->seeds_file && o->nseeds == 0) usage_error("no seeds (--seed PART:FACE or --seeds FILE)");
@@ -323,6 +349,10 @@ int main(int argc, char **argv)
             die("%s", cm_errmsg());
         double c[3], d = closest_point_query(tree, o.seeds[i].p, c, &o.seeds[i].face, NULL);
         info(2, "seed point line %ld -> face %d (distance %g)", o.seeds[i].line, o.seeds[i].face, d);
+        if (!(d <= o.seed_snap * diag))
+            die("cannot read '%s': line %ld: seed point %g %g %g is %.3g bbox diagonals from the surface "
+                "(more than --seed-snap %g): wrong units or axes?", o.seeds_file, o.seeds[i].line,
+                o.seeds[i].p[0], o.seeds[i].p[1], o.seeds[i].p[2], d / diag, o.seed_snap);
     }
     closest_point_tree_free(tree);
     int *seed_part = malloc(sizeof(int) * (nf ? nf : 1));
@@ -395,6 +425,27 @@ int main(int argc, char **argv)
     /* unary (Eq. 2): geodesic distance on the average mesh from each
      * triangle (mean of its corner distances) to the part's seed triangles,
      * in units of the bbox diagonal; seed triangles are fixed to their part */
+    int *fcomp = malloc(sizeof(int) * (nf ? nf : 1));
+    if (!fcomp) die("out of memory");
+    int ncomp = connected_components(&t, Fw, fcomp);
+    struct bridge *br = NULL;
+    int nbr = component_bridges(avg, nv, Fw, nf, fcomp, ncomp, o.bridge * diag, &br);
+    if (nbr < 0) die("cannot segment '%s': %s", name, cm_errmsg());
+    /* bridge edges for the distances: every corner of f to every corner of g */
+    int *BV = malloc(sizeof(int) * 18 * (nbr ? nbr : 1));
+    if (!BV) die("out of memory");
+    for (int i = 0; i < nbr; i++)
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                BV[18 * i + 6 * a + 2 * b] = Fw[3 * br[i].f + a];
+                BV[18 * i + 6 * a + 2 * b + 1] = Fw[3 * br[i].g + b];
+            }
+    if (ncomp > 1) {
+        double far = 0;
+        for (int i = 0; i < nbr; i++) if (br[i].d > far) far = br[i].d;
+        info(1, "%d components, %d bridges (--bridge %g; longest %.3g bbox diagonals)", ncomp, nbr,
+             o.bridge, far / diag);
+    }
     struct geodesic *g = geodesic_new(avg, Fw, nv, nf);
     if (!g) die("cannot segment '%s': %s", name, cm_errmsg());
     double *U = malloc(sizeof(double) * (size_t)nf * s);
@@ -407,6 +458,13 @@ int main(int argc, char **argv)
             if (seed_part[f] == p)
                 for (int k = 0; k < 3; k++) S[ns++] = Fw[3 * f + k];
         if (geodesic_solve(g, S, ns, D) < 0) die("cannot segment '%s': %s", name, cm_errmsg());
+        /* components without a seed of p: through the bridges */
+        int left = geodesic_extend(avg, Fw, nv, nf, BV, 9 * nbr, D);
+        if (left < 0) die("cannot segment '%s': %s", name, cm_errmsg());
+        for (int f = 0; f < nf && left; f++)
+            if (!isfinite(D[Fw[3 * f]]))
+                die("cannot segment '%s': face %d is in a group of components that no bridge links to a "
+                    "seed of part %d: add a seed there or raise --bridge", name, f, p);
         for (int f = 0; f < nf; f++) {
             const int *T = Fw + 3 * f;
             U[(size_t)f * s + p] = (D[T[0]] + D[T[1]] + D[T[2]]) / 3 / diag;
@@ -435,21 +493,30 @@ int main(int argc, char **argv)
      *  D = the distance between the nearest seeds of two different parts.
      * Subtracting min_q d_q (a per-triangle constant) does not change the
      * minimizer, so -b 0 -r 0 is Eq. 2 exactly.  Components without seeds
-     * keep their straight-line distances below (no seam to place there). */
+     * (eyes, teeth) have their distances through the bridges (above), and
+     * the bridges join the dual graph below: such a component takes the
+     * part of the surface it touches, not that of the nearest seed in a
+     * straight line (which put half of a production head's triangles where
+     * the seam left them). */
     double dseeds = INFINITY;
     for (int f = 0; f < nf; f++)
         if (seed_part[f] >= 0)
             for (int p = 0; p < s; p++)
                 if (p != seed_part[f] && U[(size_t)f * s + p] < dseeds) dseeds = U[(size_t)f * s + p];
     int *disk = malloc(sizeof(int) * (nf ? nf : 1));
-    if (!disk) die("out of memory");
+    int *nearest = malloc(sizeof(int) * (nf ? nf : 1));    /* part of the nearest seed */
+    if (!disk || !nearest) die("out of memory");
     int ndisk = 0;
     for (int f = 0; f < nf; f++) {
         double *u = U + (size_t)f * s, m = INFINITY;
         disk[f] = -1;
+        nearest[f] = 0;
         for (int p = 0; p < s; p++)
-            if (u[p] < m) { m = u[p]; if (isfinite(dseeds) && m < o.seed_radius * dseeds) disk[f] = p; }
-        if (!isfinite(m)) continue;   /* no seed in this component */
+            if (u[p] < m) {
+                m = u[p];
+                nearest[f] = p;
+                if (isfinite(dseeds) && m < o.seed_radius * dseeds) disk[f] = p;
+            }
         ndisk += disk[f] >= 0 && seed_part[f] < 0;
         for (int p = 0; p < s; p++)
             if (isfinite(u[p])) u[p] = fmax(0, u[p] - m - o.band * dseeds);
@@ -464,48 +531,34 @@ int main(int argc, char **argv)
     face_areas(avg, F, nf, A);
     for (int f = 0; f < nf; f++) atot += A[f];
     if (!(atot > 0)) die("cannot segment '%s': the average mesh has zero area", name);
-    int unreachable = 0;
     for (int f = 0; f < nf; f++) {
-        const int *T = F + 3 * f;
-        int any = 0;
-        for (int p = 0; p < s; p++) any |= isfinite(U[(size_t)f * s + p]);
-        if (!any) {
-            /* a connected component without seeds: straight-line distance
-             * from the centroid to the nearest seed corner of each part */
-            double c[3];
-            for (int k = 0; k < 3; k++)
-                c[k] = (avg[3 * T[0] + k] + avg[3 * T[1] + k] + avg[3 * T[2] + k]) / 3;
-            for (int p = 0; p < s; p++) U[(size_t)f * s + p] = INFINITY;
-            for (int g2 = 0; g2 < nf; g2++)
-                if (seed_part[g2] >= 0)
-                    for (int k = 0; k < 3; k++) {
-                        double d = dist3(c, avg + 3 * F[3 * g2 + k]) / diag;
-                        double *u = &U[(size_t)f * s + seed_part[g2]];
-                        if (d < *u) *u = d;
-                    }
-            unreachable++;
-        }
         /* area weight: as if the surface had UNARY_TRIANGLES equal triangles */
         for (int p = 0; p < s; p++) U[(size_t)f * s + p] *= UNARY_TRIANGLES * A[f] / atot;
         int fix = seed_part[f] >= 0 ? seed_part[f] : disk[f];
         if (fix >= 0)
             for (int p = 0; p < s; p++) U[(size_t)f * s + p] = p == fix ? 0 : INFINITY;
     }
-    free(A);
     free(disk);
-    if (unreachable)
-        info(1, "%d triangles in components without seeds: straight-line distances used", unreachable);
     double t3 = now_seconds();
 
     /* Eq. 1 by alpha-expansion over the dual graph (interior edges) */
     int ne = 0;
-    int *E = malloc(sizeof(int) * 2 * (t.ne ? t.ne : 1));
-    double *W = malloc(sizeof(double) * (t.ne ? t.ne : 1));
+    int *E = malloc(sizeof(int) * 2 * (t.ne + nbr + 1));
+    double *W = malloc(sizeof(double) * (t.ne + nbr + 1));
+    if (!E || !W) die("out of memory");
     for (int e = 0; e < t.ne; e++)
         if (t.EFn[e] == 2) {
             E[2 * ne] = t.EF[2 * e]; E[2 * ne + 1] = t.EF[2 * e + 1];
             W[ne++] = o.gamma * w[e];
         }
+    /* a bridge costs what cutting one edge of its two triangles costs on
+     * average (Eq. 3 with the motion of those edges) */
+    for (int i = 0; i < nbr; i++) {
+        double c = 0;
+        for (int k = 0; k < 3; k++) c += w[t.FE[3 * br[i].f + k]] + w[t.FE[3 * br[i].g + k]];
+        E[2 * ne] = br[i].f; E[2 * ne + 1] = br[i].g;
+        W[ne++] = o.gamma * c / 6;
+    }
     int *L = malloc(sizeof(int) * (nf ? nf : 1));
     struct alpha_expansion_stats st;
     if (alpha_expansion(nf, s, U, ne, E, W, L, 0, o.max_cycles, &st) < 0)
@@ -515,6 +568,26 @@ int main(int argc, char **argv)
     for (int f = 0; f < nf; f++) count[L[f]]++;
     for (int p = 0; p < s; p++)
         if (!count[p]) warn("part %d is empty", p);
+    /* a part far smaller than the region nearest to its seeds: its seam
+     * closed around the seed disk, a short loop in still skin */
+    double *areq = calloc(2 * (size_t)s, sizeof *areq);   /* nearest area, labeled area */
+    if (!areq) die("out of memory");
+    for (int f = 0; f < nf; f++) {
+        areq[2 * nearest[f]] += A[f];
+        areq[2 * L[f] + 1] += A[f];
+    }
+    for (int p = 0; p < s; p++)
+        info(1, "part %d: %.1f%% of the area, %.1f%% nearest to its seeds", p, 100 * areq[2 * p + 1] / atot,
+             100 * areq[2 * p] / atot);
+    for (int p = 0; p < s; p++)
+        if (count[p] && areq[2 * p + 1] < COLLAPSE_SHARE * areq[2 * p])
+            warn("part %d collapsed to its seed: %.0f%% of the area nearest to its seeds (%.1f%% of the "
+                 "model); add seeds of part %d on the far side of the intended seam (for a head: back of "
+                 "the skull for the upper part, nape for the lower part) or lower --gamma",
+                 p, 100 * areq[2 * p + 1] / areq[2 * p], 100 * areq[2 * p + 1] / atot, p);
+    free(areq);
+    free(A);
+    free(nearest);
 
     info(1, "%d vertices, %d triangles, %d frames, %d parts, bbox diagonal %g", nv, nf, n, s, diag);
     info(1, "energy %.9g = unary %.9g + binary %.9g (gamma %g), %d cycles, %d moves",
@@ -527,7 +600,7 @@ int main(int argc, char **argv)
     if (labels_write(out, L, nf) < 0) die("cannot write output: %s", cm_errmsg());
     out_close(out);
     free(X); free(avg); free(m2); free(elen); free(FE0); free(rep); free(Fw); free(w); free(wm); free(dmean); free(U); free(D); free(S);
-    free(E); free(W); free(L); free(count); free(seed_part); free(nseed_of);
+    free(E); free(W); free(fcomp); free(br); free(BV); free(L); free(count); free(seed_part); free(nseed_of);
     free(o.seeds); free(F);
     topology_free(&t);
     return 0;
