@@ -21,7 +21,7 @@ CXXFLAGS += -std=c++17 -Wall -Wextra -Wno-deprecated-copy -pthread -frounding-ma
             -DCGAL_DISABLE_GMP=0
 LDFLAGS  += -pthread -Wl,--as-needed
 LDLIBS   += -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow \
-            -lOpenMeshCore -lassimp -lpng -lgmp -lmpfr -lstdc++ -lm
+            -lOpenMeshCore -lassimp -lpng -lz -lgmp -lmpfr -lstdc++ -lm
 
 DEBS = build-essential pkg-config libsuitesparse-dev libopenblas-dev liblapack-dev \
        libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libopenmesh-dev libassimp-dev \
@@ -36,6 +36,15 @@ BENCHES := $(patsubst bench/%.c,build/bench/%,$(wildcard bench/*.c))
 DEPFILES := $(LIB_OBJ:.o=.d) $(TOOLS:bin/%=build/tools/%.d) $(UNITS:=.d) $(BENCHES:=.d)
 
 all: $(TOOLS) $(UNITS)
+
+# anim-view builds in its page (web/) and three.js (npm 'three' in ./node_modules,
+# from make deps), copied to build/web/ whenever its content changes
+WEB_ASSETS := web/anim-view.html web/anim-view.js \
+              $(addprefix build/web/,three.module.js three.core.js OrbitControls.js three.version)
+ifneq ($(MAKECMDGOALS),clean)
+$(shell sh web/three-sync.sh build/web)
+endif
+build/libcommon/web_assets.o: $(WEB_ASSETS)
 
 build/libcommon.a: $(LIB_OBJ)
 	@rm -f $@
@@ -74,8 +83,20 @@ deps:
 	elif [ "$$(id -u)" = 0 ]; then echo "deps: installing$$missing"; \
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	else echo "deps: missing packages; run:"; echo "  sudo apt-get install$$missing"; exit 1; fi
+	@if ! command -v npm >/dev/null; then echo "deps: no npm: anim-view will be built without three.js"; \
+	elif npm ls --depth=0 >/dev/null 2>&1; then echo "deps: npm packages present"; \
+	else npm install --no-audit --no-fund || echo "deps: npm install failed: anim-view will be built without three.js"; fi
 
-check: deps
+# test-deps: a browser for the anim-view tests (they skip, saying why, without it)
+test-deps:
+	@if command -v chromium >/dev/null; then :; \
+	elif [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then echo "test-deps: installing chromium"; \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium >/dev/null 2>&1 || \
+	  { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium; } || \
+	  echo "test-deps: chromium could not be installed; the browser tests will be skipped"; \
+	else echo "test-deps: no chromium (sudo apt-get install chromium); the browser tests will be skipped"; fi
+
+check: deps test-deps
 	$(MAKE) all
 	prove -j2 --timer tests/t[0-9]*.sh $(UNITS)
 
@@ -98,6 +119,6 @@ install: all
 clean:
 	rm -rf build bin
 
-.PHONY: all deps check demo bench install clean
+.PHONY: all deps test-deps check demo bench install clean
 .PRECIOUS: build/tools/%.o
 -include $(DEPFILES)
