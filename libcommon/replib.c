@@ -286,7 +286,8 @@ struct lstate {
     int d, nfree;
     int *src;       /* d: source row in [0, N) or -1 when solved */
     int *fidx;      /* nfree solved pieces */
-    double *Uf;     /* nfree by nfree: A_FF = Uf^T Uf (upper, row-major) */
+    double *Uf;     /* nfree by nfree: A_FF = Uf^T Uf (upper, row-major); if diag: A_FF itself */
+    int diag;       /* A_FF is diagonal (lambda = 0 or no transitions): solves are scalings */
     int nnz, cap;   /* right-hand side triplets: row = position in fidx */
     int *ri, *ci;
     double *v;
@@ -379,7 +380,12 @@ static int library_step(const struct replib_data *D, int d, double mu, const int
             for (int q = 0; q < nf; q++)
                 s->Uf[(size_t)p * nf + q] = A[(size_t)s->fidx[p] * d + s->fidx[q]];
         int info = 0;
-        dpotrf_("L", &nf, s->Uf, &nf, &info);   /* column-major lower = row-major upper */
+        s->diag = 1;
+        for (int p = 0; p < nf && s->diag; p++)
+            for (int q = 0; q < nf; q++)
+                if (p != q && s->Uf[(size_t)p * nf + q] != 0) { s->diag = 0; break; }
+        if (!s->diag)
+            dpotrf_("L", &nf, s->Uf, &nf, &info);   /* column-major lower = row-major upper */
         if (info != 0) {
             free(count); free(fpos); free(A); free(order);
             return cm_seterr("replib: library system not positive definite (info %d)", info);
@@ -408,6 +414,18 @@ oom:
     return cm_seterr("replib: out of memory in the library step");
 }
 
+/* B (nfree by cols, row-major) = A_FF^-1 B */
+static void lsolve(const struct lstate *s, int cols, double *B)
+{
+    int nf = s->nfree;
+    if (s->diag) {
+        for (int p = 0; p < nf; p++) cblas_dscal(cols, 1.0 / s->Uf[(size_t)p * nf + p], B + (size_t)p * cols, 1);
+        return;
+    }
+    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, cols, 1.0, s->Uf, nf, B, cols);
+    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, cols, 1.0, s->Uf, nf, B, cols);
+}
+
 /* out (d by cols) = library applied to rows: row g < n1 is Y1[g], else
  * Y2[g - n1] (both with row length cols). */
 static int lstate_apply(const struct lstate *s, const double *Y1, int n1, const double *Y2,
@@ -423,10 +441,7 @@ static int lstate_apply(const struct lstate *s, const double *Y1, int n1, const 
     for (int k = 0; k < s->nnz; k++)
         cblas_daxpy(cols, s->v[k], ROW(s->ci[k]), 1, tmp + (size_t)s->ri[k] * cols, 1);
 #undef ROW
-    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, cols, 1.0,
-                s->Uf, nf, tmp, cols);
-    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, cols, 1.0,
-                s->Uf, nf, tmp, cols);
+    lsolve(s, cols, tmp);
     for (int p = 0; p < nf; p++)
         memcpy(out + (size_t)s->fidx[p] * cols, tmp + (size_t)p * cols, sizeof(double) * cols);
     free(tmp);
@@ -486,8 +501,7 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
         if (!tmp || !M) { free(tmp); free(M); return cm_seterr("replib: out of memory"); }
         for (int k = 0; k < s->nnz; k++)
             cblas_daxpy(N, s->v[k], K + (size_t)s->ci[k] * N, 1, tmp + (size_t)s->ri[k] * N, 1);
-        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, N, 1.0, s->Uf, nf, tmp, N);
-        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, N, 1.0, s->Uf, nf, tmp, N);
+        lsolve(s, N, tmp);
         for (int p = 0; p < nf; p++)
             memcpy(PT + (size_t)s->fidx[p] * N, tmp + (size_t)p * N, sizeof(double) * N);
     }
@@ -499,8 +513,7 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
     if (nf > 0) {
         for (int k = 0; k < s->nnz; k++)
             cblas_daxpy(d, s->v[k], w->P + (size_t)s->ci[k] * d, 1, M + (size_t)s->ri[k] * d, 1);
-        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasTrans, CblasNonUnit, nf, d, 1.0, s->Uf, nf, M, d);
-        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, nf, d, 1.0, s->Uf, nf, M, d);
+        lsolve(s, d, M);
         for (int p = 0; p < nf; p++)
             memcpy(w->Q + (size_t)s->fidx[p] * d, M + (size_t)p * d, sizeof(double) * d);
     }
@@ -553,6 +566,19 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
 /* label step on the chain in w; l in/out (used as the start for moves) */
 static double label_step(struct work *w, enum replib_method m, int *l, int have_start)
 {
+    if (!w->ch.T && !w->ch.H) {
+        /* lambda = 0: every method gives the nearest piece (lowest on ties) */
+        int n = w->ch.n, d = w->ch.d;
+        double E = 0;
+        for (int f = 0; f < n; f++) {
+            const double *u = w->U + (size_t)f * d;
+            int b = 0;
+            for (int a = 1; a < d; a++) if (u[a] < u[b]) b = a;
+            l[f] = b;
+            E += u[b];
+        }
+        return E;
+    }
     if (m == REPLIB_DP) return chain_dp(&w->ch, l);
     if (!have_start) {
         int n = w->ch.n, d = w->ch.d;
@@ -624,7 +650,7 @@ static int seed_pieces(const struct replib_data *D, int d, struct rng *r, struct
 struct restart {
     int rc;
     double E, data, velocity, label_seconds;
-    int iterations;
+    int iterations, accepted;   /* descent iterations, split/merge trials kept */
     int *labels;
     struct lstate s;            /* the library the labels were optimised for */
     struct replib_iter *log;    /* buffered iteration records */
@@ -649,6 +675,7 @@ static int lstate_copy(struct lstate *dst, const struct lstate *src)
     if (lstate_init(dst, src->d) < 0) return -1;
     int nf = src->nfree;
     dst->nfree = nf;
+    dst->diag = src->diag;
     memcpy(dst->src, src->src, sizeof(int) * src->d);
     memcpy(dst->fidx, src->fidx, sizeof(int) * src->d);
     if (nf > 0) {
@@ -661,25 +688,320 @@ static int lstate_copy(struct lstate *dst, const struct lstate *src)
     return 0;
 }
 
-/* Block coordinate descent from one start; the result goes to *out. */
-static void run_restart(const struct replib_data *D, const struct replib_opts *o, int rs,
-                        struct work *w, struct lstate *s, int *l, int *ln, double *cost,
-                        struct restart *out)
+/* kc (n) = z_f . z_g for every frame f (g: a frame or a fixed piece) */
+static void kcol(const struct replib_data *D, int g, double *kc)
+{
+    int n = D->n;
+    if (D->K) { memcpy(kc, D->K + (size_t)g * D->N, sizeof(double) * n); return; }
+    int zd = D->zdim;
+    cblas_dgemv(CblasRowMajor, CblasNoTrans, n, zd, 1.0, D->Z, zd, D->Z + (size_t)g * zd, 1, 0.0, kc, 1);
+}
+
+/* dist (n) = |z_f - z_g|^2 */
+static void dcol(const struct replib_data *D, int g, double *kc, double *dist)
+{
+    kcol(D, g, kc);
+    for (int f = 0; f < D->n; f++) {
+        double v = D->zz[f] + D->zz[g] - 2 * kc[f];
+        dist[f] = v > 0 ? v : 0;
+    }
+}
+
+/* Sample a frame with probability proportional to max(wt[f], 0) among
+ * frames with skip[f] == 0 (skip may be NULL); -1 if all weights are 0. */
+static int d2_sample(struct rng *r, const double *wt, const unsigned char *skip, int n)
+{
+    double tot = 0;
+    for (int f = 0; f < n; f++) if (!(skip && skip[f]) && wt[f] > 0) tot += wt[f];
+    if (!(tot > 0)) return -1;
+    double u = rng_uniform(r) * tot;
+    int g = -1;
+    for (int f = 0; f < n; f++) {
+        if ((skip && skip[f]) || !(wt[f] > 0)) continue;
+        g = f;
+        if (u < wt[f]) break;
+        u -= wt[f];
+    }
+    return g;
+}
+
+/* Greedy k-means++ (Arthur & Vassilvitskii 2007 with the candidate trials of
+ * scikit-learn): the first centre (when no piece is fixed) is a uniformly
+ * random frame; every further one is the best of 2 + ln d D^2-sampled
+ * frames, best meaning the lowest potential sum_f min(mind_f, |z_f - z_c|^2). */
+static int seed_greedy(const struct replib_data *D, int d, struct rng *r, struct lstate *s)
+{
+    int n = D->n, nfix = D->nfix, L = 2 + (int)log((double)d);
+    s->nfree = 0; s->nnz = 0;
+    double *mind = malloc(sizeof(double) * n), *kc = malloc(sizeof(double) * n);
+    double *dc = malloc(sizeof(double) * n), *db = malloc(sizeof(double) * n);
+    unsigned char *used = calloc(n, 1);
+    if (!mind || !kc || !dc || !db || !used) {
+        free(mind); free(kc); free(dc); free(db); free(used);
+        return cm_seterr("replib: out of memory");
+    }
+    for (int f = 0; f < n; f++) mind[f] = INFINITY;
+    for (int a = 0; a < d; a++) {
+        int g = -1;
+        if (a < nfix) {
+            g = n + a;
+            dcol(D, g, kc, db);
+        } else {
+            if (a > 0) {
+                double bestpot = INFINITY;
+                for (int t = 0; t < L; t++) {
+                    int c = d2_sample(r, mind, used, n);
+                    if (c < 0) break;
+                    dcol(D, c, kc, dc);
+                    double pot = 0;
+                    for (int f = 0; f < n; f++) pot += dc[f] < mind[f] ? dc[f] : mind[f];
+                    if (pot < bestpot) { bestpot = pot; g = c; memcpy(db, dc, sizeof(double) * n); }
+                }
+            }
+            if (g < 0) {        /* first centre, or every frame already fitted exactly */
+                int left = 0;
+                for (int f = 0; f < n; f++) left += !used[f];
+                int k = rng_int(r, left);
+                for (g = 0; g < n; g++) if (!used[g] && k-- == 0) break;
+                dcol(D, g, kc, db);
+            }
+            used[g] = 1;
+        }
+        s->src[a] = g;
+        for (int f = 0; f < n; f++) if (db[f] < mind[f]) mind[f] = db[f];
+    }
+    free(mind); free(kc); free(dc); free(db); free(used);
+    return 0;
+}
+
+/* Hartigan's single-frame moves for lambda = 0 on the costs in w (w->P,
+ * w->Q for the piece means of l, w->U = costs): frame f leaves piece a
+ * for b when n_b/(n_b+1) |z_f - r_b|^2 < n_a/(n_a-1) |z_f - r_a|^2 (a fixed
+ * piece has no factor: it does not move), which lowers the energy by
+ * exactly the difference; both means and their cost columns are updated in
+ * O(N) (one column of K or one GEMV on Z).  Returns the number of moves. */
+static int hartigan(const struct replib_data *D, struct work *w, int *l, double *kc)
+{
+    int n = D->n, d = w->d, nfix = D->nfix, moves = 0;
+    double *P = w->P, *U = w->U, *Q = w->Q;
+    int *cnt = calloc(d, sizeof(int));
+    if (!cnt) return -1;
+    for (int f = 0; f < n; f++) cnt[l[f]]++;
+    for (int sweep = 0; sweep < 50; sweep++) {
+        int sm = 0;
+        for (int f = 0; f < n; f++) {
+            int a = l[f];
+            const double *u = U + (size_t)f * d;
+            double rem;
+            if (a < nfix) rem = u[a];
+            else if (cnt[a] < 2) continue;
+            else rem = u[a] * cnt[a] / (cnt[a] - 1);
+            int b = -1;
+            double add = INFINITY;
+            for (int c = 0; c < d; c++) {
+                if (c == a) continue;
+                double v;
+                if (c < nfix) v = u[c];
+                else if (cnt[c] < 1) continue;
+                else v = u[c] * cnt[c] / (cnt[c] + 1);
+                if (v < add) { add = v; b = c; }
+            }
+            if (b < 0 || !(rem - add > 1e-12 * rem)) continue;
+            kcol(D, f, kc);
+            double zf = D->zz[f];
+            if (a >= nfix) {
+                double na = cnt[a], pf = P[(size_t)f * d + a];
+                Q[(size_t)a * d + a] = (na * na * Q[(size_t)a * d + a] - 2 * na * pf + zf) / ((na - 1) * (na - 1));
+                for (int g = 0; g < n; g++)
+                    P[(size_t)g * d + a] = (na * P[(size_t)g * d + a] - kc[g]) / (na - 1);
+            }
+            if (b >= nfix) {
+                double nb = cnt[b], pf = P[(size_t)f * d + b];
+                Q[(size_t)b * d + b] = (nb * nb * Q[(size_t)b * d + b] + 2 * nb * pf + zf) / ((nb + 1) * (nb + 1));
+                for (int g = 0; g < n; g++)
+                    P[(size_t)g * d + b] = (nb * P[(size_t)g * d + b] + kc[g]) / (nb + 1);
+            }
+            for (int g = 0; g < n; g++) {
+                U[(size_t)g * d + a] = D->zz[g] + Q[(size_t)a * d + a] - 2 * P[(size_t)g * d + a];
+                U[(size_t)g * d + b] = D->zz[g] + Q[(size_t)b * d + b] - 2 * P[(size_t)g * d + b];
+            }
+            cnt[a]--; cnt[b]++;
+            l[f] = b;
+            sm++;
+        }
+        moves += sm;
+        if (!sm) break;
+    }
+    free(cnt);
+    return moves;
+}
+
+/* Per-restart scratch arrays. */
+struct scratch {
+    int *l, *ln, *bl, *cnt;     /* n, n, n, d */
+    double *cost, *kc, *dc, *cur, *rc;  /* n, n, n, n, d */
+    int *order;                 /* d */
+};
+
+static void scratch_free(struct scratch *x)
+{
+    free(x->l); free(x->ln); free(x->bl); free(x->cnt);
+    free(x->cost); free(x->kc); free(x->dc); free(x->cur); free(x->rc); free(x->order);
+    memset(x, 0, sizeof *x);
+}
+
+static int scratch_init(struct scratch *x, int n, int d)
+{
+    x->l = malloc(sizeof(int) * n); x->ln = malloc(sizeof(int) * n); x->bl = malloc(sizeof(int) * n);
+    x->cnt = malloc(sizeof(int) * d); x->order = malloc(sizeof(int) * d);
+    x->cost = malloc(sizeof(double) * n); x->kc = malloc(sizeof(double) * n);
+    x->dc = malloc(sizeof(double) * n); x->cur = malloc(sizeof(double) * n);
+    x->rc = malloc(sizeof(double) * d);
+    if (!x->l || !x->ln || !x->bl || !x->cnt || !x->order || !x->cost || !x->kc || !x->dc || !x->cur || !x->rc) {
+        scratch_free(x);
+        return cm_seterr("replib: out of memory");
+    }
+    return 0;
+}
+
+/* Block coordinate descent from the labels x->l: library step, label step,
+ * until no label changes, E stalls (o->tol) or o->iterations.  *E (in: the
+ * energy of x->l, INFINITY if unknown; out: the final energy).  On return
+ * w holds the costs of the library s that x->l was labelled with. */
+static int bcd(const struct replib_data *D, const struct replib_opts *o, struct work *w,
+               struct lstate *s, struct scratch *x, double *E, struct restart *out, struct replib_iter *it)
 {
     int n = D->n, d = o->d;
     double mu = o->lambda / 2;
     int iters = o->iterations < 1 ? 1 : o->iterations;
+    int *l = x->l, *ln = x->ln;
+    for (int k = 1; k <= iters; k++) {
+        double ti = wall();
+        it->iteration++;
+        if (library_step(D, d, mu, l, x->cost, s, &it->reseeded) < 0 || compute_costs(D, s, mu, w) < 0)
+            return -1;
+        memcpy(ln, l, sizeof(int) * n);
+        double tl = wall();
+        double En = label_step(w, o->method, ln, 1);
+        out->label_seconds += wall() - tl;
+        if (isnan(En)) return -1;
+        it->changed = 0;
+        for (int f = 0; f < n; f++) it->changed += ln[f] != l[f];
+        memcpy(l, ln, sizeof(int) * n);
+        for (int f = 0; f < n; f++) x->cost[f] = w->U[(size_t)f * d + l[f]];
+        it->energy = En;
+        chain_energy(&w->ch, l, &it->data, &it->velocity);
+        it->seconds = wall() - ti;
+        out->iterations++;
+        keep_log(out, it);
+        double Eprev = *E;
+        *E = En;
+        if (it->changed == 0 || (isfinite(Eprev) && Eprev - En <= o->tol * fabs(Eprev))) break;
+    }
+    return 0;
+}
+
+/* Descent to a local minimum: block coordinate descent and, with lambda = 0
+ * and the search on, Hartigan moves until neither changes anything. */
+static int descend(const struct replib_data *D, const struct replib_opts *o, struct work *w,
+                   struct lstate *s, struct scratch *x, double *E, struct restart *out, struct replib_iter *it)
+{
+    if (bcd(D, o, w, s, x, E, out, it) < 0) return -1;
+    if (o->search <= 0 || o->lambda > 0) return 0;
+    for (int round = 0; round < 100; round++) {
+        /* costs of the means of l (bcd may have stopped on tol) */
+        int rs;
+        if (library_step(D, o->d, 0, x->l, x->cost, s, &rs) < 0 || compute_costs(D, s, 0, w) < 0) return -1;
+        if (rs) break;          /* an empty piece: leave it to the descent's re-seeding */
+        *E = chain_energy(&w->ch, x->l, NULL, NULL);
+        int mv = hartigan(D, w, x->l, x->kc);
+        if (mv < 0) return cm_seterr("replib: out of memory");
+        if (mv == 0) break;
+        *E = INFINITY;
+        if (bcd(D, o, w, s, x, E, out, it) < 0) return -1;
+    }
+    return 0;
+}
+
+/* One split/merge proposal on the labels x->l (costs in w): piece a, whose
+ * frames are cheapest to hand to their second-best pieces, gives them away
+ * and is re-placed at the best of 2 + ln d D^2-sampled badly fitted frames,
+ * taking the frames that lie closer to that frame than to their piece.
+ * Returns 1 if a proposal was made, 0 if none is possible. */
+static int split_merge(const struct replib_data *D, const struct replib_opts *o, struct work *w,
+                       struct scratch *x, struct rng *r)
+{
+    int n = D->n, d = o->d, nfix = D->nfix, L = 2 + (int)log((double)d);
+    const double *U = w->U;
+    int *l = x->l, *cnt = x->cnt;
+    memset(cnt, 0, sizeof(int) * d);
+    for (int f = 0; f < n; f++) cnt[l[f]]++;
+    for (int a = 0; a < d; a++) x->rc[a] = 0;
+    int sec_ok = 0;
+    for (int f = 0; f < n; f++) {     /* cur = cost after the merge (second best for frames of a) */
+        const double *u = U + (size_t)f * d;
+        double s2 = INFINITY;
+        for (int b = 0; b < d; b++) if (b != l[f] && u[b] < s2) s2 = u[b];
+        if (isfinite(s2)) { x->rc[l[f]] += s2 - u[l[f]]; sec_ok = 1; }
+    }
+    if (!sec_ok) return 0;
+    int k = 0;
+    for (int a = nfix; a < d; a++) if (cnt[a] > 0) x->order[k++] = a;
+    if (k < 1) return 0;
+    /* the 3 cheapest removals, one picked at random */
+    int top = k < 3 ? k : 3;
+    for (int i = 0; i < top; i++)
+        for (int j = i + 1; j < k; j++)
+            if (x->rc[x->order[j]] < x->rc[x->order[i]]) { int t = x->order[i]; x->order[i] = x->order[j]; x->order[j] = t; }
+    int a = x->order[rng_int(r, top)];
+    for (int f = 0; f < n; f++) {
+        const double *u = U + (size_t)f * d;
+        if (l[f] != a) { x->cur[f] = u[l[f]]; continue; }
+        int b = -1;
+        for (int c = 0; c < d; c++) if (c != a && (b < 0 || u[c] < u[b])) b = c;
+        x->cur[f] = u[b];
+        x->ln[f] = b;
+    }
+    int g = -1;
+    double bestgain = -1;
+    for (int t = 0; t < L; t++) {
+        int c = d2_sample(r, x->cur, NULL, n);
+        if (c < 0) break;
+        dcol(D, c, x->kc, x->dc);
+        double gain = 0;
+        for (int f = 0; f < n; f++) if (x->dc[f] < x->cur[f]) gain += x->cur[f] - x->dc[f];
+        if (gain > bestgain) { bestgain = gain; g = c; memcpy(x->cost, x->dc, sizeof(double) * n); }
+    }
+    if (g < 0) return 0;
+    for (int f = 0; f < n; f++) {
+        if (l[f] == a) l[f] = x->ln[f];
+        if (x->cost[f] < x->cur[f] || f == g) l[f] = a;
+        if (x->cost[f] < x->cur[f]) x->cur[f] = x->cost[f];
+    }
+    memcpy(x->cost, x->cur, sizeof(double) * n);  /* fit costs, for re-seeding */
+    return 1;
+}
+
+/* Block coordinate descent from one start, then the local search; the
+ * result goes to *out. */
+static void run_restart(const struct replib_data *D, const struct replib_opts *o, int rs,
+                        struct work *w, struct lstate *s, struct scratch *x, struct restart *out)
+{
+    int n = D->n, d = o->d;
+    double mu = o->lambda / 2;
+    int *l = x->l;
     struct rng r;
     rng_seed(&r, o->seed ^ (0x9E3779B97F4A7C15ULL * (uint64_t)(rs + 1)));
     double ti = wall(), E;
     struct replib_iter it = {0};
     it.restart = rs;
-    memset(cost, 0, sizeof(double) * n);
+    memset(x->cost, 0, sizeof(double) * n);
     if (rs == 0 && o->init_labels) {
         memcpy(l, o->init_labels, sizeof(int) * n);
         E = INFINITY;
     } else {
-        if (seed_pieces(D, d, &r, s) < 0 || compute_costs(D, s, mu, w) < 0) { out->rc = -1; return; }
+        int sr = o->start == REPLIB_START_PLUSPLUS ? seed_pieces(D, d, &r, s) : seed_greedy(D, d, &r, s);
+        if (sr < 0 || compute_costs(D, s, mu, w) < 0) { out->rc = -1; return; }
         double tl = wall();
         E = label_step(w, o->method, l, 0);
         out->label_seconds += wall() - tl;
@@ -689,39 +1011,31 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
         it.changed = n;
         it.seconds = wall() - ti;
         keep_log(out, &it);
-        for (int f = 0; f < n; f++) cost[f] = w->U[(size_t)f * d + l[f]];
+        for (int f = 0; f < n; f++) x->cost[f] = w->U[(size_t)f * d + l[f]];
     }
-    for (int k = 1; k <= iters; k++) {
-        ti = wall();
-        it.iteration = k;
-        if (library_step(D, d, mu, l, cost, s, &it.reseeded) < 0 || compute_costs(D, s, mu, w) < 0) {
-            out->rc = -1;
-            return;
-        }
-        memcpy(ln, l, sizeof(int) * n);
-        double tl = wall();
-        double En = label_step(w, o->method, ln, 1);
-        out->label_seconds += wall() - tl;
-        if (isnan(En)) { out->rc = -1; return; }
-        it.changed = 0;
-        for (int f = 0; f < n; f++) it.changed += ln[f] != l[f];
-        memcpy(l, ln, sizeof(int) * n);
-        for (int f = 0; f < n; f++) cost[f] = w->U[(size_t)f * d + l[f]];
-        it.energy = En;
-        chain_energy(&w->ch, l, &it.data, &it.velocity);
-        it.seconds = wall() - ti;
-        out->iterations++;
-        keep_log(out, &it);
-        double Eprev = E;
-        E = En;
-        if (it.changed == 0 || (isfinite(Eprev) && Eprev - En <= o->tol * fabs(Eprev))) break;
-    }
+    if (descend(D, o, w, s, x, &E, out, &it) < 0) { out->rc = -1; return; }
     /* w and s hold the library and costs that l was optimised for */
-    out->E = E;
-    chain_energy(&w->ch, l, &out->data, &out->velocity);
     out->labels = malloc(sizeof(int) * n);
     if (!out->labels || lstate_copy(&out->s, s) < 0) { out->rc = -1; return; }
     memcpy(out->labels, l, sizeof(int) * n);
+    out->E = E;
+    for (int t = 0; t < o->search; t++) {
+        memcpy(x->ln, l, sizeof(int) * n);
+        if (!split_merge(D, o, w, x, &r)) break;
+        double En = INFINITY;
+        if (descend(D, o, w, s, x, &En, out, &it) < 0) { out->rc = -1; return; }
+        if (En < out->E - 1e-12 * fabs(out->E)) {
+            out->E = En;
+            memcpy(out->labels, l, sizeof(int) * n);
+            if (lstate_copy(&out->s, s) < 0) { out->rc = -1; return; }
+            out->accepted++;
+        } else {
+            memcpy(l, out->labels, sizeof(int) * n);
+            if (lstate_copy(s, &out->s) < 0 || compute_costs(D, s, mu, w) < 0) { out->rc = -1; return; }
+        }
+    }
+    if (o->search > 0 && compute_costs(D, &out->s, mu, w) < 0) { out->rc = -1; return; }
+    chain_energy(&w->ch, out->labels, &out->data, &out->velocity);
 }
 
 struct worker {
@@ -741,20 +1055,19 @@ static void *worker_main(void *arg)
     int n = D->n, d = wk->o->d;
     struct work w;
     struct lstate s;
-    int *l = malloc(sizeof(int) * n), *ln = malloc(sizeof(int) * n);
-    double *cost = malloc(sizeof(double) * n);
-    int ok = l && ln && cost;
-    if (!ok || lstate_init(&s, d) < 0) { free(l); free(ln); free(cost); wk->rc = -1; return NULL; }
-    if (work_init(&w, D, d) < 0) { free(l); free(ln); free(cost); lstate_free(&s); wk->rc = -1; return NULL; }
+    struct scratch x;
+    if (scratch_init(&x, n, d) < 0) { wk->rc = -1; return NULL; }
+    if (lstate_init(&s, d) < 0) { scratch_free(&x); wk->rc = -1; return NULL; }
+    if (work_init(&w, D, d) < 0) { scratch_free(&x); lstate_free(&s); wk->rc = -1; return NULL; }
     for (;;) {
         pthread_mutex_lock(wk->lock);
         int rs = (*wk->next)++;
         pthread_mutex_unlock(wk->lock);
         if (rs >= wk->restarts) break;
-        run_restart(D, wk->o, rs, &w, &s, l, ln, cost, &wk->out[rs]);
+        run_restart(D, wk->o, rs, &w, &s, &x, &wk->out[rs]);
         if (wk->out[rs].rc) { wk->rc = -1; break; }
     }
-    free(l); free(ln); free(cost);
+    scratch_free(&x);
     lstate_free(&s);
     work_free(&w);
     return NULL;
@@ -796,7 +1109,7 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
     /* restarts run in parallel: BLAS single-threaded meanwhile (the per-
      * iteration products are small); results do not depend on the order */
     int blas_threads = openblas_get_num_threads();
-    if (nth > 1) openblas_set_num_threads(1);
+    openblas_set_num_threads(1);
     for (int t = 0; t < nth; t++) {
         wk[t] = (struct worker){D, o, out, restarts, &next, &lock, 0};
         if (t == nth - 1 || pthread_create(&th[t], NULL, worker_main, &wk[t]) != 0) {
@@ -808,13 +1121,14 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
     }
     for (int t = 0; t < nth; t++)
         if (started & (1 << t)) pthread_join(th[t], NULL);
-    if (nth > 1) openblas_set_num_threads(blas_threads);
+    openblas_set_num_threads(blas_threads);
     for (int t = 0; t < nth; t++) if (wk[t].rc) rc = -1;
     int best = -1;
     for (int rs = 0; rs < restarts && !rc; rs++) {
         if (o->log)
             for (int k = 0; k < out[rs].nlog; k++) o->log(o->log_ctx, &out[rs].log[k]);
         res->iterations += out[rs].iterations;
+        res->accepted += out[rs].accepted;
         res->label_seconds += out[rs].label_seconds;
         res->restarts++;
         if (best < 0 || out[rs].E < out[best].E) best = rs;

@@ -38,6 +38,14 @@ extern "C" {
 
 enum replib_method { REPLIB_DP = 0, REPLIB_EXPANSION = 1, REPLIB_SWAP = 2 };
 
+/* How a restart picks its first pieces (frames, or fixed pieces, as centres):
+ *   REPLIB_START_PLUSPLUS  k-means++ (one D^2-sampled frame per centre; the
+ *                          method before the local search existed)
+ *   REPLIB_START_GREEDY    greedy k-means++: 2 + ln d D^2-sampled candidates
+ *                          per centre, the one that lowers sum_f min_a |z_f - r_a|^2
+ *                          most is kept (as scikit-learn's KMeans does) */
+enum replib_start { REPLIB_START_GREEDY = 0, REPLIB_START_PLUSPLUS = 1 };
+
 /* The animation and everything precomputed from it (reused across d). */
 struct replib_data {
     /* inputs, set by the caller before replib_prepare() */
@@ -88,6 +96,15 @@ struct replib_opts {
     enum replib_method method;  /* label step */
     const int *init_labels;     /* n labels in [0, d) for restart 0, or NULL (k-means++ start) */
     double tol;                 /* stop when E decreases by less than tol * E (e.g. 1e-9) */
+    enum replib_start start;    /* first pieces of restarts without init_labels */
+    int search;                 /* local search after the descent converges, per restart:
+                                   0 = none (plain block coordinate descent, the paper's
+                                   method); N > 0 = single-frame moves (lambda = 0: exact
+                                   Hartigan moves between piece means) and N split/merge
+                                   trials: the piece whose frames are cheapest to hand to
+                                   their second-best pieces is moved onto a D^2-sampled
+                                   badly fitted frame, the descent rerun, and the result
+                                   kept only if its energy is lower */
     int threads;                /* restarts run in parallel on this many threads (0: one per core);
                                    the result does not depend on it */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
@@ -101,6 +118,7 @@ struct replib_result {
     double energy, data, velocity;  /* model energy of the best (data + lambda/2 vel) */
     int best_restart;
     int restarts, iterations;   /* restarts run, iterations over all restarts */
+    int accepted;               /* split/merge trials kept, over all restarts */
     double seconds;             /* wall time of replib_learn (excl. prepare) */
     double label_seconds;       /* of which in label steps */
 };

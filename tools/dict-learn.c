@@ -35,6 +35,11 @@ static const char help[] =
 "      --fixed LIB        pieces that must stay (a MESH library from an earlier\n"
 "                         film); they become pieces 0..k-1 of the output\n"
 "  -m, --method M         label step: dp (exact, default) | expansion | swap\n"
+"      --start S          first pieces of a restart: greedy (default: greedy\n"
+"                         k-means++, 2 + ln D candidates per piece) | kmeans++\n"
+"      --search N         local search per restart: single-frame moves (lambda\n"
+"                         0) and N split/merge trials (default: 10 + D/5);\n"
+"                         0 = plain block coordinate descent (the paper's)\n"
 "      --init-labels FILE start restart 0 from these labels (one per frame)\n"
 "      --labels-out FILE  write the per-frame labels (0-based piece ids)\n"
 "      --report FILE      write the energy report (key value lines)\n"
@@ -59,7 +64,8 @@ static const char help[] =
 
 struct options {
     const char *input, *weights, *fixed, *init_labels, *labels_out, *report, *output, *sweep;
-    int d, restarts, iterations, raw, gram, threads;
+    int d, restarts, iterations, raw, gram, threads, search;
+    enum replib_start start;
     double lambda, max_error;
     long seed;
     enum replib_method method;
@@ -72,12 +78,12 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"iterations", 1, 0, 'i'}, {"seed", 1, 0, 'S'}, {"weights", 1, 0, 'w'},
         {"fixed", 1, 0, 'F'}, {"method", 1, 0, 'm'}, {"init-labels", 1, 0, 'I'},
         {"labels-out", 1, 0, 'L'}, {"report", 1, 0, 'P'}, {"max-error", 1, 0, 'E'},
-        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"threads", 1, 0, 'T'}, {"output", 1, 0, 'o'},
+        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"threads", 1, 0, 'T'}, {"start", 1, 0, 's'}, {"search", 1, 0, 'X'}, {"output", 1, 0, 'o'},
         {"raw", 0, 0, 'R'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->d = 20; o->lambda = 2; o->restarts = 5; o->iterations = 50; o->seed = 1;
-    o->gram = -1; o->max_error = -1;
+    o->gram = -1; o->max_error = -1; o->search = -1;
     int c;
     while ((c = getopt_long(argc, argv, "d:l:r:i:w:m:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -111,6 +117,14 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'T': o->threads = (int)arg_long(optarg, "--threads");
             if (o->threads < 0) usage_error("--threads must be >= 0");
+            break;
+        case 's':
+            if (!strcmp(optarg, "greedy")) o->start = REPLIB_START_GREEDY;
+            else if (!strcmp(optarg, "kmeans++")) o->start = REPLIB_START_PLUSPLUS;
+            else usage_error("--start: '%s' is not greedy or kmeans++", optarg);
+            break;
+        case 'X': o->search = (int)arg_long(optarg, "--search");
+            if (o->search < 0) usage_error("--search must be >= 0");
             break;
         case 'o': o->output = optarg; break;
         case 'R': o->raw = 1; break;
@@ -147,6 +161,7 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     ro.d = d; ro.lambda = o->lambda; ro.restarts = o->restarts; ro.iterations = o->iterations;
     ro.seed = (uint64_t)o->seed; ro.method = o->method; ro.init_labels = init; ro.tol = 1e-10;
     ro.threads = o->threads;
+    ro.start = o->start; ro.search = o->search >= 0 ? o->search : 10 + d / 5;
     ro.log = log_iter;
     if (replib_learn(D, &ro, &run->res) < 0) die("%s", cm_errmsg());
     replib_evaluate(m->V, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
@@ -154,8 +169,8 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     const struct replib_result *r = &run->res;
     info(1, "d %d: energy %.10g (data %.6g, velocity %.6g), mean error %.6g, max error %.6g",
          d, run->rep.energy, run->rep.data, run->rep.velocity, run->rep.mean_err, run->rep.max_err);
-    info(1, "d %d: %d restarts, %d iterations, %.4f s per iteration (labels %.4f s), best restart %d, %.3f s",
-         d, r->restarts, r->iterations, r->iterations ? r->seconds / r->iterations : 0,
+    info(1, "d %d: %d restarts, %d iterations, %d split/merge moves kept, %.4f s per iteration (labels %.4f s), best restart %d, %.3f s",
+         d, r->restarts, r->iterations, r->accepted, r->iterations ? r->seconds / r->iterations : 0,
          r->iterations ? r->label_seconds / r->iterations : 0, r->best_restart, r->seconds);
 }
 
