@@ -519,8 +519,6 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
     }
 
     /* ---- the morph animation ---- */
-    const aiMeshMorphAnim *mc = nullptr;
-    const aiAnimation *anim = nullptr;
     int want_anim = -1;
     if (o->animation) {
         long idx;
@@ -536,8 +534,12 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
                 return cm_seterr("cannot read '%s': no animation named '%s'", path, o->animation);
         }
     }
+    /* every animation that drives the mesh's weights (or the one asked
+     * for) is a clip */
+    struct Clip { const aiAnimation *anim; const aiMeshMorphAnim *ch; int index; };
+    std::vector<Clip> clips;
     if (nt > 0) {
-        for (unsigned a = 0; a < sc->mNumAnimations && !mc; a++) {
+        for (unsigned a = 0; a < sc->mNumAnimations; a++) {
             if (want_anim >= 0 && (int)a != want_anim) continue;
             const aiAnimation *an = sc->mAnimations[a];
             for (unsigned c = 0; c < an->mNumMorphMeshChannels; c++) {
@@ -548,32 +550,33 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
                 bool match = (node && !strncmp(cn, node->mName.C_Str(), node->mName.length) &&
                               (cn[node->mName.length] == '\0' || cn[node->mName.length] == '*')) ||
                              !strcmp(cn, am->mName.C_Str());
-                if (match) { mc = ch; anim = an; inf.anim_index = (int)a; break; }
+                if (match) { clips.push_back({an, ch, (int)a}); break; }
             }
         }
-        if (!mc) {     /* a single morph channel in the whole file: take it */
-            int count = 0;
+        if (clips.empty()) {     /* a single morph channel in the whole file: take it */
             for (unsigned a = 0; a < sc->mNumAnimations; a++) {
                 if (want_anim >= 0 && (int)a != want_anim) continue;
-                for (unsigned c = 0; c < sc->mAnimations[a]->mNumMorphMeshChannels; c++) {
-                    count++;
-                    mc = sc->mAnimations[a]->mMorphMeshChannels[c];
-                    anim = sc->mAnimations[a];
-                    inf.anim_index = (int)a;
-                }
+                for (unsigned c = 0; c < sc->mAnimations[a]->mNumMorphMeshChannels; c++)
+                    clips.push_back({sc->mAnimations[a], sc->mAnimations[a]->mMorphMeshChannels[c], (int)a});
             }
-            if (count != 1) { mc = nullptr; anim = nullptr; inf.anim_index = -1; }
+            if (clips.size() != 1) clips.clear();
         }
     }
-    if (want_anim >= 0 && !mc)
+    if (want_anim >= 0 && clips.empty())
         return cm_seterr("cannot read '%s': animation %d does not drive the morph weights of mesh %d",
                          path, want_anim, mi);
 
-    MorphTrack tr;
-    double tps = 25;
-    if (mc) {
-        copy_name(inf.anim_name, sizeof inf.anim_name, anim->mName.C_Str());
-        tps = anim->mTicksPerSecond > 0 ? anim->mTicksPerSecond : 25;
+    std::vector<MorphTrack> tracks(clips.size());
+    std::unique_ptr<Gltf> gl;
+    for (size_t ci = 0; ci < clips.size(); ci++) {
+        const aiAnimation *anim = clips[ci].anim;
+        const aiMeshMorphAnim *mc = clips[ci].ch;
+        MorphTrack &tr = tracks[ci];
+        if (ci == 0) {
+            inf.anim_index = clips[0].index;
+            copy_name(inf.anim_name, sizeof inf.anim_name, anim->mName.C_Str());
+        }
+        double tps = anim->mTicksPerSecond > 0 ? anim->mTicksPerSecond : 25;
         int nk = (int)mc->mNumKeys;
         tr.time.resize(nk);
         tr.w.assign((size_t)nk * nt, 0.0);
@@ -585,65 +588,73 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
             for (unsigned q = 0; q < K.mNumValuesAndWeights; q++)
                 if (K.mValues[q] < (unsigned)nt) tr.w[(size_t)k * nt + K.mValues[q]] = K.mWeights[q];
         }
-        /* glTF: decode non-float weight accessors ourselves */
+        /* glTF: the interpolation, and non-float weight accessors decoded
+         * ourselves */
         if ((fmt == ANIM_GLTF || fmt == ANIM_GLB) && nk > 0) {
-            Gltf g;
-            if (g.load(path)) {
-                const JVal *anims = g.root.get("animations");
-                const JVal *ga = anims ? anims->at((size_t)inf.anim_index) : nullptr;
-                const JVal *chs = ga ? ga->get("channels") : nullptr;
-                const JVal *nodes = g.root.get("nodes");
-                for (size_t c = 0; chs && c < chs->arr.size(); c++) {
-                    const JVal &ch = chs->arr[c];
-                    const JVal *tg = ch.get("target");
-                    if (!tg || !tg->get("path") || tg->get("path")->str != "weights" || !tg->get("node"))
-                        continue;
-                    size_t ni = (size_t)tg->get("node")->num;
-                    const JVal *nd = nodes ? nodes->at(ni) : nullptr;
-                    std::string nname = nd && nd->get("name") ? nd->get("name")->str
-                                                              : "nodes[" + std::to_string(ni) + "]";
-                    if (nname != mc->mName.C_Str()) continue;
-                    const JVal *sm = ga->get("samplers") ? ga->get("samplers")->at((size_t)ch.number("sampler", -1))
-                                                         : nullptr;
-                    if (!sm) break;
-                    const JVal *ip = sm->get("interpolation");
-                    std::string interp = ip ? ip->str : "LINEAR";
-                    tr.step = interp == "STEP";
-                    std::vector<double> vals;
-                    int ct = 0;
-                    if (!g.scalars((size_t)sm->number("output", -1), vals, &ct) || ct == 5126)
-                        break;      /* float weights: assimp's are right */
-                    size_t per = interp == "CUBICSPLINE" ? 3 : 1;
-                    if (vals.size() != (size_t)nk * nt * per)
-                        return cm_seterr("cannot read '%s': weight accessor has %zu values, expected %zu",
-                                         path, vals.size(), (size_t)nk * nt * per);
-                    for (int k = 0; k < nk; k++)
-                        for (int j = 0; j < nt; j++)
-                            tr.w[(size_t)k * nt + j] = vals[((size_t)k * per + (per == 3 ? 1 : 0)) * nt + j];
-                    inf.decoded_weights = 1;
-                    break;
-                }
+            if (!gl) {
+                gl.reset(new Gltf);
+                if (!gl->load(path)) gl->root = JVal();
+            }
+            Gltf &g = *gl;
+            const JVal *anims = g.root.get("animations");
+            const JVal *ga = anims ? anims->at((size_t)clips[ci].index) : nullptr;
+            const JVal *chs = ga ? ga->get("channels") : nullptr;
+            const JVal *nodes = g.root.get("nodes");
+            for (size_t c = 0; chs && c < chs->arr.size(); c++) {
+                const JVal &ch = chs->arr[c];
+                const JVal *tg = ch.get("target");
+                if (!tg || !tg->get("path") || tg->get("path")->str != "weights" || !tg->get("node"))
+                    continue;
+                size_t ni = (size_t)tg->get("node")->num;
+                const JVal *nd = nodes ? nodes->at(ni) : nullptr;
+                std::string nname = nd && nd->get("name") ? nd->get("name")->str
+                                                          : "nodes[" + std::to_string(ni) + "]";
+                if (nname != mc->mName.C_Str()) continue;
+                const JVal *sm = ga->get("samplers") ? ga->get("samplers")->at((size_t)ch.number("sampler", -1))
+                                                     : nullptr;
+                if (!sm) break;
+                const JVal *ip = sm->get("interpolation");
+                std::string interp = ip ? ip->str : "LINEAR";
+                tr.step = interp == "STEP";
+                std::vector<double> vals;
+                int ct = 0;
+                if (!g.scalars((size_t)sm->number("output", -1), vals, &ct) || ct == 5126)
+                    break;      /* float weights: assimp's are right */
+                size_t per = interp == "CUBICSPLINE" ? 3 : 1;
+                if (vals.size() != (size_t)nk * nt * per)
+                    return cm_seterr("cannot read '%s': weight accessor has %zu values, expected %zu",
+                                     path, vals.size(), (size_t)nk * nt * per);
+                for (int k = 0; k < nk; k++)
+                    for (int j = 0; j < nt; j++)
+                        tr.w[(size_t)k * nt + j] = vals[((size_t)k * per + (per == 3 ? 1 : 0)) * nt + j];
+                inf.decoded_weights = 1;
+                break;
             }
         }
         for (double w : tr.w)
             if (!std::isfinite(w))
                 return cm_seterr("cannot read '%s': morph weight is not finite", path);
-        inf.nkeys = nk;
-        inf.duration = nk ? tr.time[nk - 1] : 0;
+        inf.nkeys += nk;
+        inf.duration += nk ? tr.time[nk - 1] : 0;
     }
+    inf.nclips = (int)clips.size();
 
-    /* ---- sample times ---- */
-    std::vector<double> times;
-    if (!mc || tr.time.empty()) {
-        times.push_back(0);
-    } else if (o->fps > 0) {
-        double last = tr.time.back();
-        long n = (long)std::floor(last * o->fps + 1e-9) + 1;
-        if (n > 10000000)
-            return cm_seterr("cannot read '%s': %ld frames at %g fps is too many", path, n, o->fps);
-        for (long k = 0; k < n; k++) times.push_back(k / o->fps);
-    } else {
-        times = tr.time;
+    /* ---- sample times: (clip, t) pairs ---- */
+    std::vector<std::pair<int, double>> times;
+    if (tracks.empty()) times.push_back({-1, 0.0});
+    for (size_t ci = 0; ci < tracks.size(); ci++) {
+        const MorphTrack &tr = tracks[ci];
+        if (tr.time.empty()) {
+            times.push_back({(int)ci, 0.0});
+        } else if (o->fps > 0) {
+            double last = tr.time.back();
+            long n = (long)std::floor(last * o->fps + 1e-9) + 1;
+            if (n + (long)times.size() > 10000000)
+                return cm_seterr("cannot read '%s': %ld frames at %g fps is too many", path, n, o->fps);
+            for (long k = 0; k < n; k++) times.push_back({(int)ci, k / o->fps});
+        } else {
+            for (double t : tr.time) times.push_back({(int)ci, t});
+        }
     }
 
     if (mesh_alloc(m, nv_all, (int)(F.size() / 3), (int)times.size()) < 0)
@@ -664,8 +675,9 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
             X[3 * v + 1] = am->mVertices[v].y;
             X[3 * v + 2] = am->mVertices[v].z;
         }
-        if (mc) {
-            weights_at(tr, nt, times[k], w);
+        if (times[k].first >= 0) {
+            m->cut[k] = k > 0 && times[k].first != times[k - 1].first;
+            weights_at(tracks[times[k].first], nt, times[k].second, w);
             for (int i = 0; i < nt; i++) {
                 if (w[i] == 0) continue;
                 const double *Di = D.data() + (size_t)i * nv * 3;

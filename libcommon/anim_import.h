@@ -10,7 +10,11 @@
  * with B the base positions, T_i the morph targets, and w_i(t) the weights
  * of the morph animation, interpolated linearly between keys (STEP keys
  * hold).  Samples are the keyframe times of the animation by default, or
- * t = k / fps for k = 0, 1, ... up to the last key.
+ * t = k / fps for k = 0, 1, ... up to the last key.  Every animation that
+ * drives the mesh's morph weights is a clip (mesh-export writes one glTF
+ * animation per clip): they follow one another in file order and the first
+ * frame of every clip after the first is marked as a cut; `animation`
+ * picks a single one.
  *
  * Vertices are kept exactly as the file indexes them: no joining of
  * identical vertices and no splitting (glTF meshes are indexed, so a vertex
@@ -65,8 +69,8 @@ struct anim_import_opts {
     int format;              /* ANIM_GLTF ... or ANIM_NONE: from the extension */
     const char *mesh;        /* NULL: automatic; else a mesh index ("2"), a
                                 mesh name, or a node name (first mesh below it) */
-    const char *animation;   /* NULL: the animation driving the mesh's morph
-                                weights; else an index or a name */
+    const char *animation;   /* NULL: every animation driving the mesh's morph
+                                weights, one clip each; else an index or a name */
     double fps;              /* <= 0: sample at the keyframes */
     int world;               /* apply the node's global rest-pose transform */
     int merge;               /* also append every other triangle mesh instance
@@ -77,10 +81,11 @@ struct anim_import_info {
     int mesh_index;          /* index of the chosen mesh in the file */
     char mesh_name[128];     /* its mesh (or node) name */
     int ntargets;            /* morph targets of the mesh */
-    int anim_index;          /* chosen animation, -1 if none */
+    int anim_index;          /* chosen (first) animation, -1 if none */
     char anim_name[128];
-    int nkeys;               /* keys of the morph channel (0: static mesh) */
-    double duration;         /* seconds from 0 to the last key */
+    int nclips;              /* animations read (0: static mesh) */
+    int nkeys;               /* keys of the morph channels (0: static mesh) */
+    double duration;         /* seconds from 0 to the last key, summed over clips */
     int decoded_weights;     /* 1 if weights were decoded from the glTF accessor */
     int merged;              /* merge: mesh instances appended */
     int merged_nv;           /* merge: vertices they added */

@@ -9,6 +9,7 @@
  */
 #include "anim_import.h"
 #include "cm_error.h"
+#include "coincident.h"
 #include "mesh.h"
 #include "meshio.h"
 #include "progress.h"
@@ -39,8 +40,10 @@ static const char help[] =
 "                       (default: at the keyframes of the animation)\n"
 "      --mesh NAME|I    animations: which mesh to take (default: the one with\n"
 "                       morph targets, the largest if several)\n"
-"      --animation NAME|I  animations: which animation (default: the one\n"
-"                       that drives the mesh's morph weights)\n"
+"      --animation NAME|I  animations: which animation (default: every one\n"
+"                       that drives the mesh's morph weights, one clip each)\n"
+"      --rest           animations: take the rest pose of a mesh whose morph\n"
+"                       targets no animation drives (default: an error)\n"
 "      --merge          animations: append every other mesh of the scene (eyes,\n"
 "                       teeth, ...) after the chosen one, placed as in the\n"
 "                       scene, static (repeated in every frame)\n"
@@ -48,6 +51,7 @@ static const char help[] =
 "                       (default: mesh coordinates, like a baked OBJ export)\n"
 "      --weld [EPS]     merge vertices within EPS in every frame (default 0:\n"
 "                       identical positions), e.g. copies split at UV seams\n"
+"                       or at every corner (flat-shaded glTF/FBX exports)\n"
 "      --raw            write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
 "  -v, --verbose        print what was read, counts and timings to stderr\n"
 "  -h, --help           show this help\n"
@@ -61,7 +65,7 @@ static const char help[] =
 struct options {
     const char *list, *format, *mesh, *animation;
     double fps, weld_eps;
-    int weld, world, raw, merge;
+    int weld, world, raw, merge, rest;
     char **files;
     int nfiles;
 };
@@ -134,7 +138,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     static const struct option lo[] = {
         {"list", 1, 0, 'l'}, {"format", 1, 0, 'F'}, {"fps", 1, 0, 'P'}, {"mesh", 1, 0, 'M'},
         {"animation", 1, 0, 'A'}, {"world", 0, 0, 'W'}, {"merge", 0, 0, 'G'}, {"weld", 2, 0, 'w'}, {"raw", 0, 0, 'R'},
-        {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
+        {"rest", 0, 0, 'r'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     int c, cap = 0;
     while ((c = getopt_long(argc, argv, "l:F:vh", lo, NULL)) != -1) {
@@ -162,6 +166,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         }
         case 'R': o->raw = 1; break;
+        case 'r': o->rest = 1; break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);
         case 'V': print_version_and_exit();
@@ -259,12 +264,23 @@ static void read_animation(const struct options *o, const char *path, int fmt, s
     double t0 = now_seconds();
     if (anim_import(path, &ao, out, &ai) < 0)
         die("%s", cm_errmsg());
-    if (ai.nkeys > 0)
+    if (ai.nkeys > 0 && ai.nclips > 1)
+        info(1, "%s: mesh %d '%s' (%d morph targets), %d animations from %d '%s' (%d keys, %.3f s%s): "
+             "%d clips, %d frames, %d vertices, %d triangles, %.2f s",
+             path, ai.mesh_index, ai.mesh_name, ai.ntargets, ai.nclips, ai.anim_index, ai.anim_name, ai.nkeys,
+             ai.duration, ai.decoded_weights ? ", weights decoded from the glTF accessor" : "",
+             ai.nclips, out->nframes, out->nv, out->nf, now_seconds() - t0);
+    else if (ai.nkeys > 0)
         info(1, "%s: mesh %d '%s' (%d morph targets), animation %d '%s' (%d keys, %.3f s%s): "
              "%d frames, %d vertices, %d triangles, %.2f s",
              path, ai.mesh_index, ai.mesh_name, ai.ntargets, ai.anim_index, ai.anim_name, ai.nkeys,
              ai.duration, ai.decoded_weights ? ", weights decoded from the glTF accessor" : "",
              out->nframes, out->nv, out->nf, now_seconds() - t0);
+    else if (ai.ntargets > 0 && !o->rest)
+        die("cannot read '%s': mesh %d '%s' has %d morph targets but no animation of their weights "
+            "that assimp can read%s; export glTF (.glb) instead, or give --rest to take the rest pose",
+            path, ai.mesh_index, ai.mesh_name, ai.ntargets,
+            fmt == ANIM_FBX ? " (FBX blend-shape animation curves are not read)" : "");
     else
         info(1, "%s: mesh %d '%s' (%d morph targets, no morph animation): %d vertices, %d triangles, %.2f s",
              path, ai.mesh_index, ai.mesh_name, ai.ntargets, out->nv, out->nf, now_seconds() - t0);
@@ -274,6 +290,27 @@ static void read_animation(const struct options *o, const char *path, int fmt, s
     if (ai.merged_morph)
         warn("%s: %d merged mesh%s morph targets of its own, taken at the base shape (import it alone with --mesh)",
              path, ai.merged_morph, ai.merged_morph == 1 ? " has" : "es have");
+}
+
+/* Vertices at the same position as another one in every frame: copies an
+ * exporter split off (UV seams, hard edges; every corner of a flat-shaded
+ * glTF/FBX).  Half or more of them: one warning line suggesting --weld;
+ * fewer: counted with -v. */
+static void split_hint(const struct mesh *m, const char *path)
+{
+    int *rep = malloc((size_t)m->nv * sizeof *rep + 1);
+    if (!rep) die("out of memory");
+    if (coincident_find(mesh_frame(m, 0), m->nv, rep) < 0) die("out of memory");
+    for (int k = 1; k < m->nframes; k++) coincident_refine(mesh_frame(m, k), m->nv, rep);
+    int copies = 0;
+    for (int v = 0; v < m->nv; v++) copies += rep[v] != v;
+    free(rep);
+    if (2 * copies >= m->nv)
+        warn("'%s': %d of %d vertices are copies at the position of another vertex in every frame "
+             "(split at every corner, as flat-shaded exports do): --weld joins them", path, copies, m->nv);
+    else if (copies > 0)
+        info(1, "'%s': %d of %d vertices are copies at the position of another vertex in every frame "
+             "(split at seams): --weld joins them", path, copies, m->nv);
 }
 
 int main(int argc, char **argv)
@@ -295,6 +332,7 @@ int main(int argc, char **argv)
     else
         read_frames(&o, &m);
 
+    if (!o.weld) split_hint(&m, o.files[0]);
     if (o.weld) {
         int merged, dropped;
         if (mesh_weld(&m, o.weld_eps, &merged, &dropped) < 0)
