@@ -277,10 +277,12 @@ static void read_animation(const struct options *o, const char *path, int fmt, s
              ai.duration, ai.decoded_weights ? ", weights decoded from the glTF accessor" : "",
              out->nframes, out->nv, out->nf, now_seconds() - t0);
     else if (ai.ntargets > 0 && !o->rest)
-        die("cannot read '%s': mesh %d '%s' has %d morph targets but no animation of their weights "
-            "that assimp can read%s; export glTF (.glb) instead, or give --rest to take the rest pose",
-            path, ai.mesh_index, ai.mesh_name, ai.ntargets,
-            fmt == ANIM_FBX ? " (FBX blend-shape animation curves are not read)" : "");
+        die("cannot read '%s': mesh %d '%s' has %d morph targets but the file has no animation of "
+            "their weights that assimp reads%s; give --rest to take the rest pose", path, ai.mesh_index, ai.mesh_name,
+            ai.ntargets, fmt == ANIM_FBX
+                ? " (Blender 3.4 writes none with its default FBX export: untick Bake Animation > "
+                  "All Actions and NLA Strips, or export glTF)"
+                : " (export it with its animation)");
     else
         info(1, "%s: mesh %d '%s' (%d morph targets, no morph animation): %d vertices, %d triangles, %.2f s",
              path, ai.mesh_index, ai.mesh_name, ai.ntargets, out->nv, out->nf, now_seconds() - t0);

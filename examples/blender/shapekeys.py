@@ -1,19 +1,25 @@
 # shapekeys.py -- a shape-key animation made in Blender, exported as glTF and
 # FBX, plus Blender's own evaluated frames as a MESH stream for comparison.
 #
-#   blender -b --factory-startup -P shapekeys.py -- OUTDIR [FRAMES]
+#   blender -b --factory-startup -P shapekeys.py -- OUTDIR [FRAMES [cube]]
 #
-# Scene: Suzanne with one level of subdivision (applied), two shape keys
+# Scene: Suzanne (or with "cube": a cube, the small test files of
+# tests/data) with one level of subdivision (applied), two shape keys
 # ("smile": the right half lifted, "squash": flattened along z), their
 # values keyed on every frame 1..FRAMES (default 48) at 24 fps.  Writes
 #   OUTDIR/suzanne.glb            File > Export > glTF 2.0 (.glb), with
 #                                 Shape Keys and Animation on (the defaults)
 #   OUTDIR/suzanne.fbx            File > Export > FBX, Shape Keys and
 #                                 Baked Animation on (the defaults)
+#   OUTDIR/suzanne-actions.fbx    the same with All Actions and NLA Strips
+#                                 off (bake_anim_use_all_actions=False,
+#                                 bake_anim_use_nla_strips=False): only then
+#                                 does Blender 3.4 write the shape-key curves
 #   OUTDIR/suzanne-blender.mesh   the evaluated positions of every frame in
-#                                 Blender's vertex order, converted to glTF's
-#                                 +Y up (x, z, -y), triangles from Blender's
-#                                 own triangulation (loop_triangles)
+#                                 Blender's vertex order and axes (object
+#                                 coordinates, +Z up), triangles from
+#                                 Blender's own triangulation (loop_triangles)
+#   OUTDIR/suzanne.blend          the scene
 import math
 import os
 import sys
@@ -23,8 +29,10 @@ import bpy
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 if not argv:
     sys.exit("usage: blender -b -P shapekeys.py -- OUTDIR [FRAMES]")
-out = argv[0]
+out = os.path.abspath(argv[0])
 nframes = int(argv[1]) if len(argv) > 1 else 48
+cube = len(argv) > 2 and argv[2] == "cube"
+name = "cube" if cube else "suzanne"
 os.makedirs(out, exist_ok=True)
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
@@ -33,7 +41,10 @@ scene.render.fps = 24
 scene.frame_start = 1
 scene.frame_end = nframes
 
-bpy.ops.mesh.primitive_monkey_add(size=2)
+if cube:
+    bpy.ops.mesh.primitive_cube_add(size=2)
+else:
+    bpy.ops.mesh.primitive_monkey_add(size=2)
 ob = bpy.context.active_object
 mod = ob.modifiers.new("subsurf", "SUBSURF")
 mod.levels = 1
@@ -57,16 +68,19 @@ for f in range(1, nframes + 1):
     smile.keyframe_insert("value", frame=f)
     squash.keyframe_insert("value", frame=f)
 
-bpy.ops.export_scene.gltf(filepath=os.path.join(out, "suzanne.glb"), export_format="GLB",
+bpy.ops.export_scene.gltf(filepath=os.path.join(out, name + ".glb"), export_format="GLB",
                           export_animations=True, export_morph=True, export_apply=False)
-bpy.ops.export_scene.fbx(filepath=os.path.join(out, "suzanne.fbx"), use_selection=False,
+bpy.ops.export_scene.fbx(filepath=os.path.join(out, name + ".fbx"), use_selection=False,
                          bake_anim=True, object_types={"MESH"})
+bpy.ops.export_scene.fbx(filepath=os.path.join(out, name + "-actions.fbx"), use_selection=False,
+                         bake_anim=True, bake_anim_use_all_actions=False, bake_anim_use_nla_strips=False,
+                         object_types={"MESH"})
 
-# Blender's own frames, as a MESH stream (glTF axes: x, z, -y)
+# Blender's own frames, as a MESH stream (object coordinates)
 me = ob.data
 me.calc_loop_triangles()
 tris = [tuple(t.vertices) for t in me.loop_triangles]
-with open(os.path.join(out, "suzanne-blender.mesh"), "w") as fh:
+with open(os.path.join(out, name + "-blender.mesh"), "w") as fh:
     fh.write("MESH 1\nvertices %d\nfaces %d\nframes %d\n" % (len(me.vertices), len(tris), nframes))
     for t in tris:
         fh.write("f %d %d %d\n" % t)
@@ -76,6 +90,7 @@ with open(os.path.join(out, "suzanne-blender.mesh"), "w") as fh:
         ev = ob.evaluated_get(dg).to_mesh()
         fh.write("frame %d\n" % (f - 1))
         for v in ev.vertices:
-            fh.write("%.9g %.9g %.9g\n" % (v.co.x, v.co.z, -v.co.y))
+            fh.write("%.9g %.9g %.9g\n" % (v.co.x, v.co.y, v.co.z))
         ob.evaluated_get(dg).to_mesh_clear()
+bpy.ops.wm.save_as_mainfile(filepath=os.path.join(out, name + ".blend"))
 print("shapekeys.py: wrote %s (%d vertices, %d frames)" % (out, len(me.vertices), nframes))
