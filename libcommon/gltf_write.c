@@ -1,5 +1,6 @@
 /* gltf_write.c -- glTF 2.0 writer for morph-target animations; see gltf_write.h. */
 #include "gltf_write.h"
+#include "base64.h"
 #include "cm_error.h"
 #include "geometry.h"
 #include <errno.h>
@@ -457,31 +458,17 @@ static void put_le32(unsigned char *p, uint32_t v)
 /* copy the temporary buffer to out (base64-encoded if b64) */
 static int copy_bin(struct gltf_writer *g, FILE *out, int b64, const char *name)
 {
-    static const char tab[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     if (fflush(g->bin) != 0 || fseek(g->bin, 0, SEEK_SET) != 0)
         return cm_seterr("glTF writer: temporary file: %s", strerror(errno));
-    unsigned char buf[3 * 4096];
-    char enc[4 * 4096];
+    unsigned char buf[3 * 4096];      /* a multiple of 3: base64 blocks join */
     size_t left = g->binlen;
     while (left > 0) {
         size_t want = left < sizeof buf ? left : sizeof buf;
         if (fread(buf, 1, want, g->bin) != want)
             return cm_seterr("glTF writer: temporary file: short read");
         left -= want;
-        if (!b64) {
-            if (fwrite(buf, 1, want, out) != want) return cm_seterr("cannot write '%s': %s", name, strerror(errno));
-            continue;
-        }
-        size_t o = 0;
-        for (size_t i = 0; i < want; i += 3) {
-            uint32_t v = (uint32_t)buf[i] << 16 | (i + 1 < want ? (uint32_t)buf[i + 1] << 8 : 0) |
-                         (i + 2 < want ? buf[i + 2] : 0);
-            enc[o++] = tab[(v >> 18) & 63];
-            enc[o++] = tab[(v >> 12) & 63];
-            enc[o++] = i + 1 < want ? tab[(v >> 6) & 63] : '=';
-            enc[o++] = i + 2 < want ? tab[v & 63] : '=';
-        }
-        if (fwrite(enc, 1, o, out) != o) return cm_seterr("cannot write '%s': %s", name, strerror(errno));
+        if (b64 ? base64_write(out, buf, want) < 0 : fwrite(buf, 1, want, out) != want)
+            return cm_seterr("cannot write '%s': %s", name, strerror(errno));
     }
     return 0;
 }

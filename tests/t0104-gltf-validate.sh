@@ -5,8 +5,8 @@ test_description='mesh-export glTF passes Khronos glTF-Validator with no error a
 VALIDATE="$TEST_DIRECTORY/gltf-validate.js"
 if ! command -v node >/dev/null 2>&1; then
 	test_skip_all="needs node (Debian: nodejs) for glTF-Validator"
-elif [ ! -f "${STOPMO_NODE_MODULES:-$STOPMO_ROOT/build/node/node_modules}/gltf-validator/package.json" ]; then
-	test_skip_all="needs the npm package gltf-validator (make deps installs it; npm or its registry was unavailable)"
+elif [ ! -f "${STOPMO_NODE_MODULES:-$STOPMO_ROOT/node_modules}/gltf-validator/package.json" ]; then
+	test_skip_all="needs the npm package gltf-validator (package.json: make deps installs it; npm or its registry was unavailable)"
 fi
 
 test_expect_success 'static meshes, .glb and .gltf' '
