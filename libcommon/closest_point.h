@@ -47,7 +47,8 @@ double closest_point_on_face(const struct closest_point_tree *T, int f, const do
 
 /* As closest_points(), but with a hint per query: a face id H[i] near the
  * answer (e.g. the previous answer of an iterative method; -1 = none).  A
- * good hint prunes the tree search; the answer is the same. */
+ * good hint prunes the tree search; the answer is the same.  I may be H
+ * (each hint is read before its answer is written). */
 void closest_points_hinted(const struct closest_point_tree *T, const double *P, int n,
                            const int *H, double *C, int *I, double *B, double *D);
 

@@ -53,11 +53,42 @@ int flipped_faces(const double *VA, const int *FA, int nfa, const double *VB, in
     return flipped_face_flags(VA, FA, nfa, VB, nvb, FB, nfb, TB, tol, NULL);
 }
 
+/* the flip test of one face of A given the closest point on B to its
+ * centroid (face g, barycentrics b, distance d); NF: B's face normals,
+ * t: B's topology */
+static int face_flipped(const double *nf, const double *p, int g, const double *b, double d,
+                        const int *FB, const double *NF, const struct topology *t,
+                        const struct closest_point_tree *TB, double tol)
+{
+    /* the normal cone of the closest feature: the face's normal inside a
+     * face, both face normals on an edge, all of them at a vertex; the
+     * face is flipped when it points against every one of them */
+    const double eps = 1e-9;
+    int zeros = (b[0] < eps) + (b[1] < eps) + (b[2] < eps), near[64];
+    int fl = dot3(NF + 3 * g, nf) < 0;
+    if (fl && zeros >= 2) {
+        int c = b[0] >= b[1] && b[0] >= b[2] ? 0 : b[1] >= b[2] ? 1 : 2, v = FB[3 * g + c];
+        for (int q = t->VFs[v]; q < t->VFs[v + 1] && fl; q++)
+            if (dot3(NF + 3 * t->VF[q], nf) >= 0) fl = 0;
+    } else if (fl && zeros == 1) {
+        int c = b[0] < eps ? 0 : b[1] < eps ? 1 : 2;
+        int e = t->FE[3 * g + (c + 1) % 3];        /* the edge opposite corner c */
+        for (int q = 0; q < 2 && fl; q++)
+            if (t->EF[2 * e + q] >= 0 && dot3(NF + 3 * t->EF[2 * e + q], nf) >= 0) fl = 0;
+    }
+    if (fl && tol > 0) {
+        /* a thin part of B (an ear, a fin): is a side facing this way near too? */
+        int m = closest_point_faces_within(TB, p, d + tol, near, 64);
+        for (int q = 0; q < m && q < 64 && fl; q++)
+            if (dot3(NF + 3 * near[q], nf) > 0) fl = 0;
+    }
+    return fl;
+}
+
 int flipped_face_flags(const double *VA, const int *FA, int nfa, const double *VB, int nvb,
                        const int *FB, int nfb, const struct closest_point_tree *TB,
                        double tol, unsigned char *flip)
 {
-    int near[64];
     double *P = malloc((size_t)nfa * 3 * sizeof *P + 1), *N = malloc((size_t)nfa * 3 * sizeof *N + 1);
     double *Bc = malloc((size_t)nfa * 3 * sizeof *Bc + 1);
     double *NF = malloc((size_t)nfb * 3 * sizeof *NF + 1);
@@ -74,29 +105,7 @@ int flipped_face_flags(const double *VA, const int *FA, int nfa, const double *V
     closest_points(TB, P, nfa, NULL, I, Bc, D);
     flipped = 0;
     for (int f = 0; f < nfa; f++) {
-        /* the normal cone of the closest feature: the face's normal inside a
-         * face, both face normals on an edge, all of them at a vertex; the
-         * face is flipped when it points against every one of them */
-        const double eps = 1e-9, *b = Bc + 3 * f;
-        int g = I[f], zeros = (b[0] < eps) + (b[1] < eps) + (b[2] < eps);
-        const double *nf = N + 3 * f;
-        int fl = dot3(NF + 3 * g, nf) < 0;
-        if (fl && zeros >= 2) {
-            int c = b[0] >= b[1] && b[0] >= b[2] ? 0 : b[1] >= b[2] ? 1 : 2, v = FB[3 * g + c];
-            for (int q = t.VFs[v]; q < t.VFs[v + 1] && fl; q++)
-                if (dot3(NF + 3 * t.VF[q], nf) >= 0) fl = 0;
-        } else if (fl && zeros == 1) {
-            int c = b[0] < eps ? 0 : b[1] < eps ? 1 : 2;
-            int e = t.FE[3 * g + (c + 1) % 3];        /* the edge opposite corner c */
-            for (int q = 0; q < 2 && fl; q++)
-                if (t.EF[2 * e + q] >= 0 && dot3(NF + 3 * t.EF[2 * e + q], nf) >= 0) fl = 0;
-        }
-        if (fl && tol > 0) {
-            /* a thin part of B (an ear, a fin): is a side facing this way near too? */
-            int m = closest_point_faces_within(TB, P + 3 * f, D[f] + tol, near, 64);
-            for (int q = 0; q < m && q < 64 && fl; q++)
-                if (dot3(NF + 3 * near[q], N + 3 * f) > 0) fl = 0;
-        }
+        int fl = face_flipped(N + 3 * f, P + 3 * f, I[f], Bc + 3 * f, D[f], FB, NF, &t, TB, tol);
         flipped += fl;
         if (flip) flip[f] = (unsigned char)fl;
     }
@@ -104,4 +113,154 @@ done:
     topology_free(&t);
     free(P); free(D); free(N); free(Bc); free(NF); free(I);
     return flipped;
+}
+
+/* ---- many frames against one reference */
+
+struct frame_compare {
+    const double *VR; int nvr, nfr; int *FR;
+    struct closest_point_tree *TR;
+    struct topology tr;
+    double *SR, *NR; int nsr;           /* the reference's samples, face normals */
+    int *HC;                            /* nsr: closest frame face of each reference sample */
+    /* the frame side, kept while the connectivity stays the same */
+    int nv, nf, nsx, have; int *F;
+    struct topology tx;
+    int *HX;                            /* nsx: closest reference face of each frame sample */
+    double *SX, *BX, *DX, *DC, *NX;
+};
+
+/* vertices, centroids, edge midpoints of (V, F) into S ((nv + nf + ne) by 3) */
+static void samples(const double *V, int nv, const int *F, int nf, const struct topology *t, double *S)
+{
+    int k = 0;
+    for (int v = 0; v < nv; v++, k++)
+        for (int d = 0; d < 3; d++) S[3 * k + d] = V[3 * v + d];
+    for (int f = 0; f < nf; f++, k++)
+        for (int d = 0; d < 3; d++)
+            S[3 * k + d] = (V[3 * F[3 * f] + d] + V[3 * F[3 * f + 1] + d] + V[3 * F[3 * f + 2] + d]) / 3;
+    for (int e = 0; e < t->ne; e++, k++)
+        for (int d = 0; d < 3; d++) S[3 * k + d] = 0.5 * (V[3 * t->E[2 * e] + d] + V[3 * t->E[2 * e + 1] + d]);
+}
+
+/* a face of a mesh with topology t next to each of its samples (the hint
+ * when the other mesh has the same connectivity) */
+static void sample_faces(const struct topology *t, int *H)
+{
+    int k = 0;
+    for (int v = 0; v < t->nv; v++, k++) H[k] = t->VFs[v] < t->VFs[v + 1] ? t->VF[t->VFs[v]] : -1;
+    for (int f = 0; f < t->nf; f++, k++) H[k] = f;
+    for (int e = 0; e < t->ne; e++, k++) H[k] = t->EF[2 * e];
+}
+
+struct frame_compare *frame_compare_new(const double *VR, int nvr, const int *FR, int nfr)
+{
+    struct frame_compare *C = calloc(1, sizeof *C);
+    if (!C) { cm_seterr("out of memory"); return NULL; }
+    C->VR = VR; C->nvr = nvr; C->nfr = nfr;
+    C->TR = closest_point_tree_new(VR, nvr, FR, nfr);
+    if (!C->TR || topology_build(FR, nfr, nvr, &C->tr) < 0) { frame_compare_free(C); return NULL; }
+    C->nsr = nvr + nfr + C->tr.ne;
+    C->FR = malloc((size_t)nfr * 3 * sizeof *C->FR);
+    C->SR = malloc((size_t)C->nsr * 3 * sizeof *C->SR);
+    C->NR = malloc((size_t)nfr * 3 * sizeof *C->NR);
+    C->HC = malloc((size_t)C->nsr * sizeof *C->HC);
+    C->DC = malloc((size_t)C->nsr * sizeof *C->DC);
+    if (!C->FR || !C->SR || !C->NR || !C->HC || !C->DC) {
+        cm_seterr("out of memory"); frame_compare_free(C); return NULL;
+    }
+    memcpy(C->FR, FR, (size_t)nfr * 3 * sizeof *FR);
+    samples(VR, nvr, FR, nfr, &C->tr, C->SR);
+    face_normals(VR, FR, nfr, C->NR);
+    return C;
+}
+
+void frame_compare_free(struct frame_compare *C)
+{
+    if (!C) return;
+    closest_point_tree_free(C->TR);
+    topology_free(&C->tr);
+    topology_free(&C->tx);
+    free(C->FR); free(C->SR); free(C->NR); free(C->HC); free(C->DC);
+    free(C->F); free(C->HX); free(C->SX); free(C->BX); free(C->DX); free(C->NX);
+    free(C);
+}
+
+/* (re)make the frame side for connectivity F */
+static int frame_side(struct frame_compare *C, int nv, const int *F, int nf)
+{
+    if (C->have && nv == C->nv && nf == C->nf && !memcmp(F, C->F, (size_t)nf * 3 * sizeof *F))
+        return 0;
+    topology_free(&C->tx);
+    free(C->F); free(C->HX); free(C->SX); free(C->BX); free(C->DX); free(C->NX);
+    C->F = NULL; C->HX = NULL; C->SX = C->BX = C->DX = C->NX = NULL;
+    C->have = 0;
+    if (topology_build(F, nf, nv, &C->tx) < 0) return -1;
+    C->nv = nv; C->nf = nf; C->nsx = nv + nf + C->tx.ne;
+    C->F = malloc((size_t)nf * 3 * sizeof *C->F);
+    C->HX = malloc((size_t)C->nsx * sizeof *C->HX);
+    C->SX = malloc((size_t)C->nsx * 3 * sizeof *C->SX);
+    C->BX = malloc((size_t)C->nsx * 3 * sizeof *C->BX);
+    C->DX = malloc((size_t)C->nsx * sizeof *C->DX);
+    C->NX = malloc((size_t)nf * 3 * sizeof *C->NX);
+    if (!C->F || !C->HX || !C->SX || !C->BX || !C->DX || !C->NX) { cm_seterr("out of memory"); return -1; }
+    memcpy(C->F, F, (size_t)nf * 3 * sizeof *F);
+    /* first hints: the same-numbered face when the frame has the
+     * reference's connectivity; otherwise the tree's own search */
+    int same = nv == C->nvr && nf == C->nfr && !memcmp(F, C->FR, (size_t)nf * 3 * sizeof *F);
+    if (same) {
+        sample_faces(&C->tx, C->HX);
+        sample_faces(&C->tr, C->HC);
+    } else {
+        for (int i = 0; i < C->nsx; i++) C->HX[i] = -1;
+        for (int i = 0; i < C->nsr; i++) C->HC[i] = -1;
+    }
+    C->have = 1;
+    return 0;
+}
+
+int frame_compare_run(struct frame_compare *C, const double *X, int nv, const int *F, int nf,
+                      double tol, struct frame_distance *out, unsigned char *flip, double *face_fit)
+{
+    if (frame_side(C, nv, F, nf) < 0) return -1;
+    struct closest_point_tree *TX = closest_point_tree_new(X, nv, F, nf);
+    if (!TX) return -1;
+    samples(X, nv, F, nf, &C->tx, C->SX);
+    /* the frame's samples to the reference (fit), the reference's samples
+     * to the frame (cover); each query starts from the previous frame's
+     * answer, which for a coherent animation is at or next to the new one */
+    closest_points_hinted(C->TR, C->SX, C->nsx, C->HX, NULL, C->HX, C->BX, C->DX);
+    closest_points_hinted(TX, C->SR, C->nsr, C->HC, NULL, C->HC, NULL, C->DC);
+    struct one_sided *o[2] = {&out->fit, &out->cover};
+    const double *Dd[2] = {C->DX, C->DC};
+    int n[2] = {C->nsx, C->nsr};
+    for (int s = 0; s < 2; s++) {
+        o[s]->max = 0; o[s]->sumsq = 0; o[s]->n = n[s];
+        for (int i = 0; i < n[s]; i++) {
+            if (Dd[s][i] > o[s]->max) o[s]->max = Dd[s][i];
+            o[s]->sumsq += Dd[s][i] * Dd[s][i];
+        }
+    }
+    /* flipped faces: the centroid samples (nv .. nv+nf-1) already know
+     * their closest reference points */
+    face_normals(X, F, nf, C->NX);
+    out->flipped = 0;
+    for (int f = 0; f < nf; f++) {
+        int k = nv + f;
+        int fl = face_flipped(C->NX + 3 * f, C->SX + 3 * k, C->HX[k], C->BX + 3 * k, C->DX[k],
+                              C->FR, C->NR, &C->tr, C->TR, tol);
+        out->flipped += fl;
+        if (flip) flip[f] = (unsigned char)fl;
+        if (face_fit) {
+            double m = C->DX[k];
+            for (int c = 0; c < 3; c++) {
+                double dv = C->DX[F[3 * f + c]], de = C->DX[nv + nf + C->tx.FE[3 * f + c]];
+                if (dv > m) m = dv;
+                if (de > m) m = de;
+            }
+            face_fit[f] = m;
+        }
+    }
+    closest_point_tree_free(TX);
+    return 0;
 }

@@ -58,6 +58,35 @@ int flipped_face_flags(const double *VA, const int *FA, int nfa, const double *V
                        const int *FB, int nfb, const struct closest_point_tree *TB,
                        double tol, unsigned char *flip);
 
+/* Many frames against one reference (mesh-metrics): the reference's tree,
+ * topology, samples and normals are built once; the closest faces found
+ * for one frame start the next frame's queries, so a coherent animation
+ * (or a registration with the reference's connectivity) costs a fraction
+ * of a cold search.  The results are those of one_sided_distance() both
+ * ways and flipped_face_flags() with A = the frame, B = the reference.
+ *
+ *   C = frame_compare_new(VR, nvr, FR, nfr);    VR must outlive C
+ *   for each frame X: frame_compare_run(C, X, nv, F, nf, tol, &d, flip, face_fit);
+ *   frame_compare_free(C);
+ */
+struct frame_compare;
+struct frame_distance {
+    struct one_sided fit;    /* the frame's samples to the reference */
+    struct one_sided cover;  /* the reference's samples to the frame */
+    int flipped;             /* faces of the frame pointing against the reference */
+};
+/* VR: #VR by 3 (nvr), FR: #FR by 3 (nfr).  NULL on error (cm_errmsg). */
+struct frame_compare *frame_compare_new(const double *VR, int nvr, const int *FR, int nfr);
+/* X: #V by 3 (nv), F: #F by 3 (nf), any connectivity (it may change from
+ * call to call; hints are kept while it stays the same); tol: the thin-part
+ * allowance of flipped_face_flags() (a distance); out: the distances and
+ * flipped count; flip (#F, may be NULL): 1 for flipped faces; face_fit (#F,
+ * may be NULL): per face the largest distance of its samples (corners,
+ * centroid, edge midpoints) to the reference.  Returns 0, -1 on error. */
+int frame_compare_run(struct frame_compare *C, const double *X, int nv, const int *F, int nf,
+                      double tol, struct frame_distance *out, unsigned char *flip, double *face_fit);
+void frame_compare_free(struct frame_compare *C);
+
 #ifdef __cplusplus
 }
 #endif

@@ -53,6 +53,34 @@ int mesh_colors_labels(const char *path, int nv, int nf, struct mesh_colors *mc)
     return 0;
 }
 
+static int scalars_from(const char *path, const double *x, int n, int nf,
+                        const double *range, struct mesh_colors *mc)
+{
+    if (n == 0)
+        return cm_seterr("cannot read '%s': no values", fname(path));
+    mc->per_face = n == nf;
+    mc->n = n;
+    if (range) {
+        mc->lo = range[0];
+        mc->hi = range[1];
+    } else
+        scalar_range(x, n, &mc->lo, &mc->hi);
+    colormap_viridis_table(mc->lut);
+    if (mc->per_face) {
+        mc->rgb = malloc((size_t)n * 3);
+        if (mc->rgb)
+            for (int i = 0; i < n; i++)
+                colormap_viridis(colormap_t(x[i], mc->lo, mc->hi), mc->rgb + 3 * i);
+    } else {
+        mc->t = malloc((size_t)n * sizeof *mc->t);
+        if (mc->t)
+            for (int i = 0; i < n; i++) mc->t[i] = (float)colormap_t(x[i], mc->lo, mc->hi);
+    }
+    if (!mc->rgb && !mc->t)
+        return cm_seterr("out of memory");
+    return 0;
+}
+
 int mesh_colors_scalars(const char *path, int nv, int nf, const double *range,
                         struct mesh_colors *mc)
 {
@@ -65,31 +93,40 @@ int mesh_colors_scalars(const char *path, int nv, int nf, const double *range,
         columns_free(&c);
         return count_error(path, n, nv, nf);
     }
-    if (n == 0) {
-        columns_free(&c);
-        return cm_seterr("cannot read '%s': no values", fname(path));
-    }
-    mc->per_face = n == nf;
-    mc->n = n;
-    if (range) {
-        mc->lo = range[0];
-        mc->hi = range[1];
-    } else
-        scalar_range(c.x, n, &mc->lo, &mc->hi);
-    colormap_viridis_table(mc->lut);
-    if (mc->per_face) {
-        mc->rgb = malloc((size_t)n * 3);
-        if (mc->rgb)
-            for (int i = 0; i < n; i++) colormap_viridis(colormap_t(c.x[i], mc->lo, mc->hi), mc->rgb + 3 * i);
-    } else {
-        mc->t = malloc((size_t)n * sizeof *mc->t);
-        if (mc->t)
-            for (int i = 0; i < n; i++) mc->t[i] = (float)colormap_t(c.x[i], mc->lo, mc->hi);
-    }
+    int rc = scalars_from(path, c.x, n, nf, range, mc);
     columns_free(&c);
-    if (!mc->rgb && !mc->t)
-        return cm_seterr("out of memory");
-    return 0;
+    return rc;
+}
+
+int mesh_colors_scalars_column(const char *path, int col, int block, int nv, int nf,
+                               const double *range, struct mesh_colors *mc)
+{
+    memset(mc, 0, sizeof *mc);
+    struct columns c;
+    if (columns_read(path, 0, -1, NULL, &c) < 0)
+        return -1;
+    if (col < 0 || col >= c.cols) {
+        int k = c.cols;
+        columns_free(&c);
+        return cm_seterr("cannot read '%s': no column %d (it has %d)", fname(path), col + 1, k);
+    }
+    /* one block of #F (else #V) rows per frame */
+    int n = c.rows > 0 && c.rows % nf == 0 ? nf : c.rows > 0 && c.rows % nv == 0 ? nv : -1;
+    if (n < 0 || (c.rows != n && (block < 0 || (long)(block + 1) * n > c.rows))) {
+        int r = c.rows;
+        columns_free(&c);
+        if (n < 0) return count_error(path, r, nv, nf);
+        return cm_seterr("cannot read '%s': %d rows are %d blocks of %d %s, no block for frame %d",
+                         fname(path), r, r / n, n, n == nf ? "faces" : "vertices", block);
+    }
+    size_t first = c.rows == n ? 0 : (size_t)block * n;
+    double *x = malloc((size_t)n * sizeof *x);
+    if (!x) { columns_free(&c); return cm_seterr("out of memory"); }
+    for (int i = 0; i < n; i++) x[i] = c.x[(first + i) * c.cols + col];
+    int rc = scalars_from(path, x, n, nf, range, mc);
+    free(x);
+    columns_free(&c);
+    return rc;
 }
 
 void mesh_colors_apply(const struct mesh_colors *mc, struct render_style *s)

@@ -34,6 +34,14 @@ int mesh_colors_labels(const char *path, int nv, int nf, struct mesh_colors *mc)
 int mesh_colors_scalars(const char *path, int nv, int nf, const double *range,
                         struct mesh_colors *mc);
 
+/* As mesh_colors_scalars(), from column col (0-based) of a file with any
+ * number of columns, e.g. mesh-metrics --per-face.  The file has #F (else
+ * #V) rows, or a block of them per frame: then block (a frame index) picks
+ * one.  Errors (cm_errmsg): no such column, a row count that is no multiple
+ * of #F or #V, no such block. */
+int mesh_colors_scalars_column(const char *path, int col, int block, int nv, int nf,
+                               const double *range, struct mesh_colors *mc);
+
 /* Point the style's face_rgb / vertex_rgb / vertex_t / lut at mc. */
 void mesh_colors_apply(const struct mesh_colors *mc, struct render_style *s);
 

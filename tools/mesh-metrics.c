@@ -29,18 +29,23 @@ static const char help[] =
 "  -r, --reference FILE  the reference mesh (required)\n"
 "      --ref-frame K     use frame K of the reference (default 0)\n"
 "      --no-header       omit the '# frame ...' header line\n"
+"      --per-face FILE   write one row per face and frame to FILE:\n"
+"                        frame face flipped distance distance_rel (the largest\n"
+"                        distance of the face's samples to the reference; _rel:\n"
+"                        over the diagonal), for mesh-render --color\n"
 "  -o, --output FILE     write to FILE (atomically) instead of stdout\n"
 "  -h, --help            show this help\n"
 "      --version         show the version\n"
 "\n"
 "Example: arap-interp a.mesh b.mesh | mesh-metrics -r a.mesh\n";
 
-struct options { const char *input, *ref, *output; int ref_frame, no_header; };
+struct options { const char *input, *ref, *output, *per_face; int ref_frame, no_header; };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"reference", 1, 0, 'r'}, {"ref-frame", 1, 0, 'K'}, {"no-header", 0, 0, 'N'},
+        {"per-face", 1, 0, 'P'},
         {"output", 1, 0, 'o'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -50,6 +55,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'r': o->ref = optarg; break;
         case 'K': o->ref_frame = (int)arg_long(optarg, "--ref-frame"); break;
         case 'N': o->no_header = 1; break;
+        case 'P': o->per_face = optarg; break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);
@@ -60,6 +66,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!o->ref) usage_error("missing -r REFERENCE");
     if (o->ref_frame < 0) usage_error("--ref-frame must be >= 0");
     if (argc - optind > 1) usage_error("expected at most one input");
+    if (o->per_face && o->output && !strcmp(o->per_face, o->output))
+        usage_error("--per-face and -o name the same file");
     o->input = optind < argc ? argv[optind] : "-";
 }
 
@@ -90,50 +98,53 @@ int main(int argc, char **argv)
     if (o.ref_frame >= ref.nframes)
         die("cannot use '%s': --ref-frame %d but it has %d frames", o.ref, o.ref_frame, ref.nframes);
     const double *R = mesh_frame(&ref, o.ref_frame);
-    struct closest_point_tree *TR = closest_point_tree_new(R, ref.nv, ref.F, ref.nf);
-    if (!TR) die("cannot use '%s': %s", o.ref, cm_errmsg());
+    struct frame_compare *C = frame_compare_new(R, ref.nv, ref.F, ref.nf);
+    if (!C) die("cannot use '%s': %s", o.ref, cm_errmsg());
     double diag = bbox_diagonal(R, ref.nv);
     struct mesh_reader rd;
     if (mesh_reader_open(&rd, o.input) < 0) die("%s", cm_errmsg());
     int same = rd.nv == ref.nv && rd.nf == ref.nf &&
                !memcmp(rd.F, ref.F, (size_t)ref.nf * 3 * sizeof(int));
     double *X = malloc((size_t)rd.nv * 3 * sizeof *X + 1);
-    struct text out = {0};
+    double *ffit = o.per_face ? malloc((size_t)rd.nf * sizeof *ffit + 1) : NULL;
+    unsigned char *flip = o.per_face ? malloc((size_t)rd.nf + 1) : NULL;
+    struct text out = {0}, pf = {0};
     if (!o.no_header)
         text_add(&out, "# frame hausdorff hausdorff_rel rms flipped%s fit_rel cover_rel\n",
                  same ? " volume_rel area_mean area_sigma vol_mean vol_sigma edge_max area_abs" : "");
+    if (o.per_face && !o.no_header) text_add(&pf, "# frame face flipped distance distance_rel\n");
     int rc;
     while ((rc = mesh_reader_next(&rd, X, NULL)) == 1) {
         int k = rd.frame - 1;
-        struct closest_point_tree *TX = closest_point_tree_new(X, rd.nv, rd.F, rd.nf);
-        if (!TX) die("%s: frame %d: %s", rd.name, k, cm_errmsg());
         /* one-sided both ways: the frame's samples to the reference (fit),
          * the reference's samples to the frame (cover) */
-        struct one_sided fit, cover;
-        if (one_sided_distance(X, rd.nv, rd.F, rd.nf, TR, &fit) < 0 ||
-            one_sided_distance(R, ref.nv, ref.F, ref.nf, TX, &cover) < 0)
-            die("%s", cm_errmsg());
-        double h = fit.max > cover.max ? fit.max : cover.max;
-        double rms = sqrt((fit.sumsq + cover.sumsq) / (fit.n + cover.n));
-        int flipped = flipped_faces(X, rd.F, rd.nf, R, ref.nv, ref.F, ref.nf, TR, FLIP_THIN_TOL * diag);
-        closest_point_tree_free(TX);
-        text_add(&out, "%d %.9g %.9g %.9g %d", k, h, diag > 0 ? h / diag : 0, rms, flipped);
+        struct frame_distance fd;
+        if (frame_compare_run(C, X, rd.nv, rd.F, rd.nf, FLIP_THIN_TOL * diag, &fd, flip, ffit) < 0)
+            die("%s: frame %d: %s", rd.name, k, cm_errmsg());
+        double h = fd.fit.max > fd.cover.max ? fd.fit.max : fd.cover.max;
+        double rms = sqrt((fd.fit.sumsq + fd.cover.sumsq) / (fd.fit.n + fd.cover.n));
+        text_add(&out, "%d %.9g %.9g %.9g %d", k, h, diag > 0 ? h / diag : 0, rms, fd.flipped);
         if (same) {
             struct distortion d;
             mesh_distortion(R, X, ref.F, ref.nv, ref.nf, &d);
             text_add(&out, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g", d.volume_rel, d.area_mean,
                      d.area_sigma, d.vol_mean, d.vol_sigma, d.edge_max, d.area_abs);
         }
-        text_add(&out, " %.9g %.9g\n", diag > 0 ? fit.max / diag : 0, diag > 0 ? cover.max / diag : 0);
+        text_add(&out, " %.9g %.9g\n", diag > 0 ? fd.fit.max / diag : 0, diag > 0 ? fd.cover.max / diag : 0);
+        for (int f = 0; o.per_face && f < rd.nf; f++)
+            text_add(&pf, "%d %d %d %.9g %.9g\n", k, f, flip[f], ffit[f], diag > 0 ? ffit[f] / diag : 0);
     }
     if (rc < 0) die("%s", cm_errmsg());
     mesh_reader_close(&rd);
-    FILE *f = out_open(o.output);
+    /* both outputs open before either is renamed into place */
+    FILE *g = o.per_face ? out_open(o.per_face) : NULL, *f = out_open(o.output);
+    if (g && pf.n) fwrite(pf.s, 1, pf.n, g);
     if (out.n) fwrite(out.s, 1, out.n, f);
+    if (g) out_close(g);
     out_close(f);
-    free(out.s);
-    free(X);
-    closest_point_tree_free(TR);
+    free(out.s); free(pf.s);
+    free(X); free(ffit); free(flip);
+    frame_compare_free(C);
     mesh_free(&ref);
     return 0;
 }

@@ -28,6 +28,10 @@ static const char help[] =
 "                         (-1 = the last; default 0)\n"
 "  -s, --size WxH         image size in pixels (default 800x800)\n"
 "      --fit-all          fit the camera to all frames, not just frame K\n"
+"      --column N         with --scalars: column N (1-based) of a file with several\n"
+"                         columns, e.g. mesh-metrics --per-face (4: distance, 3:\n"
+"                         flipped); a file of one block of rows per frame gives\n"
+"                         frame K's block\n"
 RENDER_OPTIONS_HELP
 "  -f, --format FMT       png or ppm (default from the -o extension, else png)\n"
 "  -o, --output FILE      write to FILE (atomically) instead of stdout\n"
@@ -40,16 +44,17 @@ RENDER_OPTIONS_HELP
 
 struct options {
     const char *input;
-    int frame, w, h, fit_all;
+    int frame, w, h, fit_all, column;
     struct render_options r;   /* camera and look */
 };
 
-enum { O_FITALL = 256, O_VERSION };
+enum { O_FITALL = 256, O_VERSION, O_COLUMN };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"frame", 1, 0, 'k'}, {"size", 1, 0, 's'}, {"fit-all", 0, 0, O_FITALL},
+        {"column", 1, 0, O_COLUMN},
         RENDER_OPTIONS_LONGOPTS, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -66,6 +71,10 @@ static void parse_args(int argc, char **argv, struct options *o)
                 usage_error("--size: '%s' is not WxH (e.g. 800x600, at most 16384)", optarg);
             break;
         case O_FITALL: o->fit_all = 1; break;
+        case O_COLUMN:
+            o->column = (int)arg_long(optarg, "--column");
+            if (o->column < 1) usage_error("--column must be >= 1");
+            break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);
         case O_VERSION: print_version_and_exit();
@@ -76,6 +85,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         usage_error("expected at most one input file");
     o->input = optind < argc ? argv[optind] : NULL;
     render_options_check(&o->r);
+    if (o->column && !o->r.scalars) usage_error("--column needs --scalars");
     render_options_format(&o->r, o->r.output);
 }
 
@@ -150,7 +160,9 @@ int main(int argc, char **argv)
     memset(&mc, 0, sizeof mc);
     if (o.r.labels && mesh_colors_labels(o.r.labels, r.nv, r.nf, &mc) < 0)
         die("%s", cm_errmsg());
-    if (o.r.scalars && mesh_colors_scalars(o.r.scalars, r.nv, r.nf, o.r.have_range ? o.r.range : NULL, &mc) < 0)
+    const double *range = o.r.have_range ? o.r.range : NULL;
+    if (o.r.scalars && (o.column ? mesh_colors_scalars_column(o.r.scalars, o.column - 1, want, r.nv, r.nf, range, &mc)
+                                 : mesh_colors_scalars(o.r.scalars, r.nv, r.nf, range, &mc)) < 0)
         die("%s", cm_errmsg());
     if (o.r.labels || o.r.scalars) {
         mesh_colors_apply(&mc, &st);
