@@ -57,6 +57,10 @@ struct JVal {
         return nullptr;
     }
     const JVal *at(size_t i) const { return t == ARR && i < arr.size() ? &arr[i] : nullptr; }
+    /* a JSON number as an index or size: SIZE_MAX unless it is an integer
+     * in [0, 2^53] (casting a negative or huge double is undefined) */
+    static size_t index(double x) { return x >= 0 && x <= 9007199254740992.0 && x == std::floor(x) ? (size_t)x : SIZE_MAX; }
+    size_t size(const char *k, double def) const { return index(number(k, def)); }
     double number(const char *k, double def) const
     {
         const JVal *v = get(k);
@@ -262,23 +266,26 @@ struct Gltf {
         const JVal *ty = a->get("type");
         if (!ty || ty->str != "SCALAR") return false;
         int ct = (int)a->number("componentType", 0);
-        size_t count = (size_t)a->number("count", 0);
+        size_t count = a->size("count", 0);
         size_t csize = ct == 5126 ? 4 : ct == 5122 || ct == 5123 ? 2 : ct == 5120 || ct == 5121 ? 1 : 0;
-        if (!csize) return false;
+        if (!csize || count > (1u << 30)) return false;
         *type = ct;
         const JVal *bvi = a->get("bufferView");
         if (!bvi) { out.assign(count, 0.0); return true; }
         const JVal *bvs = root.get("bufferViews");
-        const JVal *bv = bvs ? bvs->at((size_t)bvi->num) : nullptr;
+        const JVal *bv = bvs ? bvs->at(JVal::index(bvi->num)) : nullptr;
         if (!bv) return false;
-        const std::string *buf = buffer((size_t)bv->number("buffer", 0));
+        const std::string *buf = buffer(bv->size("buffer", 0));
         if (!buf) return false;
-        size_t off = (size_t)bv->number("byteOffset", 0) + (size_t)a->number("byteOffset", 0);
-        size_t stride = (size_t)bv->number("byteStride", 0);
+        /* every size checked without overflow: the view lies in the
+         * buffer, the accessor's elements in the view (glTF: stride <= 252) */
+        size_t bvoff = bv->size("byteOffset", 0), aoff = a->size("byteOffset", 0);
+        size_t stride = bv->size("byteStride", 0), len = bv->size("byteLength", 0);
         if (!stride) stride = csize;
-        size_t len = (size_t)bv->number("byteLength", 0);
-        if (count && ((count - 1) * stride + csize > len || off + (count - 1) * stride + csize > buf->size()))
+        if (stride < csize || stride > 252 || bvoff > buf->size() || len > buf->size() - bvoff ||
+            aoff > len || (count && (len - aoff < csize || count - 1 > (len - aoff - csize) / stride)))
             return false;
+        size_t off = bvoff + aoff;
         bool norm = a->get("normalized") && a->get("normalized")->num != 0;
         out.resize(count);
         const unsigned char *u = (const unsigned char *)buf->data() + off;
@@ -605,12 +612,12 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
                 const JVal *tg = ch.get("target");
                 if (!tg || !tg->get("path") || tg->get("path")->str != "weights" || !tg->get("node"))
                     continue;
-                size_t ni = (size_t)tg->get("node")->num;
+                size_t ni = JVal::index(tg->get("node")->num);
                 const JVal *nd = nodes ? nodes->at(ni) : nullptr;
                 std::string nname = nd && nd->get("name") ? nd->get("name")->str
                                                           : "nodes[" + std::to_string(ni) + "]";
                 if (nname != mc->mName.C_Str()) continue;
-                const JVal *sm = ga->get("samplers") ? ga->get("samplers")->at((size_t)ch.number("sampler", -1))
+                const JVal *sm = ga->get("samplers") ? ga->get("samplers")->at(ch.size("sampler", -1))
                                                      : nullptr;
                 if (!sm) break;
                 const JVal *ip = sm->get("interpolation");
@@ -618,7 +625,7 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
                 tr.step = interp == "STEP";
                 std::vector<double> vals;
                 int ct = 0;
-                if (!g.scalars((size_t)sm->number("output", -1), vals, &ct) || ct == 5126)
+                if (!g.scalars(sm->size("output", -1), vals, &ct) || ct == 5126)
                     break;      /* float weights: assimp's are right */
                 size_t per = interp == "CUBICSPLINE" ? 3 : 1;
                 if (vals.size() != (size_t)nk * nt * per)

@@ -2,6 +2,7 @@
 #include "columns.h"
 #include "cm_error.h"
 #include "numparse.h"
+#include "textline.h"
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -22,7 +23,9 @@ int columns_read(const char *path, int want_cols, int want_rows, const char *wha
     double *row = NULL;
     int rowcap = 0;
     for (;;) {
-        ssize_t n = getline(&line, &lcap, f);
+        long n = textline_read(f, &line, &lcap, name, lineno + 1);
+        if (n == -2)
+            goto fail;
         if (n < 0)
             break;
         lineno++;
@@ -57,6 +60,12 @@ int columns_read(const char *path, int want_cols, int want_rows, const char *wha
             row[k++] = v;
             p = q;
         }
+        if (k == 0) {
+            /* separators only (",,"): not a row of zero numbers, which
+             * would shift every later row against its element */
+            cm_seterr("cannot read '%s': line %ld: no numbers, only separators", name, lineno);
+            goto fail;
+        }
         if (cols == 0)
             cols = k;
         if (k != cols) {
@@ -71,12 +80,8 @@ int columns_read(const char *path, int want_cols, int want_rows, const char *wha
             if (!nx) { cm_seterr("cannot read '%s': out of memory", name); goto fail; }
             c->x = nx;
         }
-        memcpy(c->x + (size_t)c->rows * cols, row, (size_t)cols * sizeof *row);
+        memcpy(c->x + (size_t)c->rows * cols, row, (size_t)k * sizeof *row);
         c->rows++;
-    }
-    if (ferror(f)) {
-        cm_seterr("cannot read '%s': %s", name, strerror(errno));
-        goto fail;
     }
     if (want_rows >= 0 && c->rows != want_rows) {
         cm_seterr("cannot read '%s': %d rows, but there are %d %s", name, c->rows, want_rows,

@@ -21,22 +21,29 @@ int landmarks_read(const char *path, int nvs, const double *VT, int nvt, struct 
                          "'src_vertex x y z', got %d numbers per row", name, c.cols);
     }
     L->n = c.rows;
-    L->src = malloc(c.rows * sizeof *L->src);
-    L->dst = malloc(c.rows * sizeof *L->dst);
-    L->P = malloc(c.rows * 3 * sizeof *L->P);
+    L->src = malloc((size_t)c.rows * sizeof *L->src);
+    L->dst = malloc((size_t)c.rows * sizeof *L->dst);
+    L->P = malloc((size_t)c.rows * 3 * sizeof *L->P);
+    if (!L->src || !L->dst || !L->P) {
+        columns_free(&c); landmarks_free(L);
+        return cm_seterr("cannot read '%s': out of memory", name);
+    }
     for (int r = 0; r < c.rows; r++) {
         const double *x = c.x + (size_t)r * c.cols;
         if (!is_index(x[0]) || x[0] < 0 || x[0] >= nvs) {
+            /* the message reads x: set it before the columns are freed */
+            cm_seterr("cannot read '%s': landmark %d: source vertex %g out of range 0..%d",
+                      name, r + 1, x[0], nvs - 1);
             columns_free(&c); landmarks_free(L);
-            return cm_seterr("cannot read '%s': landmark %d: source vertex %g out of range 0..%d",
-                             name, r + 1, x[0], nvs - 1);
+            return -1;
         }
         L->src[r] = (int)x[0];
         if (c.cols == 2) {
             if (!is_index(x[1]) || x[1] < 0 || x[1] >= nvt || !VT) {
+                cm_seterr("cannot read '%s': landmark %d: target vertex %g out of range 0..%d",
+                          name, r + 1, x[1], nvt - 1);
                 columns_free(&c); landmarks_free(L);
-                return cm_seterr("cannot read '%s': landmark %d: target vertex %g out of range 0..%d",
-                                 name, r + 1, x[1], nvt - 1);
+                return -1;
             }
             L->dst[r] = (int)x[1];
             memcpy(L->P + 3 * r, VT + 3 * (size_t)L->dst[r], 3 * sizeof *L->P);

@@ -7,8 +7,14 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define MAX_COUNT 200000000
+/* the longest text line accepted, '\n' not counted (stopmo-mesh(5)) */
+#define MESH_LINE_MAX (1 << 20)
+/* a regular file whose header announces more than this many bytes of data
+ * beyond the file's size fails at once instead of allocating for them */
+#define SIZE_CHECK_MIN (16u << 20)
 
 int mesh_alloc(struct mesh *m, int nv, int nf, int nframes)
 {
@@ -85,6 +91,12 @@ static char *next_line(struct mesh_reader *r, int *err)
     for (;;) {
         char *nl = r->pos < r->len ? memchr(r->buf + r->pos, '\n', r->len - r->pos) : NULL;
         if (!nl) {
+            if (r->len - r->pos > MESH_LINE_MAX) {
+                *err = 1;
+                cm_seterr("cannot read '%s': line %ld: line longer than %d bytes", r->name,
+                          r->line + 1, MESH_LINE_MAX);
+                return NULL;
+            }
             int rc = fill(r);
             if (rc < 0) { *err = 1; return NULL; }
             if (rc > 0) continue;
@@ -98,6 +110,13 @@ static char *next_line(struct mesh_reader *r, int *err)
         r->pos = (size_t)(nl - r->buf) + (nl < r->buf + r->len ? 1 : 0);
         if (nl == r->buf + r->len) r->pos = r->len;
         r->line++;
+        if (memchr(s, 0, (size_t)(nl - s))) {
+            /* a NUL is never text: binary data, or the zero-filled tail
+             * of a write that crashed */
+            *err = 1;
+            cm_seterr("cannot read '%s': line %ld: NUL byte in a text line", r->name, r->line);
+            return NULL;
+        }
         char *t = s;
         while (*t == ' ' || *t == '\t' || *t == '\r') t++;
         if (*t == 0 || *t == '#')
@@ -153,7 +172,7 @@ static int at_end(const char *p)
 #define RERR(...) do { char m_[512]; snprintf(m_, sizeof m_, __VA_ARGS__); \
     return cm_seterr("cannot read '%s': line %ld: %s", r->name, r->line, m_); } while (0)
 
-static int header_count(struct mesh_reader *r, const char *key, int allow_q, int *out)
+static int header_count(struct mesh_reader *r, const char *key, int allow_q, long min, int *out)
 {
     int err;
     char *s = next_line(r, &err);
@@ -169,7 +188,22 @@ static int header_count(struct mesh_reader *r, const char *key, int allow_q, int
     const char *e = parse_long(p, &v);
     if (!e || !at_end(e) || v < 0 || v > MAX_COUNT)
         RERR("bad %s count '%.40s'", key, p);
+    if (v < min)
+        RERR("bad %s count %ld: at least %ld", key, v, min);
     *out = (int)v;
+    return 0;
+}
+
+/* double the face storage (up to `most` faces) */
+static int grow_faces(struct mesh_reader *r, size_t *cap, size_t most)
+{
+    size_t n = 2 * *cap > most ? most : 2 * *cap;
+    if (n < most && n < 16) n = most < 16 ? most : 16;
+    int *nf = realloc(r->F, (n * 3 + 1) * sizeof *nf);
+    if (!nf)
+        return cm_seterr("cannot read '%s': out of memory for %zu faces", r->name, n);
+    r->F = nf;
+    *cap = n;
     return 0;
 }
 
@@ -178,18 +212,44 @@ static uint32_t le32(const unsigned char *b)
     return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
 }
 
+/* Refuse, for a regular file, a header whose counts need far more bytes
+ * than the file has (a lie that would otherwise allocate gigabytes before
+ * the reading finds the truncation).  Plain: at least 8 bytes a face line,
+ * 8 a frame header, 6 a vertex line; raw: 12 a face, 24 a vertex. */
+static int check_size(struct mesh_reader *r, long long avail)
+{
+    double frames = r->nframes > 0 ? r->nframes : 1;
+    double need = r->raw ? 12.0 * r->nf + frames * (24.0 * r->nv + 9)
+                         : 8.0 * r->nf + frames * (6.0 * r->nv + 8);
+    if (avail >= 0 && need > (double)avail && need > SIZE_CHECK_MIN)
+        RERR("truncated: the header announces %d vertices, %d faces, %d frames (at least %.0f bytes), "
+             "but the file has %lld bytes", r->nv, r->nf, r->nframes, need, avail);
+    return 0;
+}
+
 int mesh_reader_open(struct mesh_reader *r, const char *path)
 {
+    if (!path || !strcmp(path, "-"))
+        return mesh_reader_open_stream(r, stdin, "<stdin>", 0);
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        memset(r, 0, sizeof *r);
+        return cm_seterr("cannot read '%s': %s", path, strerror(errno));
+    }
+    return mesh_reader_open_stream(r, f, path, 1);
+}
+
+int mesh_reader_open_stream(struct mesh_reader *r, FILE *f, const char *name, int own)
+{
     memset(r, 0, sizeof *r);
-    if (!path || !strcmp(path, "-")) {
-        r->name = "<stdin>";
-        r->f = stdin;
-    } else {
-        r->name = path;
-        r->f = fopen(path, "rb");
-        if (!r->f)
-            return cm_seterr("cannot read '%s': %s", path, strerror(errno));
-        r->own = 1;
+    r->name = name;
+    r->f = f;
+    r->own = own;
+    long long avail = -1;      /* bytes left in a regular file */
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode)) {
+        long at = ftell(f);
+        avail = (long long)st.st_size - (at > 0 ? at : 0);
     }
     r->cap = 1 << 20;
     r->buf = calloc(r->cap + BUF_PAD, 1);
@@ -208,33 +268,44 @@ int mesh_reader_open(struct mesh_reader *r, const char *path)
                   "use mesh-import for OBJ/OFF/PLY/STL/glTF", r->name, r->line, s);
         goto fail;
     }
-    if (header_count(r, "vertices", 0, &r->nv) < 0 ||
-        header_count(r, "faces", 0, &r->nf) < 0 ||
-        header_count(r, "frames", 1, &r->nframes) < 0)
+    if (header_count(r, "vertices", 0, 0, &r->nv) < 0 ||
+        header_count(r, "faces", 0, 0, &r->nf) < 0 ||
+        header_count(r, "frames", 1, 1, &r->nframes) < 0 ||
+        check_size(r, avail) < 0)
         goto fail;
-    r->F = malloc(((size_t)r->nf * 3 + 1) * sizeof *r->F);
+    /* the faces' storage grows as they arrive: a header count is a claim,
+     * not memory to reserve before the data are seen */
+    size_t fcap = r->nf < 65536 ? (size_t)r->nf : 65536;
+    r->F = malloc((fcap * 3 + 1) * sizeof *r->F);
     if (!r->F) { cm_seterr("cannot read '%s': out of memory", r->name); goto fail; }
     if (r->raw) {
-        unsigned char *tmp = malloc((size_t)r->nf * 12 + 1);
-        int rc = tmp ? read_bytes(r, tmp, (size_t)r->nf * 12) : -1;
-        if (rc <= 0) {
-            free(tmp);
-            if (rc == 0) cm_seterr("cannot read '%s': truncated face block", r->name);
-            goto fail;
-        }
-        for (size_t i = 0; i < (size_t)r->nf * 3; i++) {
-            uint32_t v = le32(tmp + 4 * i);
-            if (v >= (uint32_t)r->nv) {
+        unsigned char *tmp = malloc(65536 * 12);
+        if (!tmp) { cm_seterr("cannot read '%s': out of memory", r->name); goto fail; }
+        for (size_t at = 0; at < (size_t)r->nf; at += 65536) {
+            size_t n = (size_t)r->nf - at < 65536 ? (size_t)r->nf - at : 65536;
+            if (at + n > fcap && grow_faces(r, &fcap, at + n) < 0) { free(tmp); goto fail; }
+            int rc = read_bytes(r, tmp, n * 12);
+            if (rc <= 0) {
                 free(tmp);
-                cm_seterr("cannot read '%s': face %zu: vertex index %u out of range (0..%d)",
-                          r->name, i / 3, v, r->nv - 1);
+                if (rc == 0) cm_seterr("cannot read '%s': truncated face block", r->name);
                 goto fail;
             }
-            r->F[i] = (int)v;
+            for (size_t i = 0; i < n * 3; i++) {
+                uint32_t v = le32(tmp + 4 * i);
+                if (v >= (uint32_t)r->nv) {
+                    free(tmp);
+                    cm_seterr("cannot read '%s': face %zu: vertex index %u out of range (0..%d)",
+                              r->name, (at * 3 + i) / 3, v, r->nv - 1);
+                    goto fail;
+                }
+                r->F[at * 3 + i] = (int)v;
+            }
         }
         free(tmp);
     } else {
         for (int i = 0; i < r->nf; i++) {
+            if ((size_t)i == fcap && grow_faces(r, &fcap, (size_t)r->nf) < 0)
+                goto fail;
             s = next_line(r, &err);
             if (err) goto fail;
             if (!s) { cm_seterr("cannot read '%s': line %ld: truncated: expected %d faces, got %d",
@@ -404,8 +475,12 @@ int mesh_read(const char *path, struct mesh *m)
     memset(m, 0, sizeof *m);
     if (mesh_reader_open(&r, path) < 0)
         return -1;
-    size_t cap = r.nframes > 0 ? (size_t)r.nframes : 16;
     size_t fs = (size_t)r.nv * 3;
+    /* reserve the announced frames, but at most 64 MiB before they are
+     * seen (the storage doubles as frames arrive) */
+    size_t most = ((size_t)64 << 20) / ((fs + 1) * sizeof(double)) + 1;
+    size_t cap = r.nframes > 0 ? (size_t)r.nframes : 16;
+    if (cap > most) cap = most;
     m->nv = r.nv;
     m->nf = r.nf;
     m->F = r.F;
@@ -416,6 +491,7 @@ int mesh_read(const char *path, struct mesh *m)
     for (;;) {
         if ((size_t)m->nframes == cap) {
             cap *= 2;
+            if (r.nframes > 0 && cap > (size_t)r.nframes) cap = (size_t)r.nframes + 1;
             double *nv = realloc(m->V, (cap * fs + 1) * sizeof *m->V);
             unsigned char *nc = realloc(m->cut, cap + 1);
             if (nv) m->V = nv;

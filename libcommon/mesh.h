@@ -67,8 +67,15 @@ struct mesh_reader {
     int eof;
 };
 
-/* Open and read the header and faces. */
+/* Open and read the header and faces.  path NULL or "-" reads stdin.
+ * Limits (stopmo-mesh(5)): text lines of at most 1 MiB, no NUL byte in a
+ * text line, counts up to 200000000, at least one frame; a regular file
+ * whose header announces far more data than it holds (over 16 MiB more)
+ * fails at once as truncated. */
 int mesh_reader_open(struct mesh_reader *r, const char *path);
+/* The same on an open stream f (positioned at the header); `name` is used
+ * in messages; own != 0: mesh_reader_close() closes f. */
+int mesh_reader_open_stream(struct mesh_reader *r, FILE *f, const char *name, int own);
 /* Read the next frame into X (#V by 3); *cut (may be NULL) gets its cut
  * mark.  Returns 1 if a frame was read, 0 at the proper end of the stream,
  * -1 on error (truncated, wrong count, NaN, ...). */

@@ -7,16 +7,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#define MAX_TEMPS 8
-static char *temps[MAX_TEMPS];
-static int registered;
-
-static void remove_temps(void)
-{
-    for (int i = 0; i < MAX_TEMPS; i++)
-        if (temps[i]) { unlink(temps[i]); temps[i] = NULL; }
-}
-
 int mesh_spool_begin(struct mesh_spool *s, const char *path, const struct mesh_reader *r)
 {
     memset(s, 0, sizeof *s);
@@ -37,13 +27,14 @@ int mesh_spool_begin(struct mesh_spool *s, const char *path, const struct mesh_r
         free(s->path); s->path = NULL;
         return -1;
     }
+    /* unlinked at once: the open descriptor keeps the data, and nothing is
+     * left behind however the program ends (a signal, a crash, kill -9) */
+    unlink(s->path);
     s->temp = 1;
-    if (!registered) { atexit(remove_temps); registered = 1; }
-    for (int i = 0; i < MAX_TEMPS; i++)
-        if (!temps[i]) { temps[i] = s->path; break; }
-    s->f = fdopen(fd, "wb");
+    s->f = fdopen(fd, "w+b");
     if (!s->f) { close(fd); return cm_seterr("cannot write temporary '%s': %s", s->path, strerror(errno)); }
-    if (mesh_writer_open(&s->w, s->f, r->nv, r->nf, r->F, -1, 1) < 0) return -1;
+    /* the header's frame count (the first pass checks it) */
+    if (mesh_writer_open(&s->w, s->f, r->nv, r->nf, r->F, r->nframes, 1) < 0) return -1;
     return 0;
 }
 
@@ -57,23 +48,31 @@ int mesh_spool_frame(struct mesh_spool *s, const double *X, int cut)
 
 int mesh_spool_rewind(struct mesh_spool *s, struct mesh_reader *r2)
 {
-    if (s->f) {
+    if (!s->temp)
+        return mesh_reader_open(r2, s->path);
+    if (!s->f)
+        return cm_seterr("internal: no temporary to read back");
+    if (!s->done) {
         int bad = mesh_writer_close(&s->w) < 0;
-        if (fclose(s->f) != 0) bad = 1;
-        s->f = NULL;
+        if (fflush(s->f) != 0 || ferror(s->f)) bad = 1;
         if (bad) return cm_seterr("cannot write temporary '%s' (disk full?)", s->path);
+        s->done = 1;
     }
-    return mesh_reader_open(r2, s->path);
+    /* a second descriptor on the unlinked file, from its start, for r2
+     * (descriptors from dup share the offset: one r2 at a time) */
+    int fd = dup(fileno(s->f));
+    FILE *f = fd >= 0 && lseek(fd, 0, SEEK_SET) == 0 ? fdopen(fd, "rb") : NULL;
+    if (!f) {
+        int e = errno;
+        if (fd >= 0) close(fd);
+        return cm_seterr("cannot read temporary '%s': %s", s->path, strerror(e));
+    }
+    return mesh_reader_open_stream(r2, f, s->path, 1);
 }
 
 void mesh_spool_free(struct mesh_spool *s)
 {
     if (s->f) { fclose(s->f); s->f = NULL; }
-    if (s->temp && s->path) {
-        unlink(s->path);
-        for (int i = 0; i < MAX_TEMPS; i++)
-            if (temps[i] == s->path) temps[i] = NULL;
-    }
     free(s->path);
     s->path = NULL;
 }

@@ -11,6 +11,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 #include <OpenMesh/Core/Mesh/BaseKernel.hh>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -144,7 +145,11 @@ static int slurp(const char *path, std::string &buf, int text)
 struct lines {
     char *p, *end;
     long no;
+    bool toolong;    /* set when a line over MESHIO_LINE_MAX stopped the reading */
 };
+
+/* the longest text line accepted ('\n' not counted), as in the MESH reader */
+static const long MESHIO_LINE_MAX = 1L << 20;
 
 static char *next_line(lines &L)
 {
@@ -152,6 +157,12 @@ static char *next_line(lines &L)
         char *s = L.p;
         char *nl = (char *)memchr(s, '\n', L.end - s);
         char *e = nl ? nl : L.end;
+        if (e - s > MESHIO_LINE_MAX) {
+            L.no++;
+            L.toolong = true;
+            L.p = L.end;
+            return NULL;
+        }
         L.p = nl ? nl + 1 : L.end;
         L.no++;
         *e = '\0';
@@ -164,6 +175,11 @@ static char *next_line(lines &L)
             return s;
     }
     return NULL;
+}
+
+static int too_long(const char *path, const lines &L)
+{
+    return cm_seterr("cannot read '%s': line %ld: line longer than %ld bytes", path, L.no, MESHIO_LINE_MAX);
 }
 
 static int only_blanks(const char *p)
@@ -194,7 +210,7 @@ static int read_obj(const char *path, struct mesh *m)
     if (slurp(path, buf, 1) < 0)
         return -1;
     soup s;
-    lines L = {&buf[0], &buf[0] + buf.size(), 0};
+    lines L = {&buf[0], &buf[0] + buf.size(), 0, false};
     std::vector<int> poly;
     char *ln;
     while ((ln = next_line(L))) {
@@ -246,6 +262,8 @@ static int read_obj(const char *path, struct mesh *m)
                              (int)(kl > 20 ? 20 : kl), ln);
         }
     }
+    if (L.toolong)
+        return too_long(path, L);
     return soup_to_mesh(s, path, m);
 }
 
@@ -267,8 +285,10 @@ static int read_off(const char *path, struct mesh *m)
     if (slurp(path, buf, 1) < 0)
         return -1;
     soup s;
-    lines L = {&buf[0], &buf[0] + buf.size(), 0};
+    lines L = {&buf[0], &buf[0] + buf.size(), 0, false};
     char *ln = next_line(L);
+    if (L.toolong)
+        return too_long(path, L);
     size_t kl = ln ? strcspn(ln, " \t") : 0;
     if (!ln || !off_keyword(ln, kl))
         return cm_seterr("cannot read '%s': line %ld: not an OFF file (expected 'OFF')", path, L.no ? L.no : 1);
@@ -278,6 +298,8 @@ static int read_off(const char *path, struct mesh *m)
         return cm_seterr("cannot read '%s': binary OFF is not supported", path);
     if (!*p) {
         p = next_line(L);
+        if (L.toolong)
+            return too_long(path, L);
         if (!p)
             return cm_seterr("cannot read '%s': line %ld: missing vertex and face counts", path, L.no);
     }
@@ -287,9 +309,13 @@ static int read_off(const char *path, struct mesh *m)
     if (q && !only_blanks(q)) q = parse_long(q, &ne);
     if (!q || !only_blanks(q) || nv < 0 || nf < 0 || nv > MAX_ELEMENTS || nf > MAX_ELEMENTS)
         return cm_seterr("cannot read '%s': line %ld: expected 'vertices faces edges' counts", path, L.no);
-    s.V.reserve(3 * nv);
+    /* reserve what the file can hold (a vertex line has at least 6
+     * bytes), not what the header claims */
+    s.V.reserve(3 * (size_t)std::min(nv, (long)(buf.size() / 6)));
     for (long i = 0; i < nv; i++) {
         p = next_line(L);
+        if (L.toolong)
+            return too_long(path, L);
         if (!p)
             return cm_seterr("cannot read '%s': line %ld: expected %ld vertices, found %ld", path, L.no, nv, i);
         double x[3];
@@ -306,6 +332,8 @@ static int read_off(const char *path, struct mesh *m)
     std::vector<int> poly;
     for (long f = 0; f < nf; f++) {
         p = next_line(L);
+        if (L.toolong)
+            return too_long(path, L);
         if (!p)
             return cm_seterr("cannot read '%s': line %ld: expected %ld faces, found %ld", path, L.no, nf, f);
         long n;
@@ -434,13 +462,123 @@ public:
     }
 };
 
+/* Check a PLY header before OpenMesh sees it: OpenMesh 9 crashes on a
+ * property before any element and loops forever on a header without
+ * end_header.  The counts must fit the bytes after the header (binary: each
+ * element at least its fixed-size properties and list counts; ascii: at
+ * least 2 bytes a property), so no reservation exceeds the file. */
+static int ply_check(const std::string &b, const char *path)
+{
+    static const char *const types[] = {"char", "uchar", "short", "ushort", "int", "uint", "float",
+                                        "double", "int8", "uint8", "int16", "uint16", "int32",
+                                        "uint32", "float32", "float64", NULL};
+    static const int tsize[] = {1, 1, 2, 2, 4, 4, 4, 8, 1, 1, 2, 2, 4, 4, 4, 8};
+    auto type_size = [&](const std::string &t) {
+        for (int i = 0; types[i]; i++)
+            if (t == types[i]) return tsize[i];
+        return 0;
+    };
+    struct elem { std::string name; long count; long minsize; int nprops; bool x, y, z, list; };
+    std::vector<elem> E;
+    size_t at = 0;
+    long no = 0;
+    bool ascii = false, ended = false;
+    std::string why;
+    while (!ended && at < b.size()) {
+        size_t nl = b.find('\n', at);
+        if (nl == std::string::npos) break;
+        if (nl - at > 4096 || at > 1 << 20) { why = "header line too long or header too big"; break; }
+        std::string line = b.substr(at, nl - at);
+        at = nl + 1;
+        no++;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream ls(line);
+        std::string key;
+        ls >> key;
+        if (no == 1) {
+            if (key != "ply" || !(ls >> std::ws).eof()) { why = "no 'ply' magic"; break; }
+            continue;
+        }
+        if (no == 2) {
+            std::string fmt, ver;
+            if (key != "format" || !(ls >> fmt >> ver) || ver != "1.0" ||
+                (fmt != "ascii" && fmt != "binary_little_endian" && fmt != "binary_big_endian")) {
+                why = "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'";
+                break;
+            }
+            ascii = fmt == "ascii";
+            continue;
+        }
+        if (key == "comment" || key == "obj_info") continue;
+        if (key == "end_header") { ended = true; break; }
+        if (key == "element") {
+            std::string name, extra;
+            long n;
+            if (!(ls >> name >> n) || n < 0 || n > MAX_ELEMENTS || (ls >> extra)) {
+                why = "bad element line";
+                break;
+            }
+            E.push_back({name, n, 0, 0, false, false, false, false});
+            continue;
+        }
+        if (key == "property") {
+            if (E.empty()) { why = "a property before any element"; break; }
+            std::string t, name, it, extra;
+            if (!(ls >> t)) { why = "bad property line"; break; }
+            elem &e = E.back();
+            if (t == "list") {
+                if (!(ls >> t >> it >> name) || !type_size(t) || !type_size(it) || (ls >> extra)) {
+                    why = "bad list property";
+                    break;
+                }
+                e.minsize += type_size(t);
+                e.list = true;
+            } else {
+                if (!(ls >> name) || !type_size(t) || (ls >> extra)) { why = "bad property line"; break; }
+                e.minsize += type_size(t);
+            }
+            e.nprops++;
+            if (name == "x") e.x = true;
+            if (name == "y") e.y = true;
+            if (name == "z") e.z = true;
+            continue;
+        }
+        why = "unknown header line '" + line.substr(0, 20) + "'";
+        break;
+    }
+    if (why.empty() && !ended) why = "no end_header";
+    if (!why.empty())
+        return cm_seterr("cannot read '%s': not a valid PLY file (header line %ld: %s)", path, no, why.c_str());
+    double need = 0;
+    bool vertex = false;
+    for (const elem &e : E) {
+        if (e.nprops == 0)
+            return cm_seterr("cannot read '%s': not a valid PLY file (element '%s' has no property)", path,
+                             e.name.c_str());
+        if (e.name == "vertex") {
+            vertex = true;
+            if (!e.x || !e.y || !e.z)
+                return cm_seterr("cannot read '%s': not a valid PLY file (vertex element without x, y, z)", path);
+        }
+        if (e.name == "face" && e.count > 0 && !e.list)
+            return cm_seterr("cannot read '%s': not a valid PLY file (face element without a list)", path);
+        need += (double)e.count * (ascii ? 2.0 * e.nprops : (double)e.minsize);
+    }
+    if (!vertex)
+        return cm_seterr("cannot read '%s': not a valid PLY file (no vertex element)", path);
+    if (need > (double)(b.size() - at))
+        return cm_seterr("cannot read '%s': truncated: the PLY header announces at least %.0f bytes of data, "
+                         "the file has %zu", path, need, b.size() - at);
+    return 0;
+}
+
 static int read_openmesh(const char *path, int fmt, struct mesh *m)
 {
     std::string buf;
     if (slurp(path, buf, 0) < 0)
         return -1;
-    if (fmt == MESHIO_PLY && buf.compare(0, 3, "ply"))
-        return cm_seterr("cannot read '%s': not a PLY file (no 'ply' magic)", path);
+    if (fmt == MESHIO_PLY && ply_check(buf, path) < 0)
+        return -1;
     if (fmt == MESHIO_STL && buf.size() < 15)
         return cm_seterr("cannot read '%s': not an STL file (too short)", path);
     SoupImporter imp;
@@ -461,6 +599,8 @@ static int read_openmesh(const char *path, int fmt, struct mesh *m)
         std::istringstream in(buf);
         ok = OpenMesh::IO::IOManager().read(in, fmt == MESHIO_PLY ? "ply" : "stl", imp, opt);
         said = cap.first();
+    } catch (const std::bad_alloc &) {
+        return cm_seterr("cannot read '%s': out of memory", path);
     } catch (const std::exception &e) {
         return cm_seterr("cannot read '%s': %s", path, e.what());
     }
@@ -481,13 +621,19 @@ extern "C" int meshio_read(const char *path, int fmt, struct mesh *m)
     memset(m, 0, sizeof *m);
     if (fmt == MESHIO_NONE)
         fmt = meshio_format_from_name(path);
-    switch (fmt) {
-    case MESHIO_OBJ: return read_obj(path, m);
-    case MESHIO_OFF: return read_off(path, m);
-    case MESHIO_PLY:
-    case MESHIO_STL: return read_openmesh(path, fmt, m);
-    default:
-        return cm_seterr("cannot read '%s': unknown mesh format (expected .obj, .off, .ply or .stl)", path);
+    /* a C caller gets no exception: out of memory is an error message */
+    try {
+        switch (fmt) {
+        case MESHIO_OBJ: return read_obj(path, m);
+        case MESHIO_OFF: return read_off(path, m);
+        case MESHIO_PLY:
+        case MESHIO_STL: return read_openmesh(path, fmt, m);
+        default:
+            return cm_seterr("cannot read '%s': unknown mesh format (expected .obj, .off, .ply or .stl)", path);
+        }
+    } catch (const std::bad_alloc &) {
+        mesh_free(m);
+        return cm_seterr("cannot read '%s': out of memory", path);
     }
 }
 

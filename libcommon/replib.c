@@ -884,7 +884,7 @@ static int bcd(const struct replib_data *D, const struct replib_opts *o, struct 
         double tl = wall();
         double En = label_step(w, o->method, ln, 1);
         out->label_seconds += wall() - tl;
-        if (isnan(En)) return -1;
+        if (isnan(En)) return cm_seterr("replib: the energy is not a number (squared coordinate differences overflow: scale the input down, e.g. with mesh-normalize)");
         it->changed = 0;
         for (int f = 0; f < n; f++) it->changed += ln[f] != l[f];
         memcpy(l, ln, sizeof(int) * n);
@@ -1005,7 +1005,7 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
         double tl = wall();
         E = label_step(w, o->method, l, 0);
         out->label_seconds += wall() - tl;
-        if (isnan(E)) { out->rc = -1; return; }
+        if (isnan(E)) { out->rc = cm_seterr("replib: the energy is not a number (squared coordinate differences overflow: scale the input down, e.g. with mesh-normalize)"); return; }
         it.energy = E;
         chain_energy(&w->ch, l, &it.data, &it.velocity);
         it.changed = n;
@@ -1046,9 +1046,20 @@ struct worker {
     int *next;                  /* shared restart counter */
     pthread_mutex_t *lock;
     int rc;
+    char msg[512];              /* the worker's error (cm_errmsg is per thread) */
 };
 
+static void *worker_run(void *arg);
+
 static void *worker_main(void *arg)
+{
+    struct worker *wk = arg;
+    worker_run(arg);
+    if (wk->rc) snprintf(wk->msg, sizeof wk->msg, "%s", cm_errmsg());
+    return NULL;
+}
+
+static void *worker_run(void *arg)
 {
     struct worker *wk = arg;
     const struct replib_data *D = wk->D;
@@ -1111,7 +1122,7 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
     int blas_threads = openblas_get_num_threads();
     openblas_set_num_threads(1);
     for (int t = 0; t < nth; t++) {
-        wk[t] = (struct worker){D, o, out, restarts, &next, &lock, 0};
+        wk[t] = (struct worker){D, o, out, restarts, &next, &lock, 0, {0}};
         if (t == nth - 1 || pthread_create(&th[t], NULL, worker_main, &wk[t]) != 0) {
             worker_main(&wk[t]);     /* the last one (or a failed spawn) runs here */
             if (t != nth - 1) continue;
@@ -1140,7 +1151,9 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
         memcpy(res->labels, out[best].labels, sizeof(int) * n);
         if (lstate_apply(&out[best].s, D->X, n, D->Rfix, m3, res->R) < 0) rc = -1;
     } else {
-        cm_seterr("replib: out of memory in the block coordinate descent");
+        const char *why = "";
+        for (int t = 0; t < nth && !*why; t++) if (wk[t].rc) why = wk[t].msg;
+        cm_seterr("%s", *why ? why : "replib: out of memory in the block coordinate descent");
     }
     for (int rs = 0; rs < restarts; rs++) {
         free(out[rs].labels); free(out[rs].log);

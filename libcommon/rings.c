@@ -2,6 +2,7 @@
 #include "rings.h"
 #include "cm_error.h"
 #include "numparse.h"
+#include "textline.h"
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -65,8 +66,10 @@ int rings_read(const char *path, struct rings *r)
     int want = 0, got = 0;   /* points announced / read in the current ring */
     int total = 0, ok = 0;
     long hdrline = 0;
+    size_t pcap = 0;         /* points P and line have room for */
     for (;;) {
-        ssize_t n = getline(&buf, &cap, f);
+        long n = textline_read(f, &buf, &cap, r->name, lineno + 1);
+        if (n == -2) goto out;
         if (n < 0) break;
         lineno++;
         char *s = skip(buf);
@@ -89,7 +92,12 @@ int rings_read(const char *path, struct rings *r)
                 goto out;
             }
             if (r->nrings) r->start[r->nrings] = total;
-            if (grow(r, (int)k) < 0) goto out;
+            /* room for the ring's header only: its points are reserved as
+             * they arrive, not from the announced count */
+            int *st = realloc(r->start, (size_t)(r->nrings + 2) * sizeof *st);
+            if (!st) { cm_seterr("cannot read '%s': out of memory", r->name); goto out; }
+            r->start = st;
+            if (r->nrings == 0) r->start[0] = 0;
             r->start[r->nrings + 1] = total;  /* placeholder, fixed as points arrive */
             r->nrings++;
             want = (int)k; got = 0; hdrline = lineno;
@@ -119,15 +127,20 @@ int rings_read(const char *path, struct rings *r)
             cm_seterr("cannot read '%s': line %ld: repeated point (zero-length edge)", r->name, lineno);
             goto out;
         }
+        if ((size_t)total + 1 >= pcap) {
+            size_t nc = 2 * pcap + 16;
+            double *P = realloc(r->P, 2 * nc * sizeof *P);
+            if (P) r->P = P;
+            long *L = P ? realloc(r->line, nc * sizeof *L) : NULL;
+            if (!P || !L) { cm_seterr("cannot read '%s': out of memory", r->name); goto out; }
+            r->line = L;
+            pcap = nc;
+        }
         r->P[2 * total] = x;
         r->P[2 * total + 1] = y;
         r->line[total] = lineno;
         total++; got++;
         r->start[r->nrings] = total;
-    }
-    if (ferror(f)) {
-        cm_seterr("cannot read '%s': %s", r->name, strerror(errno));
-        goto out;
     }
     if (r->nrings == 0) {
         cm_seterr("cannot read '%s': line %ld: no rings", r->name, lineno);

@@ -1,7 +1,10 @@
 /* tool.c -- see tool.h */
 #include "tool.h"
 #include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,15 +15,31 @@ const char *progname = "stopmo";
 int verbose = 0;
 
 #define MAX_OUTS 256
-static struct { FILE *f; char *tmp; char *path; } outs[MAX_OUTS];
+/* tmp is read by the signal handler: it is set only once the name is
+ * complete, and cleared before it is freed */
+static struct { FILE *f; char *volatile tmp; char *path; } outs[MAX_OUTS];
+static mode_t file_mode = 0644;   /* 0666 less the umask */
 
 static void remove_temporaries(void)
 {
-    for (int i = 0; i < MAX_OUTS; i++)
-        if (outs[i].tmp) {
-            unlink(outs[i].tmp);
+    for (int i = 0; i < MAX_OUTS; i++) {
+        char *t = outs[i].tmp;
+        if (t) {
             outs[i].tmp = NULL;
+            unlink(t);
         }
+    }
+}
+
+/* SIGINT, SIGTERM, SIGHUP, SIGPIPE: remove the temporaries (unlink is
+ * async-signal-safe), then die of the signal as if there were no handler */
+static void on_signal(int sig)
+{
+    for (int i = 0; i < MAX_OUTS; i++)
+        if (outs[i].tmp)
+            unlink(outs[i].tmp);
+    signal(sig, SIG_DFL);
+    raise(sig);
 }
 
 void tool_init(int argc, char **argv)
@@ -29,6 +48,19 @@ void tool_init(int argc, char **argv)
     const char *s = strrchr(argv[0], '/');
     progname = s ? s + 1 : argv[0];
     atexit(remove_temporaries);
+    mode_t um = umask(0);
+    umask(um);
+    file_mode = 0666 & ~um;
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+    for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++) {
+        struct sigaction sa, old;
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue;           /* ignored by the parent (nohup, SIGPIPE): keep it so */
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[i], &sa, NULL);
+    }
 }
 
 static void vmsg(const char *prefix, const char *fmt, va_list ap)
@@ -108,6 +140,23 @@ long arg_long(const char *s, const char *what)
     return v;
 }
 
+int arg_int_range(const char *s, const char *what, long lo, long hi)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (end == s || *end || (errno && errno != ERANGE))
+        usage_error("%s: '%s' is not an integer", what, s);
+    if (errno == ERANGE || v < lo || v > hi)
+        usage_error("%s: %s is out of range (%ld..%ld)", what, s, lo, hi);
+    return (int)v;
+}
+
+int arg_int(const char *s, const char *what)
+{
+    return arg_int_range(s, what, INT_MIN, INT_MAX);
+}
+
 int arg_intlist(const char *s, const char *what, int **out)
 {
     int n = 0, cap = 8;
@@ -119,6 +168,8 @@ int arg_intlist(const char *s, const char *what, int **out)
         long x = strtol(p, &end, 10);
         if (end == p || errno || (*end && *end != ','))
             usage_error("%s: '%s' is not a comma separated list of integers", what, s);
+        if (x < INT_MIN || x > INT_MAX)
+            usage_error("%s: %ld is out of range (%d..%d)", what, x, INT_MIN, INT_MAX);
         if (n == cap)
             v = realloc(v, (cap *= 2) * sizeof *v);
         v[n++] = (int)x;
@@ -152,17 +203,25 @@ FILE *out_open(const char *path)
     }
     for (int i = 0; i < MAX_OUTS; i++)
         if (!outs[i].f) {
-            size_t n = strlen(path) + 32;
-            outs[i].tmp = malloc(n);
-            snprintf(outs[i].tmp, n, "%s.tmp%ld", path, (long)getpid());
-            outs[i].path = strdup(path);
-            outs[i].f = fopen(outs[i].tmp, "wb");
-            if (!outs[i].f) {
+            /* mkstemp: a new file of our own (O_EXCL), never a planted link */
+            size_t n = strlen(path) + 16;
+            char *tmp = malloc(n);
+            if (!tmp)
+                die("out of memory");
+            snprintf(tmp, n, "%s.tmpXXXXXX", path);
+            int fd = mkstemp(tmp);
+            if (fd < 0) {
                 int e = errno;
-                free(outs[i].tmp);
-                outs[i].tmp = NULL;
+                free(tmp);
                 die("cannot write '%s': %s", path, strerror(e));
             }
+            outs[i].tmp = tmp;
+            if (fchmod(fd, file_mode) != 0 || !(outs[i].f = fdopen(fd, "wb"))) {
+                int e = errno;
+                close(fd);
+                die("cannot write '%s': %s", path, strerror(e));
+            }
+            outs[i].path = strdup(path);
             return outs[i].f;
         }
     die("too many output files open");
@@ -180,15 +239,52 @@ void out_close(FILE *f)
             int bad = ferror(f) | fflush(f);
             if (fclose(f) != 0 || bad)
                 die("cannot write '%s': %s", outs[i].path, strerror(errno));
-            if (outs[i].tmp && rename(outs[i].tmp, outs[i].path) != 0)
+            char *tmp = outs[i].tmp;
+            if (tmp && rename(tmp, outs[i].path) != 0)
                 die("cannot rename to '%s': %s", outs[i].path, strerror(errno));
-            free(outs[i].tmp);
+            outs[i].tmp = NULL;
+            free(tmp);
             free(outs[i].path);
-            outs[i].tmp = outs[i].path = NULL;
+            outs[i].path = NULL;
             outs[i].f = NULL;
             return;
         }
     die("internal: out_close on unknown file");
+}
+
+int pattern_check(const char *s, const char *what, int need)
+{
+    int n = 0;
+    for (const char *p = s; *p; p++) {
+        if (*p != '%') continue;
+        if (p[1] == '%') { p++; continue; }
+        p++;
+        while (*p == '0' || *p == '-') p++;
+        int width = 0;
+        while (*p >= '0' && *p <= '9') {
+            width = width * 10 + (*p++ - '0');
+            if (width > 32)
+                usage_error("%s: '%s': a field width of at most 32", what, s);
+        }
+        if (*p != 'd' && *p != 'i')
+            usage_error("%s: '%s': only %%d (with a width) and %%%% are allowed in a pattern", what, s);
+        n++;
+    }
+    if (n > 1)
+        usage_error("%s: '%s': more than one %%d", what, s);
+    if (need && n != 1)
+        usage_error("%s: '%s' needs exactly one %%d", what, s);
+    return n;
+}
+
+char *pattern_format(const char *pattern, int k)
+{
+    int n = snprintf(NULL, 0, pattern, k);
+    char *s = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    if (!s)
+        die("cannot format the file name pattern '%s'", pattern);
+    snprintf(s, (size_t)n + 1, pattern, k);
+    return s;
 }
 
 int want_raw(int raw_flag)

@@ -40,6 +40,11 @@ void print_version_and_exit(void) __attribute__((noreturn));
  * `what` names the option in the message. */
 double arg_double(const char *s, const char *what);
 long arg_long(const char *s, const char *what);
+/* An integer option in [lo, hi]: usage_error() naming the range when it
+ * lies outside (no silent wrap of "4294967304" to 8).  arg_int() is the
+ * same over the whole range of int. */
+int arg_int_range(const char *s, const char *what, long lo, long hi);
+int arg_int(const char *s, const char *what);
 /* Parse a comma separated list of integers into *out (malloc'd); returns
  * the count. */
 int arg_intlist(const char *s, const char *what, int **out);
@@ -53,11 +58,23 @@ const char *arg_labels_and_input(int argc, char **argv, const char *labels);
 
 /* Output file handling with "nothing half-written":
  * out_open(NULL or "-") returns stdout; otherwise a temporary file next to
- * `path` that out_close() renames into place only on success.  If the
- * program dies before out_close(), the temporary is removed (atexit). */
+ * `path` (mkstemp: "PATH.tmpXXXXXX", created exclusively, so a planted
+ * symlink is never followed; mode 0666 less the umask) that out_close()
+ * renames into place only on success.  If the program dies before
+ * out_close(), the temporary is removed: at exit, and on SIGINT, SIGTERM,
+ * SIGHUP and SIGPIPE (tool_init installs the handlers). */
 FILE *out_open(const char *path);
 /* Flush and close; rename the temporary; die on any write error. */
 void out_close(FILE *f);
+
+/* Output name patterns ("part_%d.mesh", "frame_%04d.obj"): at most
+ * `max` (1: exactly one if `need`) integer conversions %d or %i, with an
+ * optional '0' or '-' flag and a width of at most 32, and otherwise only
+ * %% escapes; usage_error() naming `what` otherwise.  Returns the number
+ * of conversions (0 or 1). */
+int pattern_check(const char *pattern, const char *what, int need);
+/* The pattern with k in place of its conversion (malloc'd). */
+char *pattern_format(const char *pattern, int k);
 
 /* Want raw (binary) MESH output?  --raw flag or STOPMO_RAW=1 in the
  * environment. */

@@ -125,11 +125,11 @@ static void parse_args(int argc, char **argv, struct options *o)
             continue;
         switch (c) {
         case O_FRAMES: o->sel = SEL_LIST; nsel++; o->nlist = arg_intlist(optarg, "--frames", &o->list); break;
-        case O_EVERY: o->sel = SEL_EVERY; nsel++; o->every = (int)arg_long(optarg, "--every"); break;
-        case 'n': o->sel = SEL_COUNT; nsel++; o->count = (int)arg_long(optarg, "--count"); break;
+        case O_EVERY: o->sel = SEL_EVERY; nsel++; o->every = arg_int(optarg, "--every"); break;
+        case 'n': o->sel = SEL_COUNT; nsel++; o->count = arg_int(optarg, "--count"); break;
         case O_ALL: o->sel = SEL_ALL; nsel++; break;
         case 'C':
-            o->columns = (int)arg_long(optarg, "--columns");
+            o->columns = arg_int(optarg, "--columns");
             if (o->columns < 1)
                 usage_error("--columns must be at least 1");
             break;
@@ -137,7 +137,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             if (image_parse_size(optarg, &o->w, &o->h) < 0)
                 usage_error("--size: '%s' is not WxH (e.g. 320x240, at most 16384)", optarg);
             break;
-        case O_GAP: o->gap = (int)arg_long(optarg, "--gap"); break;
+        case O_GAP: o->gap = arg_int(optarg, "--gap"); break;
         case 't': o->titles_arg = optarg; break;
         case O_NOSTAMP: o->stamp = 0; break;
         case O_EACH: o->each = optarg; break;

@@ -61,7 +61,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         switch (c) {
         case 'f': o->spec = optarg; break;
         case 'c':
-            o->clip = (int)arg_long(optarg, "--clip");
+            o->clip = arg_int(optarg, "--clip");
             if (o->clip < 0) usage_error("--clip must be >= 0");
             break;
         case 'o': o->output = optarg; break;

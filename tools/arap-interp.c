@@ -49,7 +49,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     int c;
     while ((c = getopt_long(argc, argv, "n:t:o:vh", lo, NULL)) != -1) {
         switch (c) {
-        case 'n': o->steps = (int)arg_long(optarg, "--steps"); break;
+        case 'n': o->steps = arg_int(optarg, "--steps"); break;
         case 't': o->t = arg_double(optarg, "--time"); o->have_t = 1; break;
         case 'o': o->output = optarg; break;
         case 'R': o->raw = 1; break;

@@ -48,7 +48,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     int c;
     while ((c = getopt_long(argc, argv, "b:lo:vh", lo, NULL)) != -1) {
         switch (c) {
-        case 'b': o->base = (int)arg_long(optarg, "--base"); break;
+        case 'b': o->base = arg_int(optarg, "--base"); break;
         case 'l': o->shear = 1; break;
         case 'L': o->linear = 1; break;
         case 'S': o->sigma = arg_double(optarg, "--sigma"); break;

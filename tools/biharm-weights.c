@@ -45,7 +45,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'e': o->eps = arg_double(optarg, "--epsilon"); break;
         case 'm': o->margin = arg_double(optarg, "--margin"); break;
         case 's': o->size = arg_double(optarg, "--size"); break;
-        case 'g': o->grid = (int)arg_long(optarg, "--grid"); break;
+        case 'g': o->grid = arg_int(optarg, "--grid"); break;
         case 'v': verbose++; break;
         case 'o': o->output = optarg; break;
         case 'h': print_help_and_exit(help);

@@ -77,8 +77,8 @@ int main(int argc, char **argv)
         switch (c) {
         case 'l': lmfile = optarg; break;
         case 'k': kfile = optarg; break;
-        case 'n': steps = (int)arg_long(optarg, "--steps"); break;
-        case 'i': iters = (int)arg_long(optarg, "--iters"); break;
+        case 'n': steps = arg_int(optarg, "--steps"); break;
+        case 'i': iters = arg_int(optarg, "--iters"); break;
         case O_LAMBDA: lambda = arg_double(optarg, "--lambda"); break;
         case O_HAUS: haus = arg_double(optarg, "--hausdorff"); break;
         case O_NOVOL: keepvol = 0; break;

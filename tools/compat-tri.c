@@ -57,7 +57,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'c': o->corr = optarg; break;
         case 'e': o->err = arg_double(optarg, "--error"); break;
         case 'l': o->edge = arg_double(optarg, "--edge-length"); break;
-        case 's': o->smooth = (int)arg_long(optarg, "--smooth"); break;
+        case 's': o->smooth = arg_int(optarg, "--smooth"); break;
         case 'R': o->raw = 1; break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;

@@ -87,10 +87,10 @@ static void parse_args(int argc, char **argv, struct options *o)
     int c;
     while ((c = getopt_long(argc, argv, "d:l:r:i:w:m:o:vh", lo, NULL)) != -1) {
         switch (c) {
-        case 'd': o->d = (int)arg_long(optarg, "--pieces"); break;
+        case 'd': o->d = arg_int(optarg, "--pieces"); break;
         case 'l': o->lambda = arg_double(optarg, "--lambda"); break;
-        case 'r': o->restarts = (int)arg_long(optarg, "--restarts"); break;
-        case 'i': o->iterations = (int)arg_long(optarg, "--iterations"); break;
+        case 'r': o->restarts = arg_int(optarg, "--restarts"); break;
+        case 'i': o->iterations = arg_int(optarg, "--iterations"); break;
         case 'S': o->seed = arg_long(optarg, "--seed"); break;
         case 'w': o->weights = optarg; break;
         case 'F': o->fixed = optarg; break;
@@ -115,7 +115,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             else if (!strcmp(optarg, "full")) o->gram = 3;
             else usage_error("--gram: '%s' is not auto, on, full, single or off", optarg);
             break;
-        case 'T': o->threads = (int)arg_long(optarg, "--threads");
+        case 'T': o->threads = arg_int(optarg, "--threads");
             if (o->threads < 0) usage_error("--threads must be >= 0");
             break;
         case 's':

@@ -37,7 +37,7 @@ int main(int argc, char **argv)
     const char *output = NULL;
     while ((c = getopt_long(argc, argv, "n:t:o:vh", lo, NULL)) != -1) {
         switch (c) {
-        case 'n': steps = (int)arg_long(optarg, "--steps"); break;
+        case 'n': steps = arg_int(optarg, "--steps"); break;
         case 't': tt = arg_double(optarg, "--time"); have_t = 1; break;
         case 'o': output = optarg; break;
         case 'R': raw = 1; break;

@@ -54,10 +54,10 @@ int main(int argc, char **argv)
         case O_NOFILL: o.fill_holes = 0; break;
         case O_NOUNF: unfold = 0; break;
         case O_MINC: o.min_component = arg_double(optarg, "--min-component"); break;
-        case O_MAXHOLE: o.max_hole = (int)arg_long(optarg, "--max-hole"); break;
+        case O_MAXHOLE: o.max_hole = arg_int(optarg, "--max-hole"); break;
         case 'r': o.edge_length = arg_double(optarg, "--remesh"); break;
         case 'R': rel = arg_double(optarg, "--remesh-rel"); break;
-        case O_ITER: o.iterations = (int)arg_long(optarg, "--iterations"); break;
+        case O_ITER: o.iterations = arg_int(optarg, "--iterations"); break;
         case 'o': output = optarg; break;
         case O_RAW: raw = 1; break;
         case 'v': verbose++; break;

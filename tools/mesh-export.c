@@ -65,27 +65,6 @@ struct options {
     int np;
 };
 
-/* A printf pattern with exactly one integer conversion (%d, %04d, %5d)
- * and otherwise only %% escapes?  1 yes, 0 no % at all; usage error if
- * malformed. */
-static int check_pattern(const char *s)
-{
-    int n = 0;
-    for (const char *p = s; *p; p++) {
-        if (*p != '%') continue;
-        if (p[1] == '%') { p++; continue; }
-        p++;
-        while (*p == '0' || *p == '-') p++;
-        while (*p >= '0' && *p <= '9') p++;
-        if (*p != 'd')
-            usage_error("--output: '%s': only %%d (with width) and %%%% are allowed in a pattern", s);
-        n++;
-    }
-    if (n > 1)
-        usage_error("--output: '%s': more than one %%d", s);
-    return n;
-}
-
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
@@ -141,7 +120,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     } else {
         o->fmt = MESHIO_OBJ;
     }
-    o->pattern = o->output ? check_pattern(o->output) : 0;
+    o->pattern = o->output ? pattern_check(o->output, "--output", 0) : 0;
     if (o->pattern && o->frame >= 0)
         usage_error("give either --frame K or a %%d pattern, not both");
     if (o->np) {
@@ -366,16 +345,14 @@ int main(int argc, char **argv)
         struct progress p;
         progress_start(&p, "mesh-export", r.nframes);
         int k = 0, got;
-        size_t n = strlen(o.output) + 32;
-        char *name = malloc(n);
         while ((got = mesh_reader_next(&r, X, NULL)) == 1) {
-            snprintf(name, n, o.output, k);
+            char *name = pattern_format(o.output, k);
             write_one(&o, name, &r, X);
+            free(name);
             progress_step(&p, ++k);
         }
         progress_end(&p);
         if (got < 0) die("%s", cm_errmsg());
-        free(name);
         info(1, "wrote %d %s file%s, %d vertices, %d triangles, %.2f s", k,
              o.gltf ? (o.gltf == GLTF_BINARY ? "glb" : "gltf") : meshio_format_name(o.fmt),
              k == 1 ? "" : "s", r.nv, r.nf, now_seconds() - t0);

@@ -54,14 +54,14 @@ static void parse_args(int argc, char **argv, struct options *o)
     int c;
     while ((c = getopt_long(argc, argv, "n:m:s:f:a:h", lo, NULL)) != -1) {
         switch (c) {
-        case 'n': o->n = (int)arg_long(optarg, "--resolution"); break;
-        case 'm': o->m = (int)arg_long(optarg, "--rings"); break;
-        case 's': o->subdiv = (int)arg_long(optarg, "--subdiv"); break;
+        case 'n': o->n = arg_int(optarg, "--resolution"); break;
+        case 'm': o->m = arg_int(optarg, "--rings"); break;
+        case 's': o->subdiv = arg_int(optarg, "--subdiv"); break;
         case 'C': o->caps = 1; break;
-        case 'f': o->frames = (int)arg_long(optarg, "--frames"); break;
+        case 'f': o->frames = arg_int(optarg, "--frames"); break;
         case 'a': o->anim = optarg; break;
         case 'A': o->amount = arg_double(optarg, "--amount"); break;
-        case 'K': o->cut_every = (int)arg_long(optarg, "--cut-every"); break;
+        case 'K': o->cut_every = arg_int(optarg, "--cut-every"); break;
         case 'R': o->raw = 1; break;
         case 'h': print_help_and_exit(help);
         case 'V': print_version_and_exit();

@@ -184,6 +184,9 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->nfiles == 0)
         die("cannot read '%s': no file names in it", o->list);
     for (int i = 0; i < o->nfiles; i++)
+        if (strcmp(o->files[i], "-") && !file_exists(o->files[i]))
+            die("cannot read '%s': %s", o->files[i], strerror(errno));   /* before any format guess */
+    for (int i = 0; i < o->nfiles; i++)
         if (!strcmp(o->files[i], "-")) {
             if (!o->format || !meshio_format_parse(o->format))
                 usage_error("reading stdin ('-') needs --format obj, off, ply or stl");

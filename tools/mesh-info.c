@@ -11,6 +11,7 @@
 #include "numparse.h"
 #include "tool.h"
 #include "cm_error.h"
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -144,6 +145,49 @@ static void put(const char *key, double x)
     printf("%s %s\n", key, b);
 }
 
+/* A derived quantity (diagonal, area, volume) of finite coordinates that
+ * double arithmetic over- or underflowed (extents near 1e308 or 1e-300):
+ * computed again in long double (range 1e+-4932) and printed from it. */
+static void put_robust(const char *key, double x, long double exact)
+{
+    if (isfinite(x) && (x == 0 ? exact == 0 : fabs(x) >= DBL_MIN)) {
+        put(key, x);
+        return;
+    }
+    printf("%s %.17Lg\n", key, exact);
+}
+
+static long double diag_ld(const double *lo, const double *hi)
+{
+    long double s = 0;
+    for (int d = 0; d < 3; d++) {
+        long double e = (long double)hi[d] - lo[d];
+        s += e * e;
+    }
+    return sqrtl(s);
+}
+
+/* area (what = 0) or volume (what = 1) of the triangles */
+static long double measure_ld(const double *X, const int *F, int nf, int what)
+{
+    long double sum = 0;
+    for (int f = 0; f < nf; f++) {
+        const double *a = X + 3 * F[3 * f], *b = X + 3 * F[3 * f + 1], *c = X + 3 * F[3 * f + 2];
+        if (what) {   /* signed tetrahedron volumes against the origin */
+            sum += ((long double)a[0] * ((long double)b[1] * c[2] - (long double)b[2] * c[1]) -
+                    (long double)a[1] * ((long double)b[0] * c[2] - (long double)b[2] * c[0]) +
+                    (long double)a[2] * ((long double)b[0] * c[1] - (long double)b[1] * c[0])) / 6;
+            continue;
+        }
+        long double u[3], v[3];
+        for (int d = 0; d < 3; d++) { u[d] = (long double)b[d] - a[d]; v[d] = (long double)c[d] - a[d]; }
+        long double n0 = u[1] * v[2] - u[2] * v[1], n1 = u[2] * v[0] - u[0] * v[2],
+                    n2 = u[0] * v[1] - u[1] * v[0];
+        sum += 0.5L * sqrtl(n0 * n0 + n1 * n1 + n2 * n2);
+    }
+    return sum;
+}
+
 static void put3(const char *key, const double *x)
 {
     char b[3][40];
@@ -223,10 +267,13 @@ int main(int argc, char **argv)
     put3("bbox_min", lo);
     put3("bbox_max", hi);
     double diag[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
-    put("diagonal", norm3(diag));
-    put("area", mesh_area(X0, r.F, nf));
-    if (closed)
-        put("volume", mesh_volume(X0, r.F, nf));
+    put_robust("diagonal", norm3(diag), diag_ld(lo, hi));
+    double area = mesh_area(X0, r.F, nf);
+    put_robust("area", area, isfinite(area) && area >= DBL_MIN ? area : measure_ld(X0, r.F, nf, 0));
+    if (closed) {
+        double vol = mesh_volume(X0, r.F, nf);
+        put_robust("volume", vol, isfinite(vol) && fabs(vol) >= DBL_MIN ? vol : measure_ld(X0, r.F, nf, 1));
+    }
     printf("edges %d\n", t.ne);
     printf("boundary_edges %d\n", t.nboundary_edges);
     printf("boundary_loops %d\n", t.nloops);

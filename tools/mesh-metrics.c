@@ -53,7 +53,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     while ((c = getopt_long(argc, argv, "r:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'r': o->ref = optarg; break;
-        case 'K': o->ref_frame = (int)arg_long(optarg, "--ref-frame"); break;
+        case 'K': o->ref_frame = arg_int(optarg, "--ref-frame"); break;
         case 'N': o->no_header = 1; break;
         case 'P': o->per_face = optarg; break;
         case 'o': o->output = optarg; break;

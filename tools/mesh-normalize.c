@@ -3,15 +3,18 @@
  * for every frame, and print that transform so it can be undone.
  *
  * The bounding box is over all frames, so the input is read twice: a named
- * file is simply reopened; standard input is first spooled to a temporary
- * raw stream (bit-exact).  Memory stays O(one frame).
+ * file is simply reopened; standard input is spooled to an (unlinked)
+ * temporary raw stream during the first pass (mesh_spool.h, bit-exact).
+ * Memory stays O(one frame).
  */
 #include "mesh.h"
+#include "mesh_spool.h"
 #include "geometry.h"
 #include "numparse.h"
 #include "tool.h"
 #include "cm_error.h"
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -113,57 +116,6 @@ static void read_transform(const char *path, double *s, double t[3])
         die("cannot read '%s': no 'scale S translate TX TY TZ' line", path);
 }
 
-static char spool_path[4096];
-
-static void remove_spool(void)
-{
-    if (spool_path[0])
-        unlink(spool_path);
-}
-
-static const char *spool_stdin(void)
-{
-    /* copy stdin to a temporary raw stream (exact), so it can be read twice */
-    char *path = spool_path;
-    const char *dir = getenv("TMPDIR");
-    snprintf(path, sizeof spool_path, "%s/mesh-normalize.XXXXXX", dir && *dir ? dir : "/tmp");
-    int fd = mkstemp(path);
-    if (fd >= 0)
-        atexit(remove_spool);
-    if (fd < 0)
-        die("cannot create a temporary file in '%s': %s", dir && *dir ? dir : "/tmp",
-            strerror(errno));
-    FILE *f = fdopen(fd, "wb");
-    struct mesh_reader r;
-    if (mesh_reader_open(&r, NULL) < 0) {
-        unlink(path);
-        die("%s", cm_errmsg());
-    }
-    double *X = malloc(((size_t)r.nv * 3 + 1) * sizeof *X);
-    struct mesh_writer w;
-    int rc, cut;
-    if (!X || mesh_writer_open(&w, f, r.nv, r.nf, r.F, r.nframes, 1) < 0) {
-        unlink(path);
-        die("cannot write a temporary file: %s", X ? cm_errmsg() : "out of memory");
-    }
-    while ((rc = mesh_reader_next(&r, X, &cut)) > 0)
-        if (mesh_writer_frame(&w, X, cut) < 0) {
-            unlink(path);
-            die("cannot write a temporary file: %s", cm_errmsg());
-        }
-    if (rc < 0) {
-        unlink(path);
-        die("%s", cm_errmsg());
-    }
-    if (mesh_writer_close(&w) < 0 || fclose(f) != 0) {
-        unlink(path);
-        die("cannot write a temporary file: %s", cm_errmsg());
-    }
-    mesh_reader_close(&r);
-    free(X);
-    return path;
-}
-
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -175,22 +127,24 @@ int main(int argc, char **argv)
     if (o.apply) read_transform(o.apply, &s, t);
     if (o.undo) read_transform(o.undo, &s, t);
 
-    const char *path = o.input, *spooled = NULL;
+    const char *path = o.input;
     struct mesh_reader r;
+    struct mesh_spool sp;
     double *X = NULL;
     int rc, cut;
+    if (mesh_reader_open(&r, path) < 0)
+        die("%s", cm_errmsg());
+    if (!(X = malloc(((size_t)r.nv * 3 + 1) * sizeof *X)))
+        die("out of memory");
     if (compute) {
-        if (!path || !strcmp(path, "-"))
-            path = spooled = spool_stdin();
         /* pass 1: bounding box of all frames */
-        if (mesh_reader_open(&r, path) < 0)
+        if (mesh_spool_begin(&sp, path, &r) < 0)
             die("%s", cm_errmsg());
-        X = malloc(((size_t)r.nv * 3 + 1) * sizeof *X);
-        if (!X)
-            die("out of memory");
         double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
         long k = 0;
-        while ((rc = mesh_reader_next(&r, X, NULL)) > 0) {
+        while ((rc = mesh_reader_next(&r, X, &cut)) > 0) {
+            if (mesh_spool_frame(&sp, X, cut) < 0)
+                die("%s", cm_errmsg());
             double l[3], h[3];
             if (r.nv == 0) continue;
             bounding_box(X, r.nv, l, h);
@@ -206,16 +160,21 @@ int main(int argc, char **argv)
         for (int d = 0; d < 3; d++)
             if (hi[d] - lo[d] > side) side = hi[d] - lo[d];
         s = side > 0 ? 1 / side : 1;
+        /* an extent that overflows (1e308 wide) or whose inverse does
+         * (below 1e-308) has no scale that double precision can undo */
+        if (!isfinite(side) || (side > 0 && !(s >= DBL_MIN && s <= DBL_MAX))) {
+            long double ext = 0;
+            for (int d = 0; d < 3; d++)
+                if ((long double)hi[d] - lo[d] > ext) ext = (long double)hi[d] - lo[d];
+            die("cannot read '%s': its extent %Lg cannot be scaled to 1 in double precision",
+                r.name, ext);
+        }
         for (int d = 0; d < 3; d++)
             t[d] = -s * 0.5 * (lo[d] + hi[d]) + 0.0;   /* no -0 */
         mesh_reader_close(&r);
+        if (mesh_spool_rewind(&sp, &r) < 0)
+            die("%s", cm_errmsg());
     }
-    if (mesh_reader_open(&r, path) < 0)
-        die("%s", cm_errmsg());
-    if (spooled)
-        remove_spool(), spool_path[0] = 0;   /* the open stream keeps it alive */
-    if (!X && !(X = malloc(((size_t)r.nv * 3 + 1) * sizeof *X)))
-        die("out of memory");
 
     /* the transform to apply: x' = a x + b */
     double a = s, b[3] = {t[0], t[1], t[2]};
@@ -235,6 +194,10 @@ int main(int argc, char **argv)
         else
             for (size_t i = 0; i < nv; i++)
                 for (int d = 0; d < 3; d++) X[3 * i + d] = a * X[3 * i + d] + b[d];
+        for (size_t i = 0; i < 3 * nv; i++)
+            if (!isfinite(X[i]))
+                die("cannot read '%s': frame %d: vertex %zu: the transform overflows", r.name,
+                    r.frame - 1, i / 3);
         if (mesh_writer_frame(&w, X, cut) < 0)
             die("cannot write output: %s", cm_errmsg());
     }
@@ -256,6 +219,8 @@ int main(int argc, char **argv)
     }
     out_close(out);
     mesh_reader_close(&r);
+    if (compute)
+        mesh_spool_free(&sp);
     free(X);
     return 0;
 }

@@ -65,7 +65,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         if (render_options_parse(&o->r, c, optarg))
             continue;
         switch (c) {
-        case 'k': o->frame = (int)arg_long(optarg, "--frame"); break;
+        case 'k': o->frame = arg_int_range(optarg, "--frame", -200000000, 200000000); break;
         case 's':
             if (image_parse_size(optarg, &o->w, &o->h) < 0)
                 usage_error("--size: '%s' is not WxH (e.g. 800x600, at most 16384)", optarg);
@@ -119,19 +119,33 @@ int main(int argc, char **argv)
                 r.nframes, r.nframes == 1 ? "" : "s");
         want += r.nframes;
     }
-    /* from the end of a stream of unknown length: a ring of the last -want frames */
+    /* from the end of a stream of unknown length: a ring of the last -want
+     * frames, allocated as frames arrive (memory O(frames read)) */
     int nring = want < 0 ? -want : 1;
-    double **ring = malloc((size_t)nring * sizeof *ring);
+    int nalloc = 0, nbuf = 0;
+    double **ring = NULL;
     double *Y = malloc(fsz);
-    if (!ring || !Y)
+    double *X = want >= 0 ? malloc(fsz) : NULL;
+    if ((want >= 0 && !X) || !Y)
         die("out of memory");
-    for (int i = 0; i < nring; i++)
-        if (!(ring[i] = malloc(fsz)))
-            die("out of memory for the last %d frames", nring);
-    double *X = ring[0];
     int got = 0, k = 0, rc;
     for (;;) {
-        double *dst = want < 0 ? ring[k % nring] : k == want ? X : Y;
+        double *dst = k == want ? X : Y;
+        if (want < 0) {
+            if (k < nring) {
+                if (k == nalloc) {
+                    nalloc = nalloc ? (nalloc > nring / 2 ? nring : 2 * nalloc) : 1;
+                    double **nr = realloc(ring, (size_t)nalloc * sizeof *ring);
+                    if (!nr)
+                        die("out of memory for the last %d frames", nring);
+                    ring = nr;
+                }
+                if (!(ring[k] = malloc(fsz)))
+                    die("out of memory for the last %d frames", nring);
+                nbuf++;
+            }
+            dst = ring[k % nring];
+        }
         if ((rc = mesh_reader_next(&r, dst, NULL)) <= 0)
             break;
         if (k == want) got = 1;
@@ -189,8 +203,12 @@ int main(int argc, char **argv)
     image_free(&im);
     mesh_colors_free(&mc);
     mesh_reader_close(&r);
-    for (int i = 0; i < nring; i++) free(ring[i]);
-    free(ring);
+    if (ring) {
+        for (int i = 0; i < nbuf; i++) free(ring[i]);
+        free(ring);
+    } else {
+        free(X);
+    }
     free(Y);
     return 0;
 }

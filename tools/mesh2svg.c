@@ -53,11 +53,11 @@ static void parse_args(int argc, char **argv, struct options *o)
     int c;
     while ((c = getopt_long(argc, argv, "f:agc:w:o:h", lo, NULL)) != -1) {
         switch (c) {
-        case 'f': o->frame = (int)arg_long(optarg, "--frame"); break;
+        case 'f': o->frame = arg_int(optarg, "--frame"); break;
         case 'a': o->animate = 1; break;
         case 'F': o->fps = arg_double(optarg, "--fps"); break;
         case 'g': o->grid = 1; break;
-        case 'c': o->columns = (int)arg_long(optarg, "--columns"); break;
+        case 'c': o->columns = arg_int(optarg, "--columns"); break;
         case 'w': o->width = arg_double(optarg, "--width"); break;
         case 'L': o->fill = optarg; break;
         case 'E': o->no_edges = 1; break;

@@ -93,7 +93,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         switch (c) {
         case 'l': o->landmarks = optarg; break;
         case O_ALIGN: o->align = optarg; break;
-        case 'k': o->p.steps = (int)arg_long(optarg, "--steps"); break;
+        case 'k': o->p.steps = arg_int(optarg, "--steps"); break;
         case O_AMAX: o->p.alpha_max = arg_double(optarg, "--alpha-max"); break;
         case O_AMIN: o->p.alpha_min = arg_double(optarg, "--alpha-min"); break;
         case O_BETA: o->p.beta = arg_double(optarg, "--beta"); break;
@@ -101,10 +101,10 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_ANGLE: o->p.max_angle = arg_double(optarg, "--max-angle"); break;
         case O_DIST: o->p.max_dist = arg_double(optarg, "--max-dist"); break;
         case O_BACK: o->p.backward = arg_double(optarg, "--backward"); break;
-        case O_INNER: o->p.max_inner = (int)arg_long(optarg, "--max-inner"); break;
+        case O_INNER: o->p.max_inner = arg_int(optarg, "--max-inner"); break;
         case O_INIT: o->init_deform = 1; break;
         case O_LMESH: o->lm_mesh = optarg; break;
-        case O_FITS: o->p.fit_smooth = (int)arg_long(optarg, "--fit-smooth"); break;
+        case O_FITS: o->p.fit_smooth = arg_int(optarg, "--fit-smooth"); break;
         case O_SEARCH: o->p.search = arg_double(optarg, "--search"); break;
         case O_INITM:
             if (!strcmp(optarg, "shell")) o->init_shell = 1;
@@ -113,7 +113,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case O_NV: o->p.nearest_vertex = 1; break;
         case O_INITK: o->init_stiffness = optarg; o->init_deform = 1; break;
-        case O_FIT: o->p.fit = (int)arg_long(optarg, "--fit"); break;
+        case O_FIT: o->p.fit = arg_int(optarg, "--fit"); break;
         case O_FITW: o->p.fit_weight = arg_double(optarg, "--fit-weight"); break;
         case O_EPS: o->p.eps = arg_double(optarg, "--eps"); break;
         case O_SOUT: o->steps_out = optarg; break;

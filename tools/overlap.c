@@ -38,7 +38,7 @@ int main(int argc, char **argv)
     int c, sample = 0;
     while ((c = getopt_long(argc, argv, "l:s:vh", lo, NULL)) != -1) {
         switch (c) {
-        case 's': sample = (int)arg_long(optarg, "--sample"); break;
+        case 's': sample = arg_int(optarg, "--sample"); break;
         case 'l': lmfile = optarg; break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);

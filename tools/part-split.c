@@ -40,33 +40,6 @@ struct options {
     int part, raw;
 };
 
-/* A pattern must hold exactly one integer conversion (%d, %5d, %03d, %i)
- * and otherwise only %% escapes. */
-static void check_pattern(const char *s, const char *what)
-{
-    int n = 0;
-    for (const char *p = s; *p; p++) {
-        if (*p != '%') continue;
-        if (p[1] == '%') { p++; continue; }
-        p++;
-        if (*p == '0') p++;
-        while (*p >= '0' && *p <= '9') p++;
-        if (*p != 'd' && *p != 'i')
-            usage_error("%s: '%s' may only hold one %%d (and %%%%)", what, s);
-        n++;
-    }
-    if (n != 1)
-        usage_error("%s: '%s' needs exactly one %%d for the part number", what, s);
-}
-
-static char *format_name(const char *pattern, int part)
-{
-    int n = snprintf(NULL, 0, pattern, part);
-    char *s = malloc((size_t)n + 1);
-    snprintf(s, (size_t)n + 1, pattern, part);
-    return s;
-}
-
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
@@ -82,7 +55,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'o': o->output = optarg; break;
         case 'm': o->map = optarg; break;
         case 'p':
-            o->part = (int)arg_long(optarg, "--part");
+            o->part = arg_int(optarg, "--part");
             if (o->part < 0) usage_error("--part must be >= 0");
             break;
         case 'R': o->raw = 1; break;
@@ -96,11 +69,11 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->part < 0 && !o->output)
         o->output = "part_%d.mesh";
     if (o->output && strcmp(o->output, "-"))
-        check_pattern(o->output, "--output");
+        pattern_check(o->output, "--output", 1);
     else if (o->output && o->part < 0)
         usage_error("--output -: only one part (--part K) can go to stdout");
     if (o->map)
-        check_pattern(o->map, "--map");
+        pattern_check(o->map, "--map", 1);
 }
 
 struct part {
@@ -168,13 +141,13 @@ int main(int argc, char **argv)
     int raw = want_raw(o.raw);
     for (int i = 0; i < nparts; i++) {
         struct part *q = &parts[i];
-        char *name = o.output && strcmp(o.output, "-") ? format_name(o.output, q->id) : NULL;
+        char *name = o.output && strcmp(o.output, "-") ? pattern_format(o.output, q->id) : NULL;
         q->out = out_open(name);
         if (mesh_writer_open(&q->w, q->out, q->nv, q->nf, q->F, r.nframes, raw) < 0)
             die("cannot write '%s': %s", name ? name : "<stdout>", cm_errmsg());
         free(name);
         if (o.map) {
-            char *mname = format_name(o.map, q->id);
+            char *mname = pattern_format(o.map, q->id);
             q->mapf = out_open(mname);      /* renamed into place at the end */
             if (labels_write(q->mapf, q->vmap, q->nv) < 0)
                 die("cannot write '%s': %s", mname, cm_errmsg());

@@ -73,7 +73,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     int c;
     while ((c = getopt_long(argc, argv, "x:y:n:t:s:f:o:h", lo, NULL)) != -1) {
         switch (c) {
-        case 'x': o->xcol = (int)arg_long(optarg, "--x"); break;
+        case 'x': o->xcol = arg_int(optarg, "--x"); break;
         case 'y': o->ny = arg_intlist(optarg, "--y", &o->ycols); break;
         case 'n': o->names = split_names(optarg, &o->nnames); break;
         case 't': o->title = optarg; break;

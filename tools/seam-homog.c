@@ -88,7 +88,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         switch (c) {
         case 'l': o->labels = optarg; break;
         case 'o': o->output = optarg; break;
-        case 'r': o->rings = (int)arg_long(optarg, "--rings"); break;
+        case 'r': o->rings = arg_int(optarg, "--rings"); break;
         case 'M':
             if (!strcmp(optarg, "voronoi")) o->mass = MASS_VORONOI;
             else if (!strcmp(optarg, "barycentric")) o->mass = MASS_BARYCENTRIC;
@@ -97,11 +97,11 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'E': o->energy = optarg; break;
         case 'R': o->raw = 1; break;
         case 'v': verbose++; break;
-        case 'C': o->check = (int)arg_long(optarg, "--check"); break;
+        case 'C': o->check = arg_int(optarg, "--check"); break;
         case 'S': o->seed = arg_long(optarg, "--seed"); break;
         case 'F': o->refactor = 1; break;
         case 'W': o->no_weld = 1; break;
-        case 'B': o->batch = (int)arg_long(optarg, "--batch"); break;
+        case 'B': o->batch = arg_int(optarg, "--batch"); break;
         case 'h': print_help_and_exit(help);
         case 'V': print_version_and_exit();
         default: usage_error("unknown option");

@@ -76,7 +76,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'l': o->labels = optarg; break;
         case 'L': o->labels_out = optarg; break;
         case 'a': o->amount = arg_double(optarg, "--amount"); break;
-        case 'i': o->iterations = (int)arg_long(optarg, "--iterations"); break;
+        case 'i': o->iterations = arg_int(optarg, "--iterations"); break;
         case 'S': o->snap = arg_double(optarg, "--snap"); break;
         case 'M': o->map = optarg; break;
         case 'o': o->output = optarg; break;

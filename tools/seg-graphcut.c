@@ -139,8 +139,8 @@ static void parse_args(int argc, char **argv, struct options *o)
             if (!colon) usage_error("--seed wants PART:FACE, got '%s'", optarg);
             *colon = 0;
             struct seed s = {0};
-            s.part = (int)arg_long(optarg, "--seed PART");
-            s.face = (int)arg_long(colon + 1, "--seed FACE");
+            s.part = arg_int(optarg, "--seed PART");
+            s.face = arg_int(colon + 1, "--seed FACE");
             if (s.part < 0) usage_error("--seed: part must be >= 0");
             add_seed(o, s);
             break;
@@ -152,10 +152,10 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'r': o->seed_radius = arg_double(optarg, "--seed-radius"); break;
         case 'B': o->bridge = arg_double(optarg, "--bridge"); break;
         case 'T': o->seed_snap = arg_double(optarg, "--seed-snap"); break;
-        case 'p': o->parts = (int)arg_long(optarg, "--parts"); break;
+        case 'p': o->parts = arg_int(optarg, "--parts"); break;
         case '1': o->one_pass = 1; break;
         case 'W': o->no_weld = 1; break;
-        case 'M': o->max_cycles = (int)arg_long(optarg, "--max-cycles"); break;
+        case 'M': o->max_cycles = arg_int(optarg, "--max-cycles"); break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);
