@@ -106,6 +106,12 @@ static char *next_line(struct mesh_reader *r, int *err)
             nl = r->buf + r->len;
         }
         char *s = r->buf + r->pos;
+        if ((size_t)(nl - s) > MESH_LINE_MAX) {
+            *err = 1;
+            cm_seterr("cannot read '%s': line %ld: line longer than %d bytes", r->name,
+                      r->line + 1, MESH_LINE_MAX);
+            return NULL;
+        }
         *nl = 0;
         r->pos = (size_t)(nl - r->buf) + (nl < r->buf + r->len ? 1 : 0);
         if (nl == r->buf + r->len) r->pos = r->len;

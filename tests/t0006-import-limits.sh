@@ -1,0 +1,64 @@
+#!/bin/sh
+test_description='mesh-import refuses hostile files cleanly (issue 13):
+glTF accessor bounds without overflow, PLY headers checked before OpenMesh,
+reservations capped by the file size, a missing file named as missing'
+. "$(dirname "$0")/test-lib.sh"
+
+memlimit() {
+	if [ -n "${STOPMO_SANITIZE:-}" ]; then "$@"; else (ulimit -v 1000000 && "$@"); fi
+}
+
+test_expect_success 'setup: the small glTF morph animation imports' '
+	perl "$TEST_DIRECTORY/gltf-morph.pl" >ok.gltf &&
+	mesh-import -v ok.gltf >ok.mesh 2>log && cat log &&
+	grep "weights decoded from the glTF accessor" log &&
+	mesh-info ok.mesh | grep "^frames 3$" &&
+	tail -3 ok.mesh >last && printf "0 0 0.5019607843137255\n1 0 0.5019607843137255\n0 1 0.5019607843137255\n" >expect &&
+	test_cmp expect last
+'
+test_expect_success 'glTF: a byteStride of 2^63 + 2048 does not wrap the bounds check' '
+	perl "$TEST_DIRECTORY/gltf-morph.pl" 9223372036854777856 5000 >wrap.gltf &&
+	mesh-import -v wrap.gltf >wrap.mesh 2>log &&
+	! grep "weights decoded" log
+'
+test_expect_success 'glTF: negative, fractional and huge sizes are not cast blindly' '
+	for s in -4 4.5 1e300 253; do
+		perl "$TEST_DIRECTORY/gltf-morph.pl" $s 5000 >s.gltf &&
+		mesh-import -v s.gltf >s.mesh 2>log
+		rc=$? && cat log && test $rc -le 1 && ! grep "weights decoded" log || return 1
+	done
+'
+test_expect_success 'PLY: a property before any element (OpenMesh 9 crashed)' '
+	printf "ply\nformat ascii 1.0\nproperty float x\nend_header\n" >p1.ply &&
+	test_fails_cleanly mesh-import p1.ply 2>err &&
+	grep "p1.ply.: not a valid PLY file (header line 3: a property before any element)" err
+'
+test_expect_success 'PLY: a header without end_header (OpenMesh 9 looped forever)' '
+	printf "ply\nformat ascii 1.0\n" >p2.ply &&
+	test_fails_cleanly timeout 20 mesh-import p2.ply 2>err && grep "no end_header" err
+'
+test_expect_success 'PLY: counts beyond the file size, unknown types, missing x y z' '
+	printf "ply\nformat binary_little_endian 1.0\nelement vertex 100000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n" >p3.ply &&
+	memlimit test_fails_cleanly mesh-import p3.ply 2>err && grep "truncated: the PLY header announces at least 1200000000 bytes" err &&
+	printf "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n0\n" >p4.ply &&
+	test_fails_cleanly mesh-import p4.ply 2>err && grep "bad property line" err &&
+	printf "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n" >p5.ply &&
+	test_fails_cleanly mesh-import p5.ply 2>err && grep "vertex element without x, y, z" err
+'
+test_expect_success 'PLY: a valid file still imports (binary and ascii round trip)' '
+	mesh-gen -s 1 icosphere >ico.mesh &&
+	mesh-export -o ico.ply ico.mesh && mesh-import ico.ply | mesh-info | grep "^faces 80$" &&
+	mesh-export --ascii -o icoa.ply ico.mesh && mesh-import icoa.ply | mesh-info | grep "^faces 80$"
+'
+test_expect_success 'OFF/OBJ: a header of 2*10^8 vertices reserves by the file size' '
+	printf "OFF\n200000000 0 0\n" >big.off &&
+	memlimit test_fails_cleanly mesh-import big.off 2>err &&
+	grep "big.off.: line 2: expected 200000000 vertices, found 0" err
+'
+test_expect_success 'a missing file is named as missing, whatever its extension' '
+	test_fails_cleanly mesh-import nope.mesh 2>err &&
+	grep "cannot read .nope.mesh.: No such file or directory" err &&
+	test_fails_cleanly mesh-import nope.obj 2>err && grep "No such file" err &&
+	test_fails_cleanly mesh-import ico.ply nope.ply 2>err && grep "nope.ply.: No such file" err
+'
+test_done
