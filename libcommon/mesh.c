@@ -195,7 +195,7 @@ static int header_count(struct mesh_reader *r, const char *key, int allow_q, lon
     if (!e || !at_end(e) || v < 0 || v > MAX_COUNT)
         RERR("bad %s count '%.40s'", key, p);
     if (v < min)
-        RERR("bad %s count %ld: at least %ld", key, v, min);
+        RERR("stream has no %s ('%s %ld'; at least %ld)", key, key, v, min);
     *out = (int)v;
     return 0;
 }

@@ -17,7 +17,7 @@ test_expect_success 'setup' '
 '
 test_expect_success 'frames 0 is refused by every reader (not a valid empty stream)' '
 	test_fails_cleanly mesh-info -q zero.mesh 2>err &&
-	grep "zero.mesh.: line 4: bad frames count 0: at least 1" err &&
+	grep "zero.mesh.: line 4: stream has no frames (.frames 0.; at least 1)" err &&
 	test_fails_cleanly anim-avg zero.mesh &&
 	test_fails_cleanly anim-cat zero.mesh zero.mesh &&
 	test_fails_cleanly mesh-normalize zero.mesh &&
