@@ -123,7 +123,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             else if (!strcmp(optarg, "kmeans++")) o->start = REPLIB_START_PLUSPLUS;
             else usage_error("--start: '%s' is not greedy or kmeans++", optarg);
             break;
-        case 'X': o->search = (int)arg_long(optarg, "--search");
+        case 'X': o->search = arg_int(optarg, "--search");
             if (o->search < 0) usage_error("--search must be >= 0");
             break;
         case 'o': o->output = optarg; break;
