@@ -1,6 +1,7 @@
 // anim_import.cpp -- morph-target animations through assimp; see anim_import.h.
 #include "anim_import.h"
 #include "cm_error.h"
+#include "fbx_weights.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -645,6 +646,52 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
         inf.duration += nk ? tr.time[nk - 1] : 0;
     }
     inf.nclips = (int)clips.size();
+
+    /* FBX: the weights from the file itself (fbx_weights.h), so that a
+     * channel without a curve keeps its static DeformPercent; used when
+     * every morph target is one of the model's channels */
+    if (fmt == ANIM_FBX && nt > 0) {
+        struct fbx_weights fw;
+        int rc = fbx_read_weights(path, node ? node->mName.C_Str() : nullptr, &fw);
+        if (rc < 0) return -1;
+        std::vector<int> chan(nt, -1);
+        bool all = rc == 0 && fw.nclips > 0;
+        for (int i = 0; all && i < nt; i++) {
+            for (int c = 0; c < fw.nchannels && chan[i] < 0; c++)
+                if (!strcmp(fw.names[c], am->mAnimMeshes[i]->mName.C_Str())) chan[i] = c;
+            all = chan[i] >= 0;
+        }
+        int pick = -1;      /* --animation: the stack of that name, else that index */
+        if (all && want_anim >= 0) {
+            for (int c = 0; c < fw.nclips && pick < 0; c++)
+                if (!strcmp(fw.clips[c].name, sc->mAnimations[want_anim]->mName.C_Str())) pick = c;
+            if (pick < 0) pick = want_anim < fw.nclips ? want_anim : -1;
+            all = pick >= 0;
+        }
+        if (all) {
+            tracks.clear();
+            inf.nkeys = 0;
+            inf.duration = 0;
+            inf.nclips = 0;
+            for (int c = 0; c < fw.nclips; c++) {
+                if (pick >= 0 && c != pick) continue;
+                const struct fbx_clip &cl = fw.clips[c];
+                MorphTrack tr;
+                tr.time.assign(cl.t, cl.t + cl.nkeys);
+                tr.w.resize((size_t)cl.nkeys * nt);
+                for (int k = 0; k < cl.nkeys; k++)
+                    for (int i = 0; i < nt; i++)
+                        tr.w[(size_t)k * nt + i] = cl.w[(size_t)k * fw.nchannels + chan[i]];
+                if (inf.nclips == 0) copy_name(inf.anim_name, sizeof inf.anim_name, cl.name);
+                inf.nkeys += cl.nkeys;
+                inf.duration += cl.t[cl.nkeys - 1];
+                inf.nclips++;
+                tracks.push_back(std::move(tr));
+            }
+            inf.fbx_weights = 1;
+        }
+        fbx_weights_free(&fw);
+    }
 
     /* ---- sample times: (clip, t) pairs ---- */
     std::vector<std::pair<int, double>> times;

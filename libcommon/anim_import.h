@@ -32,6 +32,12 @@
  * whose weight accessor is not FLOAT, the weights are therefore decoded
  * here from the file's accessor (byte / 255, short / 65535, ...).
  *
+ * assimp 5.2 leaves an FBX blend-shape channel without an animation curve
+ * out of its morph keys (weight 0 instead of its static DeformPercent);
+ * for binary FBX the weights are therefore read from the file itself
+ * (fbx_weights.h): every stack that animates the channels is a clip, and
+ * every channel has its curve or its static value.
+ *
  * With `merge`, every other mesh instance of the scene (a node that
  * references a triangle mesh, depth-first in node order) is appended after
  * the chosen mesh: the chosen mesh keeps vertex and face numbers 0..n-1,
@@ -87,6 +93,7 @@ struct anim_import_info {
     int nkeys;               /* keys of the morph channels (0: static mesh) */
     double duration;         /* seconds from 0 to the last key, summed over clips */
     int decoded_weights;     /* 1 if weights were decoded from the glTF accessor */
+    int fbx_weights;         /* 1 if weights were read from the FBX file itself */
     int merged;              /* merge: mesh instances appended */
     int merged_nv;           /* merge: vertices they added */
     int merged_morph;        /* merge: appended meshes that have morph targets

@@ -49,6 +49,17 @@ test_expect_success 'Blender FBX with shape keys but no animation (default expor
 	grep -q "warning: .*copies.*--weld" err
 '
 
+test_expect_success 'Blender FBX with curves: the constant shape key keeps its DeformPercent (assimp drops it)' '
+	mesh-import -v --weld "$DATA/cube-actions.fbx" >f.mesh 2>log && cat log &&
+	grep -q "weights read from the FBX blend-shape channels" log && grep "^frames 4$" f.mesh &&
+	awk -f "$TEST_DIRECTORY/match-frames.awk" "$DATA/cube-blender.mesh" f.mesh >d && cat d &&
+	grep -q "^frames 4 vertices 26 match [0-9.e-]* max [0-9]" d && test_le "$(cut -d" " -f8 d)" 1e-6
+'
+
+test_expect_success 'a truncated FBX fails cleanly' '
+	head -c 9000 "$DATA/cube-actions.fbx" >trunc.fbx && test_fails_cleanly mesh-import trunc.fbx
+'
+
 test_expect_success 'Blender glb with corners split: --weld gives Blender frames to 1e-6' '
 	mesh-import --weld "$DATA/cube.glb" >g.mesh && grep "^vertices 26$" g.mesh &&
 	awk -v yup=1 -f "$TEST_DIRECTORY/match-frames.awk" "$DATA/cube-blender.mesh" g.mesh >d && cat d &&

@@ -271,13 +271,15 @@ static void read_animation(const struct options *o, const char *path, int fmt, s
         info(1, "%s: mesh %d '%s' (%d morph targets), %d animations from %d '%s' (%d keys, %.3f s%s): "
              "%d clips, %d frames, %d vertices, %d triangles, %.2f s",
              path, ai.mesh_index, ai.mesh_name, ai.ntargets, ai.nclips, ai.anim_index, ai.anim_name, ai.nkeys,
-             ai.duration, ai.decoded_weights ? ", weights decoded from the glTF accessor" : "",
+             ai.duration, ai.decoded_weights ? ", weights decoded from the glTF accessor"
+                         : ai.fbx_weights ? ", weights read from the FBX blend-shape channels" : "",
              ai.nclips, out->nframes, out->nv, out->nf, now_seconds() - t0);
     else if (ai.nkeys > 0)
         info(1, "%s: mesh %d '%s' (%d morph targets), animation %d '%s' (%d keys, %.3f s%s): "
              "%d frames, %d vertices, %d triangles, %.2f s",
              path, ai.mesh_index, ai.mesh_name, ai.ntargets, ai.anim_index, ai.anim_name, ai.nkeys,
-             ai.duration, ai.decoded_weights ? ", weights decoded from the glTF accessor" : "",
+             ai.duration, ai.decoded_weights ? ", weights decoded from the glTF accessor"
+                         : ai.fbx_weights ? ", weights read from the FBX blend-shape channels" : "",
              out->nframes, out->nv, out->nf, now_seconds() - t0);
     else if (ai.ntargets > 0 && !o->rest)
         die("cannot read '%s': mesh %d '%s' has %d morph targets but the file has no animation of "
