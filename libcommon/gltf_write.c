@@ -15,13 +15,19 @@
 enum { CT_UINT = 5125, CT_FLOAT = 5126 };
 enum { TARGET_NONE = 0, TARGET_ARRAY = 34962, TARGET_ELEMENTS = 34963 };
 
-/* one accessor over its own buffer view */
+/* One entry: an accessor over its own buffer view (ACC), a buffer view
+ * alone (VIEW: the indices or values of a sparse accessor), or a sparse
+ * accessor of zeros without a view (SPARSE).  JSON indices of accessors
+ * and views are numbered when the JSON is written. */
+enum { ACC = 0, VIEW = 1, SPARSE = 2 };
 struct accessor {
-    size_t offset, length;      /* bytes in the buffer */
+    int kind;
+    size_t offset, length;      /* bytes in the buffer (ACC, VIEW) */
     int ctype, count, ncomp;    /* component type, elements, 1 or 3 */
     int target;                 /* bufferView.target or 0 */
     int minmax;                 /* write min/max */
     float lo[3], hi[3];
+    int nsparse, sidx, sval;    /* SPARSE: non-zeros, entries of their index and value views */
 };
 
 struct gmesh {
@@ -287,9 +293,11 @@ int gltf_add_onehot_channel(struct gltf_writer *g, int ai, int mi, int nkeys, co
     int nt = m->ntargets;
     if (nkeys < 1) return cm_seterr("glTF writer: a channel needs keys");
     if (nt < 1) return cm_seterr("glTF writer: mesh %d has no morph targets to animate", mi);
+    if ((double)nkeys * nt > 2147483647.0) return cm_seterr("glTF writer: %d keys of %d weights are too many", nkeys, nt);
     float *T = malloc((size_t)nkeys * sizeof *T);
-    float *W = calloc((size_t)nkeys * nt, sizeof *W);
-    if (!T || !W) { free(T); free(W); return cm_seterr("glTF writer: out of memory"); }
+    float *W = malloc((size_t)nkeys * sizeof *W);             /* the non-zeros: 1 */
+    uint32_t *I = malloc((size_t)nkeys * sizeof *I);          /* and where they are */
+    if (!T || !W || !I) { free(T); free(W); free(I); return cm_seterr("glTF writer: out of memory"); }
     int rc = 0;
     for (int k = 0; k < nkeys && rc == 0; k++) {
         T[k] = (float)t[k];
@@ -297,8 +305,10 @@ int gltf_add_onehot_channel(struct gltf_writer *g, int ai, int mi, int nkeys, co
             rc = cm_seterr("glTF writer: key times not strictly increasing in float32 at key %d", k);
         else if (hot[k] < 0 || hot[k] >= nt)
             rc = cm_seterr("glTF writer: key %d: target %d out of range (mesh %d has %d)", k, hot[k], mi, nt);
-        else
-            W[(size_t)k * nt + hot[k]] = 1;
+        else {
+            W[k] = 1;
+            I[k] = (uint32_t)k * (uint32_t)nt + (uint32_t)hot[k];
+        }
     }
     struct ganim *a = &g->anim[ai];
     if (rc == 0) rc = grow((void **)&a->ch, &a->cap, a->nch, sizeof *a->ch);
@@ -306,12 +316,29 @@ int gltf_add_onehot_channel(struct gltf_writer *g, int ai, int mi, int nkeys, co
         struct channel *c = &a->ch[a->nch];
         c->mesh = mi;
         c->input = put_accessor(g, T, CT_FLOAT, nkeys, 1, TARGET_NONE, 1);
-        c->output = c->input < 0 ? -1 : put_accessor(g, W, CT_FLOAT, nkeys * nt, 1, TARGET_NONE, 0);
+        /* the weights: nkeys * nt values, all 0 but one per key, as a
+         * sparse accessor (size O(nkeys), not O(nkeys * nt)) */
+        int iv = c->input < 0 ? -1 : put_accessor(g, I, CT_UINT, nkeys, 1, TARGET_NONE, 0);
+        int vv = iv < 0 ? -1 : put_accessor(g, W, CT_FLOAT, nkeys, 1, TARGET_NONE, 0);
+        c->output = vv < 0 || grow((void **)&g->acc, &g->capacc, g->nacc, sizeof *g->acc) < 0 ? -1 : g->nacc++;
+        if (c->output >= 0) {
+            g->acc[iv].kind = g->acc[vv].kind = VIEW;
+            struct accessor *o = &g->acc[c->output];
+            memset(o, 0, sizeof *o);
+            o->kind = SPARSE;
+            o->ctype = CT_FLOAT;
+            o->count = nkeys * nt;
+            o->ncomp = 1;
+            o->nsparse = nkeys;
+            o->sidx = iv;
+            o->sval = vv;
+        }
         rc = c->output < 0 ? -1 : 0;
         if (rc == 0) a->nch++;
     }
     free(T);
     free(W);
+    free(I);
     return rc;
 }
 
@@ -364,6 +391,13 @@ static void sb_float(struct sbuf *b, float x)
 
 static void json(const struct gltf_writer *g, struct sbuf *b, const char *uri, size_t buflen)
 {
+    /* JSON numbers of the entries: A[e] among accessors, V[e] among views */
+    int *A = malloc(((size_t)g->nacc + 1) * sizeof *A), *V = malloc(((size_t)g->nacc + 1) * sizeof *V);
+    if (!A || !V) { free(A); free(V); b->oom = 1; return; }
+    for (int e = 0, na = 0, nw = 0; e < g->nacc; e++) {
+        A[e] = g->acc[e].kind != VIEW ? na++ : -1;
+        V[e] = g->acc[e].kind != SPARSE ? nw++ : -1;
+    }
     sb_printf(b, "{\"asset\":{\"version\":\"2.0\",\"generator\":");
     sb_string(b, g->generator);
     sb_printf(b, "},\"scene\":0,\"scenes\":[{\"nodes\":[");
@@ -380,11 +414,11 @@ static void json(const struct gltf_writer *g, struct sbuf *b, const char *uri, s
         sb_printf(b, "%s{\"name\":", i ? "," : "");
         sb_string(b, m->name);
         sb_printf(b, ",\"primitives\":[{\"attributes\":{\"POSITION\":%d,\"NORMAL\":%d},\"indices\":%d,\"mode\":4",
-                  m->position, m->normal, m->indices);
+                  A[m->position], A[m->normal], A[m->indices]);
         if (m->ntargets) {
             sb_printf(b, ",\"targets\":[");
             for (int t = 0; t < m->ntargets; t++)
-                sb_printf(b, "%s{\"POSITION\":%d,\"NORMAL\":%d}", t ? "," : "", m->tpos[t], m->tnrm[t]);
+                sb_printf(b, "%s{\"POSITION\":%d,\"NORMAL\":%d}", t ? "," : "", A[m->tpos[t]], A[m->tnrm[t]]);
             sb_printf(b, "]");
         }
         sb_printf(b, "}]");
@@ -416,7 +450,7 @@ static void json(const struct gltf_writer *g, struct sbuf *b, const char *uri, s
             sb_printf(b, "],\"samplers\":[");
             for (int c = 0; c < an->nch; c++)
                 sb_printf(b, "%s{\"input\":%d,\"output\":%d,\"interpolation\":\"STEP\"}", c ? "," : "",
-                          an->ch[c].input, an->ch[c].output);
+                          A[an->ch[c].input], A[an->ch[c].output]);
             sb_printf(b, "]}");
         }
         sb_printf(b, "]");
@@ -424,8 +458,11 @@ static void json(const struct gltf_writer *g, struct sbuf *b, const char *uri, s
     sb_printf(b, ",\"accessors\":[");
     for (int i = 0; i < g->nacc; i++) {
         const struct accessor *a = &g->acc[i];
-        sb_printf(b, "%s{\"bufferView\":%d,\"componentType\":%d,\"count\":%d,\"type\":\"%s\"", i ? "," : "", i,
-                  a->ctype, a->count, a->ncomp == 3 ? "VEC3" : "SCALAR");
+        if (a->kind == VIEW) continue;
+        sb_printf(b, "%s{", A[i] ? "," : "");
+        if (a->kind == ACC) sb_printf(b, "\"bufferView\":%d,", V[i]);
+        sb_printf(b, "\"componentType\":%d,\"count\":%d,\"type\":\"%s\"", a->ctype, a->count,
+                  a->ncomp == 3 ? "VEC3" : "SCALAR");
         if (a->minmax) {
             sb_printf(b, ",\"min\":[");
             for (int c = 0; c < a->ncomp; c++) { if (c) sb_printf(b, ","); sb_float(b, a->lo[c]); }
@@ -433,15 +470,21 @@ static void json(const struct gltf_writer *g, struct sbuf *b, const char *uri, s
             for (int c = 0; c < a->ncomp; c++) { if (c) sb_printf(b, ","); sb_float(b, a->hi[c]); }
             sb_printf(b, "]");
         }
+        if (a->kind == SPARSE)
+            sb_printf(b, ",\"sparse\":{\"count\":%d,\"indices\":{\"bufferView\":%d,\"componentType\":%d},"
+                      "\"values\":{\"bufferView\":%d}}", a->nsparse, V[a->sidx], CT_UINT, V[a->sval]);
         sb_printf(b, "}");
     }
     sb_printf(b, "],\"bufferViews\":[");
     for (int i = 0; i < g->nacc; i++) {
         const struct accessor *a = &g->acc[i];
-        sb_printf(b, "%s{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu", i ? "," : "", a->offset, a->length);
+        if (a->kind == SPARSE) continue;
+        sb_printf(b, "%s{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu", V[i] ? "," : "", a->offset, a->length);
         if (a->target) sb_printf(b, ",\"target\":%d", a->target);
         sb_printf(b, "}");
     }
+    free(A);
+    free(V);
     sb_printf(b, "],\"buffers\":[{\"byteLength\":%zu", buflen);
     if (uri) {
         sb_printf(b, ",\"uri\":");

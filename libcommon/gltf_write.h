@@ -11,8 +11,9 @@
  *               Blender as shape-key names, and by three.js)
  *   animations  each a set of channels; a channel drives the morph weights
  *               of one mesh's node with STEP keys whose weights are one-hot
- *               (key k shows exactly target hot[k]); clips are separate
- *               animations
+ *               (key k shows exactly target hot[k]), stored as a sparse
+ *               accessor (K keys cost O(K) bytes, not O(K x targets));
+ *               clips are separate animations
  * A morph target is stored as the float32 difference to the float32 base,
  * so base + delta is the target to float precision.  Buffers stream to a
  * temporary file while targets are added: memory O(one frame + topology +

@@ -25,7 +25,8 @@ test_expect_success 'an animation: every frame a morph target, one key per frame
 	mesh-export --fps 12 -o w12.gltf w.mesh && mesh-import -v w12.gltf >w12.mesh 2>log12 &&
 	grep "(7 keys, 0.500 s)" log12 && test_le "$(maxdiff w.mesh w12.mesh)" 1e-7 &&
 	grep -q "\"interpolation\":\"STEP\"" w12.gltf &&
-	grep -q "\"targetNames\":\[\"frame_0000\"" w12.gltf
+	grep -q "\"targetNames\":\[\"frame_0000\"" w12.gltf &&
+	grep -q "\"count\":49,\"type\":\"SCALAR\",\"sparse\":{\"count\":7," w12.gltf
 '
 
 test_expect_success 'vertex normals: unit, and morph targets carry normal deltas' '
