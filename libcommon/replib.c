@@ -448,6 +448,52 @@ static int lstate_apply(const struct lstate *s, const double *Y1, int n1, const 
     return 0;
 }
 
+/* The library in model coordinates (d by 3#V): from the frames (double or
+ * single precision), or from the reduced coordinates and their basis. */
+static int library_out(const struct replib_data *D, const struct lstate *s, double *R)
+{
+    int n = D->n, m3 = D->m3, d = s->d;
+    if (D->X) return lstate_apply(s, D->X, n, D->Rfix, m3, R);
+    if (D->Xf) {
+        /* rows are frames only (no fixed pieces with the sketch) */
+        double *row = malloc(sizeof(double) * m3);
+        if (!row) return cm_seterr("replib: out of memory");
+        int nf = s->nfree;
+        double *tmp = nf ? calloc((size_t)nf * m3, sizeof(double)) : NULL;
+        if (nf && !tmp) { free(row); return cm_seterr("replib: out of memory"); }
+        for (int a = 0; a < d; a++)
+            if (s->src[a] >= 0) {
+                const float *x = D->Xf + (size_t)s->src[a] * m3;
+                for (int t = 0; t < m3; t++) R[(size_t)a * m3 + t] = D->ref[t] + x[t];
+            }
+        for (int k = 0; k < s->nnz; k++) {
+            const float *x = D->Xf + (size_t)s->ci[k] * m3;
+            double v = s->v[k], *o = tmp + (size_t)s->ri[k] * m3;
+            for (int t = 0; t < m3; t++) o[t] += v * x[t];
+        }
+        if (nf) lsolve(s, m3, tmp);
+        for (int p = 0; p < nf; p++) {
+            double *o = R + (size_t)s->fidx[p] * m3;
+            for (int t = 0; t < m3; t++) o[t] = D->ref[t] + tmp[(size_t)p * m3 + t];
+        }
+        free(tmp); free(row);
+        return 0;
+    }
+    /* sketch only: r_a = ref + (C Zr)_a V^T / sqrt(w) */
+    int r = D->zdim;
+    double *Cr = malloc(sizeof(double) * (size_t)d * r);
+    if (!Cr) return cm_seterr("replib: out of memory");
+    if (lstate_apply(s, D->Z, n, NULL, r, Cr) < 0) { free(Cr); return -1; }
+    cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, d, m3, r, 1.0, Cr, r, D->V, r, 0.0, R, m3);
+    free(Cr);
+    for (int a = 0; a < d; a++)
+        for (int t = 0; t < m3; t++) {
+            double *o = R + (size_t)a * m3 + t;
+            *o = D->ref[t] + (D->sw ? *o / D->sw[t] : *o);
+        }
+    return 0;
+}
+
 /* ---- costs: P (N by d, z_g . r_a) and Q (d by d, r_a . r_b) ---- */
 
 struct work {
@@ -548,7 +594,7 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
         for (int a = 0; a < d; a++)
             for (int b = 0; b < d; b++)
                 w->T[(size_t)a * d + b] = a == b ? 0 :
-                    mu * (Q[(size_t)a * d + a] + Q[(size_t)b * d + b] - 2 * Q[(size_t)a * d + b]);
+                    fmax(0, mu * (Q[(size_t)a * d + a] + Q[(size_t)b * d + b] - 2 * Q[(size_t)a * d + b]));
         for (int f = 0; f + 1 < n; f++) {
             double *h = w->H + (size_t)f * d;
             if (!D->link[f]) { memset(h, 0, sizeof(double) * d); w->c[f] = 0; continue; }
@@ -1149,7 +1195,7 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
         res->best_restart = best;
         res->energy = out[best].E; res->data = out[best].data; res->velocity = out[best].velocity;
         memcpy(res->labels, out[best].labels, sizeof(int) * n);
-        if (lstate_apply(&out[best].s, D->X, n, D->Rfix, m3, res->R) < 0) rc = -1;
+        if (library_out(D, &out[best].s, res->R) < 0) rc = -1;
     } else {
         const char *why = "";
         for (int t = 0; t < nth && !*why; t++) if (wk[t].rc) why = wk[t].msg;
@@ -1199,17 +1245,27 @@ double replib_label_timed(const struct replib_data *D, double lambda, enum repli
     return E;
 }
 
-void replib_evaluate(const double *X, int n, int nv, const double *R, int d, const int *l,
-                     const double *w, const unsigned char *cut, double lambda,
+static void evaluate(const double *X, const float *Xf, const double *ref, int n, int nv, const double *R,
+                     const int *l, const double *w, const unsigned char *cut, double lambda,
                      struct replib_report *rep, double *frame_err)
 {
-    (void)d;
     size_t m3 = 3 * (size_t)nv;
     double data = 0, vel = 0, se = 0, sv = 0, me = 0, mv = 0;
     long nvel = 0;
     int worst = 0;
+    double *xb = NULL;
+    if (!X) {       /* two frames in double at a time */
+        xb = malloc(sizeof(double) * 2 * m3);
+        if (!xb) { memset(rep, 0, sizeof *rep); rep->energy = NAN; return; }
+        for (size_t k = 0; k < m3; k++) xb[m3 + k] = ref[k] + Xf[k];
+    }
     for (int f = 0; f < n; f++) {
-        const double *x = X + f * m3, *r = R + l[f] * m3;
+        if (xb) {
+            memcpy(xb, xb + m3, sizeof(double) * m3);
+            if (f + 1 < n)
+                for (size_t k = 0; k < m3; k++) xb[m3 + k] = ref[k] + Xf[(size_t)(f + 1) * m3 + k];
+        }
+        const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
         double fm = 0;
         for (int i = 0; i < nv; i++) {
             double dx = x[3 * i] - r[3 * i], dy = x[3 * i + 1] - r[3 * i + 1], dz = x[3 * i + 2] - r[3 * i + 2];
@@ -1244,4 +1300,21 @@ void replib_evaluate(const double *X, int n, int nv, const double *R, int d, con
     rep->mean_verr = nvel ? sv / ((double)nvel * nv) : 0;
     rep->max_verr = mv;
     rep->worst_frame = worst;
+    free(xb);
+}
+
+void replib_evaluate(const double *X, int n, int nv, const double *R, int d, const int *l,
+                     const double *w, const unsigned char *cut, double lambda,
+                     struct replib_report *rep, double *frame_err)
+{
+    (void)d;
+    evaluate(X, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
+}
+
+void replib_evaluate_f(const float *Xf, const double *ref, int n, int nv, const double *R, int d,
+                       const int *l, const double *w, const unsigned char *cut, double lambda,
+                       struct replib_report *rep, double *frame_err)
+{
+    (void)d;
+    evaluate(NULL, Xf, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }

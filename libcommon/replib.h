@@ -58,6 +58,12 @@ struct replib_data {
     const unsigned char *cut;   /* n flags, 1 = frame starts a clip, or NULL */
     int gram;                   /* -1 auto, 0 direct, 1 Gram, 2 Gram in single precision */
     int no_lowrank;             /* 1: never use the exact low-rank Gram matrix */
+    /* frames held elsewhere (replib_sketch.h): then X is NULL, Z holds
+     * reduced coordinates, and the pieces come from */
+    const float *Xf;            /* n by 3#V: x_f - ref in single precision, or NULL: */
+    const double *V;            /* 3#V by zdim orthonormal basis, z ~ Zr V^T */
+    const double *ref;          /* 3#V reference frame */
+    const double *sw;           /* 3#V square roots of the weights (V side), or NULL */
     /* derived by replib_prepare() */
     int N;                      /* n + nfix */
     int m3;                     /* 3#V */
@@ -158,6 +164,10 @@ struct replib_report {
 void replib_evaluate(const double *X, int n, int nv, const double *R, int d, const int *l,
                      const double *w, const unsigned char *cut, double lambda,
                      struct replib_report *rep, double *frame_err);
+/* The same with the frames as Xf + ref (Xf: n by 3#V floats, ref: 3#V). */
+void replib_evaluate_f(const float *Xf, const double *ref, int n, int nv, const double *R, int d,
+                       const int *l, const double *w, const unsigned char *cut, double lambda,
+                       struct replib_report *rep, double *frame_err);
 
 #ifdef __cplusplus
 }

@@ -7,6 +7,7 @@
  * Size selection: --max-error (Fig. 16) and --sweep (Fig. 8).
  */
 #include "replib.h"
+#include "replib_sketch.h"
 #include "blas_tune.h"
 #include "mesh.h"
 #include "columns.h"
@@ -51,6 +52,12 @@ static const char help[] =
 "                         when frames <= 12000; exact low-rank shortcut when the\n"
 "                         animation allows), full DSYRK only, single precision\n"
 "                         (faster; reports stay exact), or one GEMM per iteration\n"
+"      --stream auto|on|off  read the frames once into a low-rank sketch\n"
+"                         (auto: when they exceed 512 MB as doubles); the\n"
+"                         frames are kept in single precision within --memory\n"
+"      --rank K           sketch size (default 128)\n"
+"      --memory MB        budget for the single-precision frames (default 4096);\n"
+"                         beyond it pieces come from the sketch (approximate)\n"
 "      --threads N        restarts run on N threads (default 0: one per core);\n"
 "                         the result does not depend on N\n"
 "  -o, --output FILE      write the library to FILE instead of stdout\n"
@@ -64,7 +71,8 @@ static const char help[] =
 
 struct options {
     const char *input, *weights, *fixed, *init_labels, *labels_out, *report, *output, *sweep;
-    int d, restarts, iterations, raw, gram, threads, search;
+    int d, restarts, iterations, raw, gram, threads, search, stream, rank;
+    double memory;
     enum replib_start start;
     double lambda, max_error;
     long seed;
@@ -78,12 +86,12 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"iterations", 1, 0, 'i'}, {"seed", 1, 0, 'S'}, {"weights", 1, 0, 'w'},
         {"fixed", 1, 0, 'F'}, {"method", 1, 0, 'm'}, {"init-labels", 1, 0, 'I'},
         {"labels-out", 1, 0, 'L'}, {"report", 1, 0, 'P'}, {"max-error", 1, 0, 'E'},
-        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"threads", 1, 0, 'T'}, {"start", 1, 0, 's'}, {"search", 1, 0, 'X'}, {"output", 1, 0, 'o'},
+        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"threads", 1, 0, 'T'}, {"start", 1, 0, 's'}, {"stream", 1, 0, 'y'}, {"rank", 1, 0, 'k'}, {"memory", 1, 0, 'M'}, {"search", 1, 0, 'X'}, {"output", 1, 0, 'o'},
         {"raw", 0, 0, 'R'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->d = 20; o->lambda = 2; o->restarts = 5; o->iterations = 50; o->seed = 1;
-    o->gram = -1; o->max_error = -1; o->search = -1;
+    o->gram = -1; o->max_error = -1; o->search = -1; o->stream = -1; o->rank = 128; o->memory = 4096;
     int c;
     while ((c = getopt_long(argc, argv, "d:l:r:i:w:m:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -126,6 +134,18 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'X': o->search = arg_int(optarg, "--search");
             if (o->search < 0) usage_error("--search must be >= 0");
             break;
+        case 'y':
+            if (!strcmp(optarg, "auto")) o->stream = -1;
+            else if (!strcmp(optarg, "on")) o->stream = 1;
+            else if (!strcmp(optarg, "off")) o->stream = 0;
+            else usage_error("--stream: '%s' is not auto, on or off", optarg);
+            break;
+        case 'k': o->rank = (int)arg_long(optarg, "--rank");
+            if (o->rank < 1) usage_error("--rank must be >= 1");
+            break;
+        case 'M': o->memory = arg_double(optarg, "--memory");
+            if (!(o->memory >= 0)) usage_error("--memory must be >= 0");
+            break;
         case 'o': o->output = optarg; break;
         case 'R': o->raw = 1; break;
         case 'v': verbose++; break;
@@ -164,8 +184,20 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     ro.start = o->start; ro.search = o->search >= 0 ? o->search : 10 + d / 5;
     ro.log = log_iter;
     if (replib_learn(D, &ro, &run->res) < 0) die("%s", cm_errmsg());
-    replib_evaluate(m->V, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
-                    o->lambda, &run->rep, NULL);
+    if (D->X)
+        replib_evaluate(m->V, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
+                        o->lambda, &run->rep, NULL);
+    else if (D->Xf)
+        replib_evaluate_f(D->Xf, D->ref, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
+                          o->lambda, &run->rep, NULL);
+    else {
+        /* sketch only: the model's energy in the sketch's coordinates */
+        memset(&run->rep, 0, sizeof run->rep);
+        run->rep.energy = run->res.energy; run->rep.data = run->res.data;
+        run->rep.velocity = o->lambda > 0 ? run->res.velocity / (o->lambda / 2) : 0;
+        run->rep.mean_err = run->rep.max_err = run->rep.mean_verr = run->rep.max_verr = NAN;
+        run->rep.worst_frame = -1;
+    }
     const struct replib_result *r = &run->res;
     info(1, "d %d: energy %.10g (data %.6g, velocity %.6g), mean error %.6g, max error %.6g",
          d, run->rep.energy, run->rep.data, run->rep.velocity, run->rep.mean_err, run->rep.max_err);
@@ -185,6 +217,62 @@ static void parse_sweep(const char *s, int *d1, int *d2, int *step)
     if (*d1 < 1 || *d2 < *d1 || *step < 1) usage_error("--sweep: need 1 <= D1 <= D2 and STEP >= 1");
 }
 
+/* Read the animation once, frame by frame: in memory (m->V, double) while
+ * it is small, else (or with --stream on) into the one-pass sketch S, with
+ * the frames buffered so far fed to it.  Weights are read once the vertex
+ * count is known.  Returns 1 if the frames went to the sketch. */
+static int read_anim(const struct options *o, struct mesh *m, struct columns *wc, struct replib_sketch *S)
+{
+    struct mesh_reader r;
+    if (mesh_reader_open(&r, o->input) < 0) die("%s", cm_errmsg());
+    memset(m, 0, sizeof *m);
+    m->nv = r.nv; m->nf = r.nf;
+    m->F = malloc(sizeof(int) * 3 * (size_t)(r.nf ? r.nf : 1));
+    if (!m->F) die("out of memory");
+    memcpy(m->F, r.F, sizeof(int) * 3 * (size_t)r.nf);
+    if (o->weights && columns_read(o->weights, 1, m->nv, "vertices", wc) < 0) die("%s", cm_errmsg());
+    size_t fb = sizeof(double) * 3 * (size_t)m->nv;
+    size_t lim = o->stream == 0 ? (size_t)-1 : o->stream == 1 ? 0 : (size_t)512 << 20;
+    int cap = 0, sk = 0, rc, cut;
+    double *x = malloc(fb);
+    if (!x) die("out of memory");
+    while ((rc = mesh_reader_next(&r, x, &cut)) == 1) {
+        int f = m->nframes;
+        if (!sk && (size_t)(f + 1) * fb > lim) {
+            /* switch to the sketch: feed it what was buffered */
+            if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL,
+                                   (size_t)(o->memory * 1048576.0), (uint64_t)o->seed) < 0)
+                die("%s", cm_errmsg());
+            for (int g = 0; g < f; g++)
+                if (replib_sketch_add(S, m->V + (size_t)g * 3 * m->nv, m->cut[g]) < 0)
+                    die("cannot read '%s': %s", r.name, cm_errmsg());
+            free(m->V); m->V = NULL;
+            sk = 1;
+        }
+        if (sk) {
+            if (replib_sketch_add(S, x, cut) < 0) die("cannot read '%s': %s", r.name, cm_errmsg());
+        } else if (f == cap) {
+            cap = cap ? 2 * cap : 64;
+            double *nvv = realloc(m->V, fb * cap);
+            if (!nvv) die("out of memory (%d frames of %d vertices)", f, m->nv);
+            m->V = nvv;
+        }
+        if (!sk) memcpy(m->V + (size_t)f * 3 * m->nv, x, fb);
+        if (f % 1024 == 0) {
+            unsigned char *c = realloc(m->cut, (size_t)f + 1024);
+            if (!c) die("out of memory");
+            m->cut = c;
+        }
+        m->cut[f] = f > 0 && cut;
+        m->nframes++;
+    }
+    if (rc < 0) die("%s", cm_errmsg());
+    if (m->nframes < 1) die("cannot read '%s': no frames", r.name);
+    mesh_reader_close(&r);
+    free(x);
+    return sk;
+}
+
 int main(int argc, char **argv)
 {
     blas_tune(argv);
@@ -197,11 +285,12 @@ int main(int argc, char **argv)
         die("-d %d: the library needs at least one piece", o.d);
 
     struct mesh m;
-    if (mesh_read(o.input, &m) < 0) die("%s", cm_errmsg());
     struct columns wc = {0};
-    if (o.weights && columns_read(o.weights, 1, m.nv, "vertices", &wc) < 0) die("%s", cm_errmsg());
+    struct replib_sketch S = {0};
+    int streamed = read_anim(&o, &m, &wc, &S);
     struct mesh fx = {0};
     if (o.fixed) {
+        if (streamed) die("--fixed needs the animation in memory (--stream off)");
         if (mesh_read(o.fixed, &fx) < 0) die("%s", cm_errmsg());
         if (fx.nv != m.nv) die("cannot read '%s': %d vertices per piece, the animation has %d", o.fixed, fx.nv, m.nv);
     }
@@ -218,12 +307,20 @@ int main(int argc, char **argv)
     if (o.sweep && sd1 < nfix) die("--sweep: D1 = %d is less than the %d fixed pieces", sd1, nfix);
 
     struct replib_data D = {0};
-    D.n = m.nframes; D.nv = m.nv; D.X = m.V; D.nfix = nfix; D.Rfix = nfix ? fx.V : NULL;
-    D.w = o.weights ? wc.x : NULL; D.cut = m.cut;
-    D.gram = o.gram == 3 ? 1 : o.gram; D.no_lowrank = o.gram == 3;
-    if (replib_prepare(&D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
+    if (streamed) {
+        if (replib_sketch_finish(&S, &D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
+        D.w = o.weights ? wc.x : NULL;
+        info(1, "sketch: rank %d captures %.8f of |Z|^2; frames %s", D.zdim, S.captured,
+             D.Xf ? "kept in single precision" : "not kept (pieces from the sketch)");
+        if (D.Xf) info(1, "sketch: single-precision frames: largest rounding %.3g model units", S.float_err);
+    } else {
+        D.n = m.nframes; D.nv = m.nv; D.X = m.V; D.nfix = nfix; D.Rfix = nfix ? fx.V : NULL;
+        D.w = o.weights ? wc.x : NULL; D.cut = m.cut;
+        D.gram = o.gram == 3 ? 1 : o.gram; D.no_lowrank = o.gram == 3;
+        if (replib_prepare(&D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
+    }
     info(1, "%d frames, %d vertices, %d clips, %s back end%s (OpenBLAS %s), prepared in %.3f s", m.nframes, m.nv,
-         mesh_nclips(&m), D.K ? "Gram" : "direct", D.lowrank ? " (exact low rank)" : "", blas_corename(),
+         mesh_nclips(&m), D.K ? "Gram" : "direct", streamed ? " (sketch)" : D.lowrank ? " (exact low rank)" : "", blas_corename(),
          D.prep_seconds);
 
     if (o.sweep) {
@@ -247,6 +344,8 @@ int main(int argc, char **argv)
 
     struct run best;
     int d = o.d;
+    if (o.max_error >= 0 && streamed && !D.Xf)
+        die("--max-error needs the frames: they exceed --memory %g MB (raise it)", o.memory);
     if (o.max_error >= 0) {
         /* doubling then bisection on d (max error is nearly monotone in d) */
         int lo = nfix > 0 ? nfix : 1, hi = -1;
@@ -308,6 +407,7 @@ int main(int argc, char **argv)
     }
     FILE *out = out_open(o.output);
     struct mesh lib = {m.nv, m.nf, d, m.F, best.res.R, NULL};
+    if (streamed && D.Xf == NULL) info(1, "pieces reconstructed from the rank-%d sketch", D.zdim);
     unsigned char *cut = calloc(d, 1);
     lib.cut = cut;
     if (mesh_write(out, &lib, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
@@ -315,6 +415,7 @@ int main(int argc, char **argv)
     free(cut);
     replib_result_free(&best.res);
     replib_data_free(&D);
+    replib_sketch_free(&S);
     free(init);
     columns_free(&wc);
     if (o.fixed) mesh_free(&fx);

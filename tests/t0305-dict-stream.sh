@@ -1,0 +1,50 @@
+#!/bin/sh
+test_description='dict-learn --stream: one pass over the frames into a low-rank sketch, same result as in memory'
+. "$(dirname "$0")/test-lib.sh"
+
+test_expect_success 'setup: a 200-frame head and a perturbed (full-rank) copy' '
+	head-gen -f 200 --seed 3 >head.mesh &&
+	awk "BEGIN { srand(5) } /^frame /{ fr = 1 } fr && NF == 3 && \$1 != \"frame\" { printf \"%.6f %.6f %.6f\n\", \$1 + 1e-3 * (rand() - 0.5), \$2, \$3; next } { print }" head.mesh >noisy.mesh &&
+	mesh-info noisy.mesh | grep "^frames 200$"
+'
+for lam in 0 2; do
+	test_expect_success "lambda $lam: stream (frames kept in float) = in memory: same labels, energy to 1e-8" "
+		dict-learn -d 12 -l $lam --stream off --report off.rep --labels-out off.lab head.mesh >off.lib &&
+		dict-learn -d 12 -l $lam --stream on --report on.rep --labels-out on.lab head.mesh >on.lib &&
+		test_cmp off.lab on.lab &&
+		a=\$(awk '/^energy /{print \$2}' off.rep) && b=\$(awk '/^energy /{print \$2}' on.rep) &&
+		test_near \"\$a\" \"\$b\" \"\$(awk -v a=\$a 'BEGIN{print 1e-8 * a}')\" &&
+		anim-diff off.lib on.lib | awk '/^# rms/{ exit !(\$3 < 1e-6) }'
+	"
+	test_expect_success "lambda $lam: sketch only (--memory 0): same labels, pieces from the sketch within 1e-9" "
+		dict-learn -d 12 -l $lam --stream on --memory 0 --labels-out sk.lab head.mesh >sk.lib &&
+		test_cmp off.lab sk.lab &&
+		anim-diff off.lib sk.lib | awk '/^# rms/{ exit !(\$3 < 1e-9) }'
+	"
+done
+test_expect_success 'full-rank input: the rank-16 sketch loses little (energy within 2%, printed)' '
+	dict-learn -d 10 -l 0 --stream off --report f_off.rep noisy.mesh >/dev/null &&
+	dict-learn -v -d 10 -l 0 --stream on --rank 16 --report f_on.rep noisy.mesh 2>log >/dev/null &&
+	grep "sketch: rank 16 captures" log &&
+	a=$(awk "/^energy /{print \$2}" f_off.rep) && b=$(awk "/^energy /{print \$2}" f_on.rep) &&
+	echo "in memory $a, rank-16 sketch $b" &&
+	test_le "$b" "$(awk -v a=$a "BEGIN{print 1.02 * a}")"
+'
+test_expect_success 'read once from a pipe: same bytes as from the file' '
+	dict-learn -d 8 --stream on head.mesh >file.lib &&
+	cat head.mesh | dict-learn -d 8 --stream on >pipe.lib &&
+	test_cmp file.lib pipe.lib
+'
+test_expect_success 'auto switches to the sketch past 512 MB only (small input: in memory, same bytes)' '
+	dict-learn -d 8 head.mesh >auto.lib && dict-learn -d 8 --stream off head.mesh >off8.lib &&
+	test_cmp auto.lib off8.lib
+'
+test_expect_success 'bad uses fail cleanly' '
+	test_fails_cleanly dict-learn -d 8 --stream on --fixed on.lib head.mesh &&
+	test_fails_cleanly dict-learn --max-error 0.1 --stream on --memory 0 head.mesh &&
+	head -c 300000 head.mesh >cut.mesh &&
+	test_fails_cleanly dict-learn -d 4 --stream on cut.mesh &&
+	test_must_fail_usage dict-learn --stream maybe head.mesh &&
+	test_must_fail_usage dict-learn --rank 0 head.mesh
+'
+test_done
