@@ -445,6 +445,7 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
         for (unsigned i = 0; i < sc->mNumMeshes; i++) {
             const aiMesh *a = sc->mMeshes[i];
             if (!(a->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+            inf.morph_meshes += a->mNumAnimMeshes > 0;
             if (mi < 0) { mi = (int)i; continue; }
             const aiMesh *b = sc->mMeshes[mi];
             bool am = a->mNumAnimMeshes > 0, bm = b->mNumAnimMeshes > 0;

@@ -87,6 +87,8 @@ struct anim_import_info {
     int mesh_index;          /* index of the chosen mesh in the file */
     char mesh_name[128];     /* its mesh (or node) name */
     int ntargets;            /* morph targets of the mesh */
+    int morph_meshes;        /* meshes with morph targets in the file (counted
+                                only when the mesh was chosen automatically) */
     int anim_index;          /* chosen (first) animation, -1 if none */
     char anim_name[128];
     int nclips;              /* animations read (0: static mesh) */

@@ -66,6 +66,8 @@ test_expect_success 'a replacement animation with 2 parts: one mesh per part, pi
 	lib-assemble lib1.mesh lib1.mesh:lab1:id1 >film1.mesh &&
 	test_le "$(maxdiff film0.mesh p0.mesh)" 1e-7 &&
 	test_le "$(maxdiff film1.mesh p1.mesh)" 1e-7 &&
+	mesh-import film.glb >any.mesh 2>err && cat err &&
+	grep "warning: .film.glb.: 2 meshes have morph targets; took mesh 0 .part_0. (choose with --mesh)" err &&
 	mesh-export -o film.gltf --pieces lib0.mesh:lab0 --pieces lib1.mesh:lab1 &&
 	mesh-import --mesh part_1 film.gltf >q1.mesh && test_cmp p1.mesh q1.mesh
 '

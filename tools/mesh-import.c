@@ -291,6 +291,9 @@ static void read_animation(const struct options *o, const char *path, int fmt, s
     else
         info(1, "%s: mesh %d '%s' (%d morph targets, no morph animation): %d vertices, %d triangles, %.2f s",
              path, ai.mesh_index, ai.mesh_name, ai.ntargets, out->nv, out->nf, now_seconds() - t0);
+    if (ai.morph_meshes > 1 && !o->merge)
+        warn("'%s': %d meshes have morph targets; took mesh %d '%s' (choose with --mesh)", path,
+             ai.morph_meshes, ai.mesh_index, ai.mesh_name);
     if (o->merge)
         info(1, "merged %d other mesh%s (%d vertices) after mesh %d", ai.merged, ai.merged == 1 ? "" : "es",
              ai.merged_nv, ai.mesh_index);
