@@ -6,8 +6,10 @@
 #                              with the reason when view_skip is set
 #   shoot PAGE.html[#frame=N] OUT.png   load the page from its file path in
 #                              headless chromium (software WebGL), screenshot
-#                              the 1000x500 window into OUT.png, console log
-#                              into OUT.png.log
+#                              the 1000x500 window into OUT.png, its DOM after
+#                              the script ran into OUT.png.dom (one launch),
+#                              console log into OUT.png.log; fails unless the
+#                              page reached data-status="ready"
 #   console_clean OUT.png.log  the page said 'stopmo-status ready' and logged
 #                              nothing else (SwiftShader's own "GPU stall due
 #                              to ReadPixels" performance notes excepted)
@@ -41,8 +43,9 @@ shoot() {
     timeout 180 "$CHROMIUM" --headless --no-sandbox --disable-gpu --use-angle=swiftshader \
         --enable-unsafe-swiftshader --hide-scrollbars --no-first-run --disable-extensions \
         --user-data-dir="$TRASH/.chromium" --window-size=1000,500 --virtual-time-budget=20000 \
-        --enable-logging=stderr --v=0 --screenshot="$2" "file://$page$frag" 2>"$2.log" >/dev/null
+        --enable-logging=stderr --v=0 --screenshot="$2" --dump-dom "file://$page$frag" 2>"$2.log" >"$2.dom"
     test -s "$2" || { echo "no screenshot; chromium said:" >&2; tail -5 "$2.log" >&2; return 1; }
+    grep -q 'data-status="ready"' "$2.dom" || { echo "page not ready:" >&2; grep -o '<pre id="errors".*' "$2.dom" >&2; return 1; }
 }
 
 console_clean() {
@@ -54,4 +57,6 @@ console_clean() {
 
 # the page's background colour (web/anim-view.html: --bg #2b2f36)
 stage_fraction() { node "$TEST_DIRECTORY/png-pixels.js" bg "$1" 0,40,1000,500 43,47,54; }
+# the same in a box X0,Y0,X1,Y1 against colour R,G,B
+box_fraction() { node "$TEST_DIRECTORY/png-pixels.js" bg "$1" "$2" "$3"; }
 picture_change() { node "$TEST_DIRECTORY/png-pixels.js" diff "$1" "$2" 0,40,1000,500; }

@@ -99,6 +99,7 @@ async function main() {
   renderer.setPixelRatio(window.devicePixelRatio || 1);
   renderer.setScissorTest(true);
   stage.appendChild(renderer.domElement);
+  stage.append($('legend'), $('foot'));   // placed over the views, clear of the pieces panel
   const bg = new THREE.Color(0x2b2f36);
   // the box of everything, for the camera
   const box = new THREE.Box3();
@@ -171,8 +172,9 @@ async function main() {
     for (let i = 0; i < 256; i++) img.data.set([lut[3 * i], lut[3 * i + 1], lut[3 * i + 2], 255], 4 * i);
     ctx.putImageData(img, 0, 0);
     const fmt = (x) => (x === 0 ? '0' : x.toPrecision(3));
-    const mm = (x) => (e.mm_per_unit > 0 ? ` = ${fmt(x * e.mm_per_unit)} mm` : '');
-    lg.append(`distance to ${e.ref_name} per vertex (model units${e.mm_per_unit > 0 ? `; mm at a ${e.print_height} mm print, ${e.axis} up` : ''})`);
+    const mm = (x) => (e.mm_per_unit > 0 ? ` (${fmt(x * e.mm_per_unit)} mm)` : '');
+    lg.append(`distance to ${e.ref_name} per vertex, model units` +
+      (e.mm_per_unit > 0 ? ` (mm on a print ${e.print_height} mm tall along ${e.axis})` : ''));
     lg.appendChild(cv);
     const ticks = document.createElement('div');
     ticks.className = 'ticks';
@@ -213,10 +215,13 @@ async function main() {
     const b = $('scanmode');
     b.hidden = false;
     const modes = ['transparent', 'wireframe', 'off'];
+    const m = /scan=(transparent|wireframe|off)/.exec(location.hash);   // #frame=N&scan=wireframe
+    if (m) scanMode = m[1];
+    b.textContent = 'scan: ' + scanMode;
     b.onclick = () => {
       scanMode = modes[(modes.indexOf(scanMode) + 1) % modes.length];
       b.textContent = 'scan: ' + scanMode;
-      draw();
+      setFrame(frame);
     };
   }
 
@@ -245,7 +250,12 @@ async function main() {
         tctx.fillRect(k, 0, 1, 1);
       }
       track.title = 'piece per frame';
-      row.appendChild(track);
+      const trackBox = document.createElement('div');
+      trackBox.className = 'trackbox';
+      const marker = document.createElement('div');
+      marker.className = 'marker';
+      trackBox.append(track, marker);
+      row.appendChild(trackBox);
       const thumbs = document.createElement('div');
       thumbs.className = 'thumbs';
       const cells = [];
@@ -286,11 +296,10 @@ async function main() {
           thumbs.appendChild(cell);
           cells.push(cell);
         }
-        stage.style.bottom = '0';
       }
       row.appendChild(thumbs);
       panel.appendChild(row);
-      parts.push({ p, name, cells, used });
+      parts.push({ p, name, cells, used, marker });
     }
     thumbR.dispose();
     stage.style.bottom = panel.offsetHeight + 'px';
@@ -326,6 +335,7 @@ async function main() {
       const l = pt.p.labels[frame];
       pt.name.textContent = `${pt.p.name}: piece ${l}`;
       pt.cells.forEach((c, i) => c.classList.toggle('on', i === l));
+      pt.marker.style.left = (100 * (frame + 0.5) / nframes) + '%';
     }
     for (const s of scans)
       s.copies.forEach((m) => {
@@ -334,8 +344,9 @@ async function main() {
         m.material.opacity = scanMode === 'wireframe' ? 0.6 : 0.35;
       });
     document.body.dataset.frame = frame;
+    document.body.dataset.scan = scans.filter((s) => s.frame === frame && scanMode !== 'off').length;
     if (!keepHash && !playing) {
-      try { history.replaceState(null, '', '#frame=' + frame); } catch (e) { /* some file:// setups refuse */ }
+      try { history.replaceState(null, '', '#frame=' + frame + (scans.length ? '&scan=' + scanMode : '')); } catch (e) { /* some file:// setups refuse */ }
     }
     draw();
   }
@@ -351,6 +362,25 @@ async function main() {
     renderer.domElement.style.width = w + 'px';
     renderer.domElement.style.height = h + 'px';
     views.forEach((v, i) => { v.title.style.left = ((i + 0.5) * w / views.length) + 'px'; });
+  }
+  // start with the box of all animations filling a view (the bounding sphere
+  // would leave a wide row of heads tiny)
+  function fitCamera() {
+    const aspect = (stage.clientWidth / views.length) / Math.max(1, stage.clientHeight);
+    const t = Math.tan(THREE.MathUtils.degToRad(camera.fov / 2));
+    camera.updateMatrixWorld();
+    const inv = camera.matrixWorldInverse, c0 = centre.clone().applyMatrix4(inv);
+    let xm = 0, ym = 0, zm = 0;
+    for (let i = 0; i < 8; i++) {
+      const p = new THREE.Vector3(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
+        i & 4 ? box.max.z : box.min.z).applyMatrix4(inv).sub(c0);
+      xm = Math.max(xm, Math.abs(p.x)); ym = Math.max(ym, Math.abs(p.y)); zm = Math.max(zm, Math.abs(p.z));
+    }
+    const d = 1.1 * Math.max(xm / (t * aspect), ym / t) + zm;
+    if (!(d > 0)) return;
+    camera.position.copy(centre).add(new THREE.Vector3(...meta.camera.towards).multiplyScalar(d));
+    camera.lookAt(centre);
+    controls.update();
   }
   function draw() {
     const w = stage.clientWidth, h = stage.clientHeight, n = views.length;
@@ -368,7 +398,9 @@ async function main() {
     });
   }
   controls.addEventListener('change', draw);
-  window.addEventListener('resize', () => { layout(); draw(); });
+  let userMoved = false;   // until the user orbits, a resize re-fits the camera
+  controls.addEventListener('start', () => { userMoved = true; });
+  window.addEventListener('resize', () => { layout(); if (!userMoved) fitCamera(); draw(); });
   slider.addEventListener('input', () => setFrame(+slider.value));
   window.addEventListener('hashchange', () => { const k = hashFrame(); if (k !== null && k !== frame) setFrame(k, true); });
   const playBtn = $('play');
@@ -394,6 +426,7 @@ async function main() {
   $('foot').textContent = `${meta.nv} vertices, ${meta.nf} faces, ${nframes} frames \u00b7 positions ` +
     `stored in 16 bits: error at most ${meta.quant_error_rel.toPrecision(2)} of the bounding box diagonal \u00b7 three.js ${meta.three}`;
   layout();
+  fitCamera();
   setFrame(hashFrame() ?? 0, true);
   if (document.body.dataset.status === 'loading') document.body.dataset.status = 'ready';
   // one line for a headless browser's log (--enable-logging=stderr)
