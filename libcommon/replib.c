@@ -69,13 +69,39 @@ static void z_rows(const struct replib_data *D, const double *sw, int i0, int nb
 }
 
 /* The low-rank test streams Z by blocks of rows (never the whole N x 3#V). */
-static int gram_lowrank(const struct replib_data *D, const double *sw, double **Zr_out)
+/* The input's decimal step: the smallest q = 10^-k (k = 0..9) such that
+ * every sampled coordinate is a multiple of q to double rounding (text
+ * exports print a fixed number of decimals: OBJ 6), or 0 if none. */
+static double input_step(const double *X, size_t count)
+{
+    size_t stride = count / 65536 + 1;
+    for (int k = 0; k <= 9; k++) {
+        double p = pow(10.0, k);
+        int okk = 1;
+        for (size_t t = 0; t < count && okk; t += stride) {
+            double v = X[t] * p;
+            if (fabs(v) > 1e12 || fabs(v - nearbyint(v)) > 1e-3) okk = 0;
+        }
+        if (okk) return 1 / p;
+    }
+    return 0;
+}
+
+static int gram_lowrank(struct replib_data *D, const double *sw, double **Zr_out)
 {
     int N = D->N, m3 = D->m3, blk = 256;
     double *Zb = malloc(sizeof(double) * (size_t)blk * m3);
     if (!Zb) return cm_seterr("replib: out of memory in the low-rank Gram matrix");
     double zn = 0;      /* |Z|_F^2, summed during the first pass */
     int rc = 0;
+    /* the tolerance: what the input can represent.  Coordinates printed
+     * with step q are known to +-q/2, so a residual of RMS q/2 per
+     * (weighted) coordinate is below the input's precision; without a
+     * decimal step (binary input), 1e-12 relative as before. */
+    double q = input_step(D->X, (size_t)D->n * m3), wsum = 0;
+    for (int i = 0; i < D->nv; i++) wsum += D->w ? D->w[i] : 1;
+    double tolq = (double)N * 3 * wsum * (q / 2) * (q / 2), eprev = INFINITY;
+    D->step = q;
     for (int r = 64; r <= N / 24 && r < m3; r *= 2) {
         double *Om = malloc(sizeof(double) * (size_t)m3 * r), *Y = malloc(sizeof(double) * (size_t)N * r);
         double *Yc = malloc(sizeof(double) * (size_t)N * r), *tau = malloc(sizeof(double) * r);
@@ -130,7 +156,8 @@ static int gram_lowrank(const struct replib_data *D, const double *sw, double **
                         B, m3, 1.0, T, m3);
             for (size_t k = 0; k < (size_t)nb * m3; k++) en += T[k] * T[k];
         }
-        if (en <= 1e-24 * zn) {
+        D->lowrank_resid = sqrt(en / ((double)N * m3));
+        if (en <= 1e-24 * zn || en <= tolq) {
             free(Zb);
             /* B^T = U R (QR of the 3#V x r matrix B^T, which is B in
              * column-major storage): B B^T = R^T R, so Zr = Q R^T has
@@ -155,7 +182,10 @@ static int gram_lowrank(const struct replib_data *D, const double *sw, double **
             return r;
         }
         free(Q); free(B);
-        if (en > 1e-6 * zn) break;    /* far from low rank: stop trying */
+        /* stop when doubling the rank did not cut the residual 4-fold: the
+         * spectrum is flat there (noise), the next try would fail too */
+        if (en > 0.25 * eprev || en > 1e-4 * zn) break;
+        eprev = en;
     }
     free(Zb);
     return rc;

@@ -75,6 +75,9 @@ struct replib_data {
     double *zz;                 /* N squared norms |z_g|^2 */
     double *dd;                 /* n: |z_{f+1} - z_f|^2 (0 where not linked) */
     int lowrank;                /* rank r if Z holds exact low-rank coordinates (Z Z^T = K), else 0 */
+    double step;                /* the input's decimal step q (OBJ: 1e-6), 0 if none (binary) */
+    double lowrank_resid;       /* RMS residual per coordinate of the last low-rank try (0: none);
+                                   accepted when <= q/2 (what the input can represent) or 1e-12 relative */
     double prep_seconds;        /* time spent in replib_prepare */
 };
 

@@ -318,6 +318,9 @@ int main(int argc, char **argv)
         D.w = o.weights ? wc.x : NULL; D.cut = m.cut;
         D.gram = o.gram == 3 ? 1 : o.gram; D.no_lowrank = o.gram == 3;
         if (replib_prepare(&D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
+        if (D.lowrank_resid > 0)
+            info(1, "low-rank test: input step %g, residual RMS %.3g per coordinate: %s (rank %d)", D.step,
+                 D.lowrank_resid, D.lowrank ? "accepted" : "rejected, full Gram matrix", D.lowrank);
     }
     info(1, "%d frames, %d vertices, %d clips, %s back end%s (OpenBLAS %s), prepared in %.3f s", m.nframes, m.nv,
          mesh_nclips(&m), D.K ? "Gram" : "direct", streamed ? " (sketch)" : D.lowrank ? " (exact low rank)" : "", blas_corename(),
