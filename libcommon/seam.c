@@ -1,6 +1,8 @@
 /* seam.c -- see seam.h */
 #include "seam.h"
 #include "cm_error.h"
+#include "geodesic.h"
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -64,4 +66,41 @@ int seam_roles(const struct topology *t, const int *F, const unsigned char *is_s
     free(comp);
     free(has);
     return nfix;
+}
+
+int seam_band(const double *V, const int *F, const struct topology *t,
+              const unsigned char *is_seam, double width, unsigned char *role, double *dist)
+{
+    int nv = t->nv, ns = 0;
+    if (!(width > 0)) return cm_seterr("seam band: width must be > 0");
+    int *S = malloc(((size_t)nv + 1) * sizeof *S);
+    double *D = dist ? dist : malloc(((size_t)nv + 1) * sizeof *D);
+    if (!S || !D) {
+        free(S);
+        if (!dist) free(D);
+        return cm_seterr("seam band: out of memory");
+    }
+    for (int v = 0; v < nv; v++)
+        if (is_seam[v]) S[ns++] = v;
+    int npin = 0;
+    if (ns == 0) {
+        for (int v = 0; v < nv; v++) D[v] = INFINITY;
+    } else {
+        struct geodesic *g = geodesic_new(V, F, nv, t->nf);
+        if (!g || geodesic_solve(g, S, ns, D) < 0) {
+            geodesic_free(g);
+            free(S);
+            if (!dist) free(D);
+            return -1;
+        }
+        geodesic_free(g);
+    }
+    for (int v = 0; v < nv; v++)
+        if (role[v] == SEAM_FREE && !(D[v] <= width)) {
+            role[v] = SEAM_KEEP;
+            npin++;
+        }
+    free(S);
+    if (!dist) free(D);
+    return npin;
 }

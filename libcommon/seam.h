@@ -39,6 +39,22 @@ enum { SEAM_FREE = 0, SEAM_FIXED = 1, SEAM_KEEP = 2 };
 int seam_roles(const struct topology *t, const int *F, const unsigned char *is_seam,
                int rings, unsigned char *role);
 
+/* Confine the homogenization to a band around the seam: vertices with
+ * role SEAM_FREE whose geodesic distance (heat method on V, F, geodesic.h)
+ * from the nearest seam vertex exceeds `width` become SEAM_KEEP (zero
+ * displacement).  The squared-Laplacian minimizer then fades the seam's
+ * correction smoothly (value and slope) to zero across the band, and
+ * geometry beyond it stays exactly as it is in the input.
+ *   V      #V by 3 positions (the average mesh),  F  #F by 3 faces,
+ *   t      topology of F,  is_seam  #V flags (seam_vertices())
+ *   width  band width (units of V, > 0)
+ *   role   #V in/out (seam_roles())
+ *   dist   #V (out, may be NULL): distance from the seam, INFINITY in
+ *          components without a seam
+ * Returns the number of vertices pinned, or -1 (cm_errmsg set). */
+int seam_band(const double *V, const int *F, const struct topology *t,
+              const unsigned char *is_seam, double width, unsigned char *role, double *dist);
+
 #ifdef __cplusplus
 }
 #endif

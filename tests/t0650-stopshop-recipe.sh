@@ -9,7 +9,8 @@ run_recipe() {
 
 test_expect_success 'the recipe runs end to end' '
 	run_recipe >log 2>&1 &&
-	grep "savings:" out/summary.txt
+	grep "savings:" out/summary.txt &&
+	grep "seam-homog drift:    still vertices ([0-9]*) max 0\.[0-4]" out/summary.txt
 '
 test_expect_success 'every piece is a closed STL and the sheet covers every frame' '
 	n=$(ls out/pieces/*.stl | wc -l) && test "$n" -eq 8 &&

@@ -43,6 +43,15 @@ static const char help[] =
 "  -l, --labels FILE     per-triangle part labels, one integer >= 0 per line\n"
 "  -o, --output FILE     write the animation to FILE (default stdout)\n"
 "      --rings K         rings of neighbours fixed around the seam (default 1)\n"
+"  -m, --model M         band: the correction fades to zero across a band\n"
+"                        around the seam; beyond it the input is kept exactly\n"
+"                        (default); paper: Eq. 4-9 over the whole part\n"
+"  -w, --width W         band width, geodesic, in bbox diagonals of the\n"
+"                        average mesh (default from the data: 4 times the\n"
+"                        seam's largest excursion, at least 3 mean edges)\n"
+"      --report FILE     write 'key value' lines: seam identity, drift of still\n"
+"                        vertices (moving < 0.1%% of the diagonal in the input),\n"
+"                        mean and max change, all relative to the diagonal\n"
 "      --mass TYPE       voronoi | barycentric mass matrix (default voronoi)\n"
 "      --energy FILE     write the energy tr(D^T Q D) of each frame, one per line\n"
 "      --batch K         frames solved together (default 8; memory O(K frames))\n"
@@ -63,8 +72,18 @@ static const char help[] =
 "\n"
 "Example: seam-homog -l labels.txt walk.mesh > homog.mesh\n";
 
+/* Band width from the data (see the man page for the measurements): this
+ * many times the seam's largest excursion, at least this many mean edge
+ * lengths. */
+#define WIDTH_PER_MOTION 4.0
+#define WIDTH_EDGES 3.0
+/* "still": moving less than this (bbox diagonals) from its average */
+#define STILL 0.001
+
 struct options {
-    const char *input, *labels, *output, *energy;
+    const char *input, *labels, *output, *energy, *report;
+    int paper;
+    double width;
     int rings, raw, check, refactor, batch, no_weld;
     long seed;
     enum mass_type mass;
@@ -76,7 +95,8 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"labels", 1, 0, 'l'}, {"output", 1, 0, 'o'}, {"rings", 1, 0, 'r'},
         {"mass", 1, 0, 'M'}, {"energy", 1, 0, 'E'}, {"raw", 0, 0, 'R'},
         {"verbose", 0, 0, 'v'}, {"check", 1, 0, 'C'}, {"seed", 1, 0, 'S'},
-        {"refactor-each-frame", 0, 0, 'F'}, {"batch", 1, 0, 'B'}, {"no-weld", 0, 0, 'W'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'},
+        {"refactor-each-frame", 0, 0, 'F'}, {"model", 1, 0, 'm'}, {"width", 1, 0, 'w'},
+        {"report", 1, 0, 'P'}, {"batch", 1, 0, 'B'}, {"no-weld", 0, 0, 'W'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->rings = 1;
@@ -84,7 +104,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->seed = 1;
     o->mass = MASS_VORONOI;
     int c;
-    while ((c = getopt_long(argc, argv, "l:o:vh", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "l:o:m:w:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'l': o->labels = optarg; break;
         case 'o': o->output = optarg; break;
@@ -95,6 +115,16 @@ static void parse_args(int argc, char **argv, struct options *o)
             else usage_error("--mass: '%s' is not voronoi or barycentric", optarg);
             break;
         case 'E': o->energy = optarg; break;
+        case 'P': o->report = optarg; break;
+        case 'm':
+            if (!strcmp(optarg, "band")) o->paper = 0;
+            else if (!strcmp(optarg, "paper")) o->paper = 1;
+            else usage_error("--model: '%s' is not band or paper", optarg);
+            break;
+        case 'w':
+            o->width = arg_double(optarg, "--width");
+            if (!(o->width > 0) || !isfinite(o->width)) usage_error("--width must be > 0");
+            break;
         case 'R': o->raw = 1; break;
         case 'v': verbose++; break;
         case 'C': o->check = arg_int(optarg, "--check"); break;
@@ -116,6 +146,8 @@ static void parse_args(int argc, char **argv, struct options *o)
         usage_error("--check must be >= 0");
     if (o->output && o->energy && !strcmp(o->output, o->energy))
         usage_error("--output and --energy name the same file");
+    if (o->output && o->report && !strcmp(o->output, o->report))
+        usage_error("--output and --report name the same file");
 }
 
 /* process CPU seconds (all threads) */
@@ -127,7 +159,8 @@ static double cpu_seconds(void)
 /* Pass 1: read every frame (validating the whole stream) and sum the
  * positions into S (#V by 3); the spool keeps a copy when the input is not
  * a regular file.  Returns the number of frames. */
-static int pass_average(struct mesh_reader *r, struct mesh_spool *sp, double *S, int *rep)
+static int pass_average(struct mesh_reader *r, struct mesh_spool *sp, double *S, int *rep,
+                        double *lo, double *hi)
 {
     size_t n3 = (size_t)r->nv * 3;
     double *X = malloc((n3 + 1) * sizeof *X);
@@ -136,7 +169,11 @@ static int pass_average(struct mesh_reader *r, struct mesh_spool *sp, double *S,
     progress_start(&p, "seam-homog: average", r->nframes);
     int n = 0, cut, rc;
     while ((rc = mesh_reader_next(r, X, &cut)) > 0) {
-        for (size_t i = 0; i < n3; i++) S[i] += X[i];
+        for (size_t i = 0; i < n3; i++) {
+            S[i] += X[i];
+            if (n == 0 || X[i] < lo[i]) lo[i] = X[i];
+            if (n == 0 || X[i] > hi[i]) hi[i] = X[i];
+        }
         if (n == 0 ? coincident_find(X, r->nv, rep) < 0 : coincident_refine(X, r->nv, rep) < 0)
             die("out of memory");
         if (mesh_spool_frame(sp, X, cut) < 0)
@@ -221,7 +258,9 @@ int main(int argc, char **argv)
     size_t n3 = (size_t)nv * 3;
     double *A = malloc((n3 + 1) * sizeof *A);
     int *rep = malloc(((size_t)nv + 1) * sizeof *rep);
-    int nframes = pass_average(&r, &sp, A, rep);
+    double *lo = malloc((n3 + 1) * sizeof *lo), *hi = malloc((n3 + 1) * sizeof *hi);
+    if (!A || !rep || !lo || !hi) die("out of memory");
+    int nframes = pass_average(&r, &sp, A, rep, lo, hi);
     mesh_reader_close(&r);
     for (size_t i = 0; i < n3; i++) A[i] /= nframes;
     double t1 = now_seconds();
@@ -264,6 +303,35 @@ int main(int argc, char **argv)
     int nfixed = seam_roles(&t, W, is_seam, o.rings, role);
     int nfree = 0;
     for (int v = 0; v < nv; v++) nfree += role[v] == SEAM_FREE;
+    double diag = bbox_diagonal(A, nv), width = 0;
+    if (!o.paper && nseam > 0) {
+        if (o.width > 0) {
+            width = o.width * diag;
+        } else {
+            /* from the data: the seam's largest excursion (the diagonal of
+             * a seam vertex's box over all frames) times WIDTH_PER_MOTION,
+             * at least WIDTH_EDGES mean edge lengths */
+            double m = 0, el = 0;
+            for (int v = 0; v < nv; v++)
+                if (is_seam[v]) {
+                    double b = dist3(lo + 3 * v, hi + 3 * v);
+                    if (b > m) m = b;
+                }
+            for (int e = 0; e < t.ne; e++) el += dist3(A + 3 * t.E[2 * e], A + 3 * t.E[2 * e + 1]);
+            el /= t.ne > 0 ? t.ne : 1;
+            width = fmax(WIDTH_PER_MOTION * m, WIDTH_EDGES * el);
+            info(1, "band width from the data: seam excursion %.3g, mean edge %.3g bbox diagonals",
+                 m / diag, el / diag);
+        }
+        int npin = seam_band(A, W, &t, is_seam, width, role, NULL);
+        if (npin < 0)
+            die("cannot measure the band around the seam: %s", cm_errmsg());
+        nfree -= npin;
+        info(1, "band model: width %.3g bbox diagonals; %d vertices beyond it kept as they are",
+             width / diag, npin);
+    }
+    free(lo);
+    free(hi);
     info(1, "%d vertices, %d faces: %d seam vertices, %d fixed (%d ring%s), %d free",
          nv, nf, nseam, nfixed, o.rings, o.rings == 1 ? "" : "s", nfree);
     if (nseam == 0)
@@ -300,6 +368,10 @@ int main(int argc, char **argv)
     struct rng g;
     rng_seed(&g, (uint64_t)o.seed);
     double worst = INFINITY, Esum = 0, Emax = 0;
+    /* per vertex: largest input motion from the average, largest change */
+    double *motion = calloc(nv + 1, sizeof *motion), *change = calloc(nv + 1, sizeof *change);
+    double change_sum = 0, seam_dev = 0;
+    if (!motion || !change) die("out of memory");
     struct progress p;
     progress_start(&p, "seam-homog", nframes);
     int k = 0, rc = 1;
@@ -342,6 +414,17 @@ int main(int argc, char **argv)
             if (nwelded)            /* rep[v] <= v: one forward sweep */
                 for (int v = 0; v < nv; v++)
                     if (rep[v] != v) memcpy(Y + 3 * v, Y + 3 * rep[v], 3 * sizeof *Y);
+            for (int v = 0; v < nv; v++) {
+                const double *x = Yb + n3 * b + 3 * v;
+                double m = dist3(x, A + 3 * v), c = dist3(x, Y + 3 * v);
+                if (m > motion[v]) motion[v] = m;
+                if (c > change[v]) change[v] = c;
+                change_sum += c;
+                if (is_seam[v]) {
+                    double sd = dist3(Y + 3 * v, A + 3 * v);
+                    if (sd > seam_dev) seam_dev = sd;
+                }
+            }
             if (mesh_writer_frame(&w, Y, cuts[b]) < 0)
                 die("cannot write output: %s", cm_errmsg());
             if (ef) {
@@ -366,6 +449,32 @@ int main(int argc, char **argv)
     if (ef) out_close(ef);
     double t3 = now_seconds(), c3 = cpu_seconds();
     info(1, "energy: mean %.6g, max %.6g", Esum / nframes, Emax);
+    {
+        int nstill = 0;
+        double still_max = 0, cmax = 0, dg = diag > 0 ? diag : 1;
+        for (int v = 0; v < nv; v++) {
+            if (motion[v] < STILL * dg) {
+                nstill++;
+                if (change[v] > still_max) still_max = change[v];
+            }
+            if (change[v] > cmax) cmax = change[v];
+        }
+        double cmean = change_sum / ((double)nv * nframes) / dg;
+        info(1, "change (bbox diagonals): mean %.3g, max %.3g; %d still vertices (input motion < %g): "
+             "max change %.3g; seam: largest distance from its average %.3g",
+             cmean, cmax / dg, nstill, STILL, still_max / dg, seam_dev / dg);
+        if (o.report) {
+            FILE *rf = out_open(o.report);
+            fprintf(rf, "model %s\nwidth %.17g\nframes %d\nvertices %d\nseam_vertices %d\n"
+                    "seam_max_deviation %.17g\nstill_threshold %g\nstill_vertices %d\n"
+                    "still_max_change %.17g\nmean_change %.17g\nmax_change %.17g\n",
+                    o.paper ? "paper" : "band", width / dg, nframes, nv, nseam,
+                    seam_dev / dg, STILL, nstill, still_max / dg, cmean, cmax / dg);
+            out_close(rf);
+        }
+    }
+    free(motion);
+    free(change);
     if (o.check > 0)
         info(1, "--check: %d perturbations per frame, smallest relative energy increase %.3g",
              o.check, worst);
