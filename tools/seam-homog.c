@@ -50,7 +50,7 @@ static const char help[] =
 "                        average mesh (default from the data: 4 times the\n"
 "                        seam's largest excursion, at least 3 mean edges)\n"
 "      --report FILE     write 'key value' lines: seam identity, drift of still\n"
-"                        vertices (moving < 0.1%% of the diagonal in the input),\n"
+"                        vertices (moving < 0.1% of the diagonal in the input),\n"
 "                        mean and max change, all relative to the diagonal\n"
 "      --mass TYPE       voronoi | barycentric mass matrix (default voronoi)\n"
 "      --energy FILE     write the energy tr(D^T Q D) of each frame, one per line\n"
