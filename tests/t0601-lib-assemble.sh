@@ -127,7 +127,7 @@ test_expect_success 'bad input: map count, vertex indices, labels, missing files
 	test_fails_cleanly lib-assemble cyl.mesh lib_0.mesh:neg.lab:p_0.map &&
 	seq 0 4 >five.lab &&
 	test_fails_cleanly lib-assemble cyl.mesh lib_0.mesh:id.lab:p_0.map lib_1.mesh:five.lab:p_1.map &&
-	grep "5 labels, but part 0 has 6 frames" .err &&
+	grep ".five.lab.: 5 labels, but .cyl.mesh. has 6 frames" .err &&
 	printf "0\n1.5\n2\n3\n4\n5\n" >frac.lab &&
 	test_fails_cleanly lib-assemble cyl.mesh lib_0.mesh:frac.lab:p_0.map &&
 	printf "0\nabc\n" >word.lab &&

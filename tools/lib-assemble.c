@@ -125,10 +125,16 @@ int main(int argc, char **argv)
             die("%s", cm_errmsg());
         if (P[p].nlabels < 1)
             die("cannot read '%s': no labels (one piece number per frame expected)", lname);
+        /* one label per frame: of BASE when its header says how many
+         * (more than one), else the same count in every part */
+        if (base.nframes > 1 && P[p].nlabels != base.nframes)
+            die("cannot read '%s': %d labels, but '%s' has %d frames (one piece label per frame)",
+                lname, P[p].nlabels, base.name, base.nframes);
         if (nframes >= 0 && P[p].nlabels != nframes)
-            die("cannot read '%s': %d labels, but part 0 has %d frames", lname, P[p].nlabels,
-                nframes);
-        nframes = P[p].nlabels;
+            die("cannot read '%s': %d labels, but '%s' (part 0) has %d: every part needs one label "
+                "per frame", lname, P[p].nlabels,
+                strcmp(lab_path[0], "-") ? lab_path[0] : "<stdin>", nframes);
+        if (nframes < 0) nframes = P[p].nlabels;
     }
     free(owner);
 

@@ -24,9 +24,11 @@ static const char help[] =
 "Options:\n"
 "  -l, --labels FILE     per-triangle part labels, one integer >= 0 per line\n"
 "  -o, --output PATTERN  printf pattern with one %d for the part number\n"
-"                        (default part_%d.mesh); with --part, '-' is stdout\n"
+"                        (default part_%d.mesh); with --part, also a plain\n"
+"                        file name, or '-' for stdout\n"
 "  -m, --map PATTERN     also write, per part, the input vertex index of each\n"
-"                        part vertex (one per line), e.g. part_%d.map\n"
+"                        part vertex (one per line), e.g. part_%d.map (with\n"
+"                        --part, also a plain file name)\n"
 "  -p, --part K          write only part K (to stdout unless -o is given)\n"
 "      --raw             write the raw (binary) MESH variant (or STOPMO_RAW=1)\n"
 "  -v, --verbose         part sizes on stderr\n"
@@ -69,11 +71,11 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->part < 0 && !o->output)
         o->output = "part_%d.mesh";
     if (o->output && strcmp(o->output, "-"))
-        pattern_check(o->output, "--output", 1);
+        pattern_check(o->output, "--output", o->part < 0);
     else if (o->output && o->part < 0)
         usage_error("--output -: only one part (--part K) can go to stdout");
     if (o->map)
-        pattern_check(o->map, "--map", 1);
+        pattern_check(o->map, "--map", o->part < 0);
 }
 
 struct part {
