@@ -28,8 +28,14 @@ static const char help[] =
 "\n"
 "Options:\n"
 "  -t, --thickness T      wall thickness in model units\n"
+"  -m, --model FILE       the whole model (a MESH stream, its first frame, e.g.\n"
+"                         the seam-homog output): what the options below are\n"
+"                         relative to, so every part gets the same wall\n"
 "  -r, --thickness-rel R  wall thickness as a fraction of the bounding-box\n"
-"                         diagonal of the first piece (default 0.02)\n"
+"                         diagonal of --model (default 0.02; without --model:\n"
+"                         of this library's first piece, with a warning)\n"
+"      --thickness-mm T   wall thickness T mm on a print of --model that is\n"
+"                         --height H mm tall along --axis (x, y or z; default y)\n"
 "      --outward          offset along +normal instead (normals point inward)\n"
 "  -o, --output FILE      write to FILE instead of stdout\n"
 "      --raw              raw (binary) MESH output\n"
@@ -37,26 +43,40 @@ static const char help[] =
 "  -h, --help             show this help\n"
 "      --version          show the version\n"
 "\n"
-"Example: shell-extrude -t 1.5 lower.lib | mesh-export -k 0 -F stl -o piece0.stl\n";
+"Example: shell-extrude -m homog.mesh --thickness-mm 1 --height 40 lower.lib > lower.solid\n"
+"         shell-extrude -t 1.5 lower.lib | mesh-export -k 0 -F stl -o piece0.stl\n";
 
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
     static const struct option lo[] = {
         {"thickness", 1, 0, 't'}, {"thickness-rel", 1, 0, 'r'}, {"outward", 0, 0, 'O'},
+        {"model", 1, 0, 'm'}, {"thickness-mm", 1, 0, 'T'}, {"height", 1, 0, 'H'}, {"axis", 1, 0, 'A'},
         {"output", 1, 0, 'o'}, {"raw", 0, 0, 'R'}, {"verbose", 0, 0, 'v'},
         {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
-    double thick = -1, rel = 0.02;
-    int outward = 0, raw = 0, c;
-    const char *output = NULL;
-    while ((c = getopt_long(argc, argv, "t:r:o:vh", lo, NULL)) != -1) {
+    double thick = -1, rel = 0.02, mm = -1, height = -1;
+    int outward = 0, raw = 0, c, axis = 1, nthick = 0;
+    const char *output = NULL, *model = NULL;
+    while ((c = getopt_long(argc, argv, "t:r:m:o:vh", lo, NULL)) != -1) {
         switch (c) {
-        case 't': thick = arg_double(optarg, "--thickness");
+        case 't': thick = arg_double(optarg, "--thickness"); nthick++;
             if (!(thick > 0) || !isfinite(thick)) usage_error("--thickness must be > 0");
             break;
-        case 'r': rel = arg_double(optarg, "--thickness-rel");
+        case 'r': rel = arg_double(optarg, "--thickness-rel"); nthick++;
             if (!(rel > 0) || !isfinite(rel)) usage_error("--thickness-rel must be > 0");
             break;
+        case 'T': mm = arg_double(optarg, "--thickness-mm"); nthick++;
+            if (!(mm > 0) || !isfinite(mm)) usage_error("--thickness-mm must be > 0");
+            break;
+        case 'H': height = arg_double(optarg, "--height");
+            if (!(height > 0) || !isfinite(height)) usage_error("--height must be > 0");
+            break;
+        case 'A':
+            if (strlen(optarg) != 1 || optarg[0] < 'x' || optarg[0] > 'z')
+                usage_error("--axis must be x, y or z");
+            axis = optarg[0] - 'x';
+            break;
+        case 'm': model = optarg; break;
         case 'O': outward = 1; break;
         case 'o': output = optarg; break;
         case 'R': raw = 1; break;
@@ -67,6 +87,33 @@ int main(int argc, char **argv)
         }
     }
     if (optind < argc - 1) usage_error("expected at most one input FILE");
+    if (nthick > 1) usage_error("give one of --thickness, --thickness-rel, --thickness-mm");
+    if (mm > 0 && (height < 0 || !model))
+        usage_error("--thickness-mm needs --height H (mm) and --model FILE (the whole model)");
+    if (height > 0 && mm < 0) usage_error("--height goes with --thickness-mm");
+    if (model && thick > 0) usage_error("--thickness is in model units: --model is not used with it");
+    /* the whole model's first frame: its bbox diagonal and extent */
+    double mdiag = 0, mext = 0;
+    if (model) {
+        struct mesh_reader mr;
+        if (mesh_reader_open(&mr, model) < 0) die("%s", cm_errmsg());
+        double *X = malloc(sizeof(double) * 3 * ((size_t)mr.nv + 1));
+        if (!X) die("out of memory");
+        int rc = mesh_reader_next(&mr, X, NULL);
+        if (rc < 0) die("%s", cm_errmsg());
+        if (rc == 0) die("cannot read '%s': the stream has no frames", model);
+        double lo = INFINITY, hi = -INFINITY;
+        for (int i = 0; i < mr.nv; i++) {
+            if (X[3 * i + axis] < lo) lo = X[3 * i + axis];
+            if (X[3 * i + axis] > hi) hi = X[3 * i + axis];
+        }
+        mdiag = bbox_diagonal(X, mr.nv);
+        mext = hi - lo;
+        free(X);
+        mesh_reader_close(&mr);
+        if (!(mdiag > 0) || (mm > 0 && !(mext > 0)))
+            die("cannot read '%s': the model has no extent%s", model, mm > 0 ? " along --axis" : "");
+    }
     const char *input = optind < argc ? argv[optind] : NULL, *iname = input ? input : "<stdin>";
     struct mesh m;
     if (mesh_read(input, &m) < 0) die("%s", cm_errmsg());
@@ -78,7 +125,16 @@ int main(int argc, char **argv)
     int nl = boundary_loops(&t, m.F, &Ls, &L);
     if (nl < 0) die("cannot read '%s': %s", iname, cm_errmsg());
     int nb = Ls[nl];
-    if (thick < 0) thick = rel * bbox_diagonal(mesh_frame(&m, 0), nv);
+    if (thick < 0 && mm > 0) {
+        thick = mm * mext / height;
+        info(1, "%g mm at %g mm tall: %g model units", mm, height, thick);
+    } else if (thick < 0 && model) {
+        thick = rel * mdiag;
+    } else if (thick < 0) {
+        thick = rel * bbox_diagonal(mesh_frame(&m, 0), nv);
+        warn("thickness %g relative to this library's own box: other parts get other walls "
+             "(give --model WHOLE.mesh)", thick);
+    }
     if (!(thick > 0)) die("cannot read '%s': zero-size piece, no thickness", iname);
     double sgn = outward ? 1 : -1;
 
