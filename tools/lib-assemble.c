@@ -125,15 +125,19 @@ int main(int argc, char **argv)
             die("%s", cm_errmsg());
         if (P[p].nlabels < 1)
             die("cannot read '%s': no labels (one piece number per frame expected)", lname);
-        /* one label per frame: of BASE when its header says how many
-         * (more than one), else the same count in every part */
-        if (base.nframes > 1 && P[p].nlabels != base.nframes)
-            die("cannot read '%s': %d labels, but '%s' has %d frames (one piece label per frame)",
-                lname, P[p].nlabels, base.name, base.nframes);
-        if (nframes >= 0 && P[p].nlabels != nframes)
+        /* one label per frame, the same count in every part; when they
+         * differ and BASE's frame count matches one, the other is named */
+        if (nframes >= 0 && P[p].nlabels != nframes) {
+            const char *l0 = strcmp(lab_path[0], "-") ? lab_path[0] : "<stdin>";
+            if (base.nframes == P[p].nlabels)
+                die("cannot read '%s': %d labels, but '%s' has %d frames (one piece label per frame)",
+                    l0, nframes, base.name, base.nframes);
+            if (base.nframes == nframes)
+                die("cannot read '%s': %d labels, but '%s' has %d frames (one piece label per frame)",
+                    lname, P[p].nlabels, base.name, base.nframes);
             die("cannot read '%s': %d labels, but '%s' (part 0) has %d: every part needs one label "
-                "per frame", lname, P[p].nlabels,
-                strcmp(lab_path[0], "-") ? lab_path[0] : "<stdin>", nframes);
+                "per frame", lname, P[p].nlabels, l0, nframes);
+        }
         if (nframes < 0) nframes = P[p].nlabels;
     }
     free(owner);
