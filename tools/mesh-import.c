@@ -309,30 +309,13 @@ static void read_frames(const struct options *o, struct mesh *out)
     double t0 = now_seconds();
     progress_start(&p, "mesh-import", o->nfiles);
     for (int k = 0; k < o->nfiles; k++) {
-        const char *path = o->files[k];
-        int fmt;
-        enum kind kd = file_kind(o, path, &fmt);
-        if (kd == K_ANIM)
-            die("cannot read '%s': an animation file cannot be a frame of a sequence", path);
-        if (kd == K_UNKNOWN)
-            die("cannot read '%s': unknown mesh format (expected .obj, .off, .ply or .stl)", path);
         struct mesh m;
-        if (meshio_read(path, fmt, &m) < 0)
-            die("%s", cm_errmsg());
+        read_frame_file(o, k, k ? &first : NULL, &m);
         if (k == 0) {
             first = m;
             if (mesh_alloc(out, m.nv, m.nf, o->nfiles) < 0)
                 die("%s", cm_errmsg());
             memcpy(out->F, m.F, (size_t)m.nf * 3 * sizeof *m.F);
-        } else if (m.nv != first.nv || m.nf != first.nf ||
-                   memcmp(m.F, first.F, (size_t)m.nf * 3 * sizeof *m.F)) {
-            if (m.nv != first.nv || m.nf != first.nf)
-                die("cannot read '%s': connectivity differs from '%s' (%d vertices, %d triangles instead of %d, %d)",
-                    path, o->files[0], m.nv, m.nf, first.nv, first.nf);
-            int t = 0;
-            while (!memcmp(m.F + 3 * t, first.F + 3 * t, 3 * sizeof *m.F)) t++;
-            die("cannot read '%s': connectivity differs from '%s' (triangle %d differs)",
-                path, o->files[0], t);
         }
         memcpy(mesh_frame(out, k), m.V, (size_t)m.nv * 3 * sizeof *m.V);
         if (k > 0) mesh_free(&m);
