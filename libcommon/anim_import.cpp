@@ -238,11 +238,12 @@ struct Gltf {
         } else if (uri->t == JVal::STR && !uri->str.compare(0, 5, "data:")) {
             size_t comma = uri->str.find(',');
             if (comma == std::string::npos) return nullptr;
-            int acc = 0, nb = 0;
+            unsigned acc = 0;    /* only its low bits matter: unsigned wraps (int overflowed) */
+            int nb = 0;
             for (size_t k = comma + 1; k < uri->str.size(); k++) {
                 int v = b64val((unsigned char)uri->str[k]);
                 if (v < 0) continue;
-                acc = acc << 6 | v;
+                acc = acc << 6 | (unsigned)v;
                 nb += 6;
                 if (nb >= 8) {
                     nb -= 8;

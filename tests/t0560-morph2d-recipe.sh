@@ -5,7 +5,7 @@ test_description='examples/morph2d: elephant poses -> compat-tri -> pose-space p
 need_shared_data shapes2d/poses/elephant-pose6.rings.txt
 
 test_expect_success 'the recipe runs and every frame is valid' '
-	make -s -C "$STOPMO_ROOT/examples/morph2d" BIN="$STOPMO_ROOT/bin" DATA="$SHARED_DATA/shapes2d/poses" \
+	make -s -C "$STOPMO_ROOT/examples/morph2d" BIN="$STOPMO_BIN" DATA="$SHARED_DATA/shapes2d/poses" \
 		OUT="$TRASH/out" FRAMES=12 >log 2>&1 &&
 	for f in poses.svg morph.svg morph-grid.svg linear-grid.svg weights.txt; do test -s out/$f || return 1; done &&
 	grep -q "^frames 12" out/morph.mesh && grep -q "<animate" out/morph.svg &&

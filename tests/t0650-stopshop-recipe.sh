@@ -3,7 +3,7 @@ test_description='examples/stopshop: the whole StopShop recipe on a small genera
 . "$(dirname "$0")/test-lib.sh"
 
 run_recipe() {
-	make -s -C "$STOPMO_ROOT/examples/stopshop" BIN="$STOPMO_ROOT/bin" OUT="$TRASH/out" \
+	make -s -C "$STOPMO_ROOT/examples/stopshop" BIN="$STOPMO_BIN" OUT="$TRASH/out" \
 		FRAMES=36 PIECES=4 SWEEP=2:6:2 "$@"
 }
 

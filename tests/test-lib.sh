@@ -16,7 +16,10 @@
 set -u
 TEST_DIRECTORY=$(cd "$(dirname "$0")" && pwd)
 STOPMO_ROOT=$(cd "$TEST_DIRECTORY/.." && pwd)
-PATH="$STOPMO_ROOT/bin:$PATH"
+# STOPMO_BIN: the tools to test (make check-sanitize sets bin-asan)
+STOPMO_BIN=${STOPMO_BIN:-$STOPMO_ROOT/bin}
+export STOPMO_BIN
+PATH="$STOPMO_BIN:$PATH"
 export PATH
 SHARED_DATA=${STOPMO_SHARED_DATA:-$STOPMO_ROOT/../shared/data}
 export STOPMO_PROGRESS=0
@@ -24,7 +27,7 @@ unset STOPMO_RAW
 test_count=0
 test_failed=0
 test_skip_all=
-TRASH="$STOPMO_ROOT/build/trash/$(basename "$0" .sh)"
+TRASH="${STOPMO_TRASH:-$STOPMO_ROOT/build/trash}/$(basename "$0" .sh)"
 rm -rf "$TRASH"
 mkdir -p "$TRASH"
 cd "$TRASH" || exit 1
