@@ -17,6 +17,9 @@ test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage anim-view --error bend.mesh --error-views 3 bend.mesh twist.mesh &&
 	test_must_fail_usage anim-view --up w bend.mesh &&
 	test_must_fail_usage anim-view --scan 99:ball.mesh bend.mesh &&
+	test_must_fail_usage anim-view --error bend.mesh --error-max p0 twist.mesh &&
+	test_must_fail_usage anim-view --error bend.mesh --error-max p101 twist.mesh &&
+	test_must_fail_usage anim-view --error-max 1 twist.mesh &&
 	anim-view --help >help && grep -q "^Usage: anim-view" help
 '
 test_expect_view 'bad input: one line naming the file, exit 1, nothing written' '
@@ -40,6 +43,20 @@ test_expect_view 'the page embeds everything: no src, no link, only data: module
 	grep -o "\"[a-z/.A-Z-]*\":\"[a-z]*:" page.html | sed "s/.*:\"//" | sort -u >schemes &&
 	echo "data:" >expect && test_cmp expect schemes &&
 	test $(grep -c "<script type=\"application/octet-stream\"" page.html) -eq 4
+'
+test_expect_view '--error-max p50: the colour scale tops at the median distance (nearest rank), max unchanged' '
+	anim-view --error bend.mesh --error-max p50 -o p50.html twist.mesh &&
+	anim-diff --summary bend.mesh twist.mesh >diff.txt &&
+	awk "FNR == 1 { k = 0 } /^frame/ { k++; i = 0; next } /^[a-zA-Z]/ { next } FNR == NR { X[k, i++] = \$0; next }
+	     { split(X[k, i++], a, \" \"); print sqrt((a[1] - \$1)^2 + (a[2] - \$2)^2 + (a[3] - \$3)^2) }" \
+	  bend.mesh twist.mesh >dist.txt &&
+	n=$(wc -l <dist.txt) && test "$n" -eq 36000 &&
+	median=$(sort -g dist.txt | sed -n "$((n / 2))p") &&
+	top=$(grep -o "\"scale_max\":[0-9.e+-]*" p50.html | cut -d: -f2) &&
+	max=$(grep -o "\"max\":[0-9.e+-]*" p50.html | cut -d: -f2) &&
+	echo "median $median, scale top $top, max $max" &&
+	test_near "$top" "$median" 1e-6 &&
+	test_near "$max" "$(awk "\$1 == \"max\" { print \$2 }" diff.txt)" 1e-5
 '
 test_expect_view 'twist is stored once although shown twice' '
 	anim-view -o one.html twist.mesh && anim-view -o two.html twist.mesh twist.mesh &&

@@ -46,8 +46,9 @@ static const char help[] =
 "      --print-height MM  error legend also in millimetres for a print whose\n"
 "                        REF is MM tall along --axis (over all frames)\n"
 "      --axis x|y|z      height axis for --print-height (default y)\n"
-"      --error-max E     top of the error colour scale in model units\n"
-"                        (default: the largest error)\n"
+"      --error-max E|pN  top of the error colour scale: E model units, or the\n"
+"                        N-th percentile of all errors shown (e.g. p99; larger\n"
+"                        errors take the top colour); default: the largest\n"
 "      --pieces LABELS[:LIB]  per-frame piece labels of one part (dict-learn\n"
 "                        --labels-out); with LIB (its library, one piece per\n"
 "                        frame) the library is shown as thumbnails; repeat\n"
@@ -80,7 +81,7 @@ struct options {
     char *titles[MAXV];
     int ntitles;
     int *error_views, nerror_views;
-    double print_height, error_max, fps, azimuth, elevation;
+    double print_height, error_max, error_pct, fps, azimuth, elevation;
     int axis, up;
     const char *pieces[MAXV];
     int npieces;
@@ -131,7 +132,14 @@ static void parse_args(int argc, char **argv, struct options *o, const char ***f
             if (strlen(optarg) != 1 || !strchr("xyz", optarg[0])) usage_error("--axis must be x, y or z");
             o->axis = optarg[0] - 'x';
             break;
-        case 'M': o->error_max = arg_double(optarg, "--error-max");
+        case 'M':
+            if (optarg[0] == 'p') {
+                o->error_pct = arg_double(optarg + 1, "--error-max percentile");
+                if (!(o->error_pct > 0 && o->error_pct <= 100))
+                    usage_error("--error-max pN wants a percentile N in (0, 100]");
+                break;
+            }
+            o->error_max = arg_double(optarg, "--error-max");
             if (!(o->error_max > 0)) usage_error("--error-max must be positive");
             break;
         case 'p':
@@ -170,7 +178,7 @@ static void parse_args(int argc, char **argv, struct options *o, const char ***f
     if (*nfiles > MAXV) usage_error("at most %d views", MAXV);
     if (o->ntitles && o->ntitles != *nfiles)
         usage_error("--titles names %d views, but there are %d", o->ntitles, *nfiles);
-    if ((o->nerror_views || o->print_height > 0 || o->error_max > 0) && !o->error)
+    if ((o->nerror_views || o->print_height > 0 || o->error_max > 0 || o->error_pct > 0) && !o->error)
         usage_error("--error-views, --print-height and --error-max need --error");
     for (int i = 0; i < o->nerror_views; i++)
         if (o->error_views[i] < 1 || o->error_views[i] > *nfiles)
@@ -297,6 +305,12 @@ static void put_data_url(const char *name)
 
 /* ---- reading ---- */
 
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
 static int find_anim(struct anim *A, int n, const char *path)
 {
     for (int i = 0; i < n; i++)
@@ -352,13 +366,21 @@ int main(int argc, char **argv)
 
     /* error views and the error's range */
     int is_error_view[MAXV] = {0};
-    double err_max = 0, err_sum = 0, scale_mm = 0;
+    double err_max = 0, err_sum = 0, scale_mm = 0, scale_top = 0;
     if (ref >= 0) {
         if (o.nerror_views)
             for (int i = 0; i < o.nerror_views; i++) is_error_view[o.error_views[i] - 1] = 1;
         else
             for (int i = 0; i < nfiles; i++) is_error_view[i] = view_anim[i] != ref;
         long cnt = 0;
+        double *all = NULL;   /* every distance shown, for --error-max pN */
+        size_t nall = 0;
+        if (o.error_pct > 0) {
+            int k = 0;
+            for (int i = 0; i < nfiles; i++) k += is_error_view[i];
+            all = malloc(((size_t)k * nframes * m0->nv + 1) * sizeof *all);
+            if (!all) die("out of memory");
+        }
         for (int i = 0; i < nfiles; i++) {
             if (!is_error_view[i]) continue;
             const struct mesh *a = &A[view_anim[i]].m, *r = &A[ref].m;
@@ -368,10 +390,22 @@ int main(int argc, char **argv)
                                 (x[2] - y[2]) * (x[2] - y[2]));
                 err_sum += d;
                 if (d > err_max) err_max = d;
+                if (all) all[nall++] = d;
                 cnt++;
             }
         }
         if (cnt) err_sum /= cnt;
+        if (all) {
+            if (nall) {
+                qsort(all, nall, sizeof *all, cmp_double);
+                /* nearest rank */
+                size_t r = (size_t)ceil(o.error_pct / 100 * nall);
+                scale_top = all[r ? r - 1 : 0];
+            }
+            free(all);
+        }
+        if (o.error_max > 0) scale_top = o.error_max;
+        else if (!(scale_top > 0)) scale_top = err_max;
         if (o.print_height > 0) {
             double lo = INFINITY, hi = -INFINITY;
             const struct mesh *r = &A[ref].m;
@@ -473,8 +507,8 @@ int main(int argc, char **argv)
         fprintf(meta, ",\"error\":{\"ref\":%d,\"ref_name\":", ref);
         {   FILE *save = out; out = meta; put_json_string(shown_name(o.error)); out = save; }
         fprintf(meta, ",\"max\":%.17g,\"mean\":%.17g,\"scale_max\":%.17g,\"print_height\":%.17g,"
-                "\"mm_per_unit\":%.17g,\"axis\":\"%c\",\"lut\":[", err_max, err_sum,
-                o.error_max > 0 ? o.error_max : err_max, o.print_height, scale_mm, 'x' + o.axis);
+                "\"mm_per_unit\":%.17g,\"axis\":\"%c\",\"percentile\":%.17g,\"lut\":[", err_max,
+                err_sum, scale_top, o.print_height, scale_mm, 'x' + o.axis, o.error_pct);
         for (int i = 0; i < 256 * 3; i++) fprintf(meta, "%s%d", i ? "," : "", lut[i]);
         fputs("]}", meta);
     }

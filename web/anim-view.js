@@ -173,19 +173,22 @@ async function main() {
     ctx.putImageData(img, 0, 0);
     const fmt = (x) => (x === 0 ? '0' : x.toPrecision(3));
     const mm = (x) => (e.mm_per_unit > 0 ? ` (${fmt(x * e.mm_per_unit)} mm)` : '');
-    lg.append(`distance to ${e.ref_name} per vertex, model units` +
-      (e.mm_per_unit > 0 ? ` (mm on a print ${e.print_height} mm tall along ${e.axis})` : ''));
-    lg.appendChild(cv);
+    const head = document.createElement('div');
+    head.textContent = `error: distance to ${e.ref_name}` +
+      (e.mm_per_unit > 0 ? `; mm on a print ${e.print_height} mm tall along ${e.axis}` : '');
+    lg.append(head, cv);
     const ticks = document.createElement('div');
     ticks.className = 'ticks';
+    const clipped = e.scale_max < e.max;
     for (const t of [0, 0.5, 1]) {
       const s = document.createElement('span');
-      s.textContent = fmt(t * e.scale_max) + (t ? mm(t * e.scale_max) : '');
+      s.textContent = (t === 1 && clipped ? '\u2265 ' : '') + fmt(t * e.scale_max) + (t ? mm(t * e.scale_max) : '');
       ticks.appendChild(s);
     }
     lg.appendChild(ticks);
     const sum = document.createElement('div');
-    sum.textContent = `mean ${fmt(e.mean)}${mm(e.mean)}, max ${fmt(e.max)}${mm(e.max)}`;
+    sum.textContent = `mean ${fmt(e.mean)}${mm(e.mean)}, max ${fmt(e.max)}${mm(e.max)}` +
+      (e.percentile > 0 ? ` \u00b7 scale top: ${e.percentile}th percentile` : '');
     lg.appendChild(sum);
     lg.hidden = false;
   }
