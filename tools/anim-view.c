@@ -203,15 +203,15 @@ static void put_n(const void *p, size_t n)
 }
 
 /* a JSON string; '<' escaped so that no '</script' can close the element */
-static void put_json_string(const char *s)
+static void json_string(FILE *f, const char *s)
 {
-    fputc('"', out);
+    fputc('"', f);
     for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
-        if (*p == '"' || *p == '\\') fprintf(out, "\\%c", *p);
-        else if (*p < 0x20 || *p == '<' || *p == '>' || *p == '&') fprintf(out, "\\u%04x", *p);
-        else fputc(*p, out);
+        if (*p == '"' || *p == '\\') fprintf(f, "\\%c", *p);
+        else if (*p < 0x20 || *p == '<' || *p == '>' || *p == '&') fprintf(f, "\\u%04x", *p);
+        else fputc(*p, f);
     }
-    fputc('"', out);
+    fputc('"', f);
 }
 
 static void put_html_text(const char *s)
@@ -467,7 +467,7 @@ int main(int argc, char **argv)
     FILE *meta = open_memstream(&metabuf, &metalen);
     if (!meta) die("out of memory");
     fputs("{\"version\":1,\"title\":", meta);
-    {   FILE *save = out; out = meta; put_json_string(o.title); out = save; }
+    json_string(meta, o.title);
     fprintf(meta, ",\"fps\":%.17g,\"nv\":%d,\"nf\":%d,\"nframes\":%d,\"cuts\":[", o.fps, m0->nv,
             m0->nf, nframes);
     for (int k = 0, first = 1; k < nframes; k++)
@@ -478,7 +478,7 @@ int main(int argc, char **argv)
     double qworst = 0;
     for (int i = 0; i < na; i++) {
         fputs(i ? ",{\"name\":" : "{\"name\":", meta);
-        {   FILE *save = out; out = meta; put_json_string(shown_name(A[i].path)); out = save; }
+        json_string(meta, shown_name(A[i].path));
         fputc(',', meta);
         json_positions(meta, &A[i]);
         double diag = 131070 * anim_pack_bound(A[i].lo, A[i].hi);
@@ -490,8 +490,7 @@ int main(int argc, char **argv)
     fputs("],\"views\":[", meta);
     for (int i = 0; i < nfiles; i++) {
         fputs(i ? ",{\"title\":" : "{\"title\":", meta);
-        {   FILE *save = out; out = meta;
-            put_json_string(o.ntitles ? o.titles[i] : shown_name(files[i])); out = save; }
+        json_string(meta, o.ntitles ? o.titles[i] : shown_name(files[i]));
         fprintf(meta, ",\"anim\":%d,\"colour\":\"%s\"}", view_anim[i],
                 is_error_view[i] ? "error" : o.labels ? "labels" : "plain");
     }
@@ -505,7 +504,7 @@ int main(int argc, char **argv)
         unsigned char lut[256 * 3];
         colormap_viridis_table(lut);
         fprintf(meta, ",\"error\":{\"ref\":%d,\"ref_name\":", ref);
-        {   FILE *save = out; out = meta; put_json_string(shown_name(o.error)); out = save; }
+        json_string(meta, shown_name(o.error));
         fprintf(meta, ",\"max\":%.17g,\"mean\":%.17g,\"scale_max\":%.17g,\"print_height\":%.17g,"
                 "\"mm_per_unit\":%.17g,\"axis\":\"%c\",\"percentile\":%.17g,\"lut\":[", err_max,
                 err_sum, scale_top, o.print_height, scale_mm, 'x' + o.axis, o.error_pct);
@@ -518,7 +517,7 @@ int main(int argc, char **argv)
             fputs(p ? ",{\"name\":" : "{\"name\":", meta);
             char dflt[32];
             snprintf(dflt, sizeof dflt, "part %d", p);
-            {   FILE *save = out; out = meta; put_json_string(P[p].name ? P[p].name : dflt); out = save; }
+            json_string(meta, P[p].name ? P[p].name : dflt);
             fputs(",\"labels\":[", meta);
             for (int k = 0; k < P[p].n; k++) fprintf(meta, "%s%d", k ? "," : "", P[p].L[k]);
             fputc(']', meta);
@@ -537,7 +536,7 @@ int main(int argc, char **argv)
         fputs(",\"scans\":[", meta);
         for (int s = 0; s < o.nscans; s++) {
             fprintf(meta, "%s{\"frame\":%d,\"name\":", s ? "," : "", S[s].frame);
-            {   FILE *save = out; out = meta; put_json_string(shown_name(S[s].a.path)); out = save; }
+            json_string(meta, shown_name(S[s].a.path));
             fprintf(meta, ",\"nf\":%d,\"faces\":", S[s].a.m.nf);
             json_faces(meta, &S[s].a.m);
             fputc(',', meta);
