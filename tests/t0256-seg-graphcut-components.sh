@@ -23,12 +23,20 @@ test_expect_success '--bridge 0: each eye is still bridged to its nearest compon
 	test "$(part_counts b0 1280 1919)" = "640 0"
 '
 
-test_expect_success 'forehead + chin alone: the collapsed part is named, with the fix' '
+test_expect_success 'forehead + chin alone: the collapse is caught, a narrower band cuts upper/lower' '
 	printf "0 0 0.75 0.55\n1 0 -0.85 0.45\n" >two.seeds &&
 	seg-graphcut --seeds two.seeds head.mesh >two 2>err &&
 	cat err && test $(wc -l <err) -eq 1 &&
-	grep -q "warning: part 0 collapsed to its seed" err &&
-	grep -q "back of the skull" err && test $(wc -l <two) -eq 1920
+	grep -q "warning: part 0 collapsed to its seed with band 0.6 .*cut with --band 0.4 instead" err &&
+	test "$(part_counts two 1280 1919)" = "640 0" &&
+	set -- $(part_counts two 0 1279) && test $1 -gt 640 && test $2 -gt 320
+'
+
+test_expect_success 'with --band given, a collapsed part is only reported, with the fix' '
+	seg-graphcut --band 0.6 --seeds two.seeds head.mesh >two6 2>err &&
+	cat err && test $(wc -l <err) -eq 1 &&
+	grep -q "warning: part 0 collapsed to its seed: " err && grep -q "back of the skull" err &&
+	set -- $(part_counts two6 0 1279) && test $1 -lt 320
 '
 
 test_expect_success 'a seed point far from the surface is an error naming the line' '
