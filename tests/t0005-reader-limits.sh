@@ -5,10 +5,6 @@ turn into allocations before the data are seen, columns rows with numbers,
 landmark messages after the columns are freed'
 . "$(dirname "$0")/test-lib.sh"
 
-# ulimit -v cannot be combined with AddressSanitizer's shadow memory
-memlimit() {
-	if [ -n "${STOPMO_SANITIZE:-}" ]; then "$@"; else (ulimit -v 1000000 && "$@"); fi
-}
 
 test_expect_success 'setup' '
 	mesh-gen -s 1 icosphere >ico.mesh &&
@@ -62,24 +58,24 @@ test_expect_success 'a line just under the cap still reads' '
 test_expect_success 'huge header counts fail as truncated, not out of memory (file)' '
 	printf "MESH 1\nvertices 10\nfaces 0\nframes 200000000\nframe 0\n" >many.mesh &&
 	for i in 0 1 2 3 4 5 6 7 8 9; do echo "0 0 0"; done >>many.mesh &&
-	memlimit test_fails_cleanly procrustes many.mesh many.mesh 2>err &&
+	test_memlimit test_fails_cleanly procrustes many.mesh many.mesh 2>err &&
 	grep "truncated" err &&
 	printf "MESH 1\nvertices 200000000\nfaces 0\nframes 1\n" >wide.mesh &&
-	memlimit test_fails_cleanly mesh-info -q wide.mesh 2>err && grep "truncated" err &&
+	test_memlimit test_fails_cleanly mesh-info -q wide.mesh 2>err && grep "truncated" err &&
 	printf "MESH 1\nvertices 3\nfaces 200000000\nframes 1\nf 0 1 2\n" >faces.mesh &&
-	memlimit test_fails_cleanly mesh-info -q faces.mesh 2>err && grep "truncated" err
+	test_memlimit test_fails_cleanly mesh-info -q faces.mesh 2>err && grep "truncated" err
 '
 test_expect_success 'huge header counts from a pipe: storage grows with the data' '
-	cat many.mesh | memlimit test_fails_cleanly procrustes - many.mesh 2>err &&
+	cat many.mesh | test_memlimit test_fails_cleanly procrustes - many.mesh 2>err &&
 	grep "truncated: expected 200000000 frames, got 1" err &&
-	cat faces.mesh | memlimit test_fails_cleanly mesh-info -q 2>err &&
+	cat faces.mesh | test_memlimit test_fails_cleanly mesh-info -q 2>err &&
 	grep "truncated: expected 200000000 faces, got 1" err &&
 	printf "MESH 1 raw\nvertices 3\nfaces 200000000\nframes 1\n" >rawf.mesh &&
-	cat rawf.mesh | memlimit test_fails_cleanly mesh-info -q 2>err && grep "truncated face block" err
+	cat rawf.mesh | test_memlimit test_fails_cleanly mesh-info -q 2>err && grep "truncated face block" err
 '
 test_expect_success 'a ring header announcing 10^8 points reserves nothing up front' '
 	printf "ring 100000000\n0 0\n1 0\n0 1\n" >big.rings &&
-	memlimit test_fails_cleanly mesh2svg big.rings 2>err &&
+	test_memlimit test_fails_cleanly mesh2svg big.rings 2>err &&
 	grep "header says 100000000" err
 '
 test_expect_success 'many faces still read (storage grows past its first block)' '

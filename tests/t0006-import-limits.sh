@@ -4,9 +4,6 @@ glTF accessor bounds without overflow, PLY headers checked before OpenMesh,
 reservations capped by the file size, a missing file named as missing'
 . "$(dirname "$0")/test-lib.sh"
 
-memlimit() {
-	if [ -n "${STOPMO_SANITIZE:-}" ]; then "$@"; else (ulimit -v 1000000 && "$@"); fi
-}
 
 test_expect_success 'setup: the small glTF morph animation imports' '
 	perl "$TEST_DIRECTORY/gltf-morph.pl" >ok.gltf &&
@@ -39,7 +36,7 @@ test_expect_success 'PLY: a header without end_header (OpenMesh 9 looped forever
 '
 test_expect_success 'PLY: counts beyond the file size, unknown types, missing x y z' '
 	printf "ply\nformat binary_little_endian 1.0\nelement vertex 100000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n" >p3.ply &&
-	memlimit test_fails_cleanly mesh-import p3.ply 2>err && grep "truncated: the PLY header announces at least 1200000000 bytes" err &&
+	test_memlimit test_fails_cleanly mesh-import p3.ply 2>err && grep "truncated: the PLY header announces at least 1200000000 bytes" err &&
 	printf "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n0\n" >p4.ply &&
 	test_fails_cleanly mesh-import p4.ply 2>err && grep "bad property line" err &&
 	printf "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n" >p5.ply &&
@@ -52,7 +49,7 @@ test_expect_success 'PLY: a valid file still imports (binary and ascii round tri
 '
 test_expect_success 'OFF/OBJ: a header of 2*10^8 vertices reserves by the file size' '
 	printf "OFF\n200000000 0 0\n" >big.off &&
-	memlimit test_fails_cleanly mesh-import big.off 2>err &&
+	test_memlimit test_fails_cleanly mesh-import big.off 2>err &&
 	grep "big.off.: line 2: expected 200000000 vertices, found 0" err
 '
 test_expect_success 'a missing file is named as missing, whatever its extension' '

@@ -4,9 +4,6 @@ mesh-render --frame from the end in memory O(frames read), extreme extents
 in mesh-info and mesh-normalize, dict-learn names a worker thread error'
 . "$(dirname "$0")/test-lib.sh"
 
-memlimit() {
-	if [ -n "${STOPMO_SANITIZE:-}" ]; then "$@"; else (ulimit -v 1000000 && "$@"); fi
-}
 scale() {
 	awk -v s="$1" "/^[-0-9]/ && NF == 3 { printf \"%.17g %.17g %.17g\n\", \$1 * s, \$2 * s, \$3 * s; next } { print }"
 }
@@ -27,7 +24,7 @@ test_expect_success 'mesh-render --frame: INT_MIN is a usage error (was a negati
 	test_must_fail_usage mesh-render --frame -2147483648 q.mesh 2>err && grep "out of range" err
 '
 test_expect_success 'mesh-render --frame -200000000 keeps only the frames it read' '
-	memlimit test_fails_cleanly mesh-render --frame -200000000 q.mesh 2>err &&
+	test_memlimit test_fails_cleanly mesh-render --frame -200000000 q.mesh 2>err &&
 	grep "no frame -200000000 (the stream has 3 frames)" err &&
 	mesh-render --frame -1 -o last.ppm q.mesh && mesh-render --frame 2 -o two.ppm cyl.mesh &&
 	test_cmp last.ppm two.ppm

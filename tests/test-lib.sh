@@ -9,6 +9,9 @@
 #   test_cmp expect actual
 #   test_near A B TOL          |A - B| <= TOL (numbers)
 #   test_le A B                A <= B (numbers)
+#   test_memlimit cmd...       run cmd with 1 GB of address space (ulimit -v;
+#                              not under make check-sanitize: ASan's shadow
+#                              memory needs terabytes of address space)
 #   need_shared_data PATH      skip all tests with a reason if ../shared/data lacks PATH
 #   test_done
 #
@@ -102,6 +105,10 @@ test_near() {
 test_le() {
     awk -v a="$1" -v b="$2" 'BEGIN { if (a + 0 <= b + 0) exit 0;
         printf "test_le: %s > %s\n", a, b > "/dev/stderr"; exit 1 }'
+}
+
+test_memlimit() {
+    if [ -n "${STOPMO_SANITIZE:-}" ]; then "$@"; else (ulimit -v 1000000 && "$@"); fi
 }
 
 need_shared_data() {
