@@ -17,10 +17,9 @@ CPPFLAGS := -Ilibcommon -I/usr/include/eigen3 -D_POSIX_C_SOURCE=200809L -D_DEFAU
 CFLAGS   := -O1 -g -std=c11 -pthread $(SAN) -fsanitize=fuzzer-no-link
 CXXFLAGS := -O1 -g -std=c++17 -pthread -frounding-math $(SAN) -fsanitize=fuzzer-no-link
 LDLIBS   := -lOpenMeshCore -lassimp -lz -lgmp -lmpfr -lstdc++ -lm
-# the readers and what they call
-SRC := cm_error numparse textline mesh columns landmarks rings topology compat_tri
-SRCXX := meshio anim_import
-OBJ := $(SRC:%=$(FB)/%.o) $(SRCXX:%=$(FB)/%.o)
+# the readers and what they call (the closure over their #includes)
+SRC := $(shell sh tests/fuzz/deps.sh mesh columns landmarks rings compat_tri meshio anim_import)
+OBJ := $(SRC:%=$(FB)/%.o)
 BIN := $(FUZZ_TARGETS:%=$(FB)/fuzz_%)
 
 run: $(BIN)
