@@ -1,6 +1,7 @@
 #!/bin/sh
 test_description='dict-learn start and local search: greedy k-means++ and split/merge vs the plain method on facecap and the elephant walk'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/dict-lib.sh"
 
 test_expect_success 'bad --start and --search are usage errors' '
 	test_must_fail_usage dict-learn --start random /dev/null 2>err &&
@@ -12,11 +13,7 @@ test_expect_success 'bad --start and --search are usage errors' '
 need_shared_data anim/facecap-335.tar.xz
 
 test_expect_success 'setup: facecap OBJ frames -> lower and upper parts; elephant walk' '
-	mkdir fc && tar -xJf "$SHARED_DATA/anim/facecap-335.tar.xz" -C fc &&
-	mesh-import --raw "fc/*/frame_*.obj" >face.mesh && rm -rf fc &&
-	anim-avg face.mesh >avg.mesh &&
-	awk -v frac=0.75 -f "$TEST_DIRECTORY/lower-part.awk" avg.mesh >part.lab &&
-	part-split -l part.lab -o "part_%d.mesh" --raw face.mesh &&
+	facecap_parts --raw &&
 	if [ -r "$SHARED_DATA/anim/elephant-walk-457.tar.xz" ]; then
 		mkdir el && tar -xJf "$SHARED_DATA/anim/elephant-walk-457.tar.xz" -C el &&
 		mesh-import --raw "el/*/frame_*.obj" >eleph.mesh && rm -rf el

@@ -1,14 +1,11 @@
 #!/bin/sh
 test_description='dict-learn low-rank test: tolerance from the input decimal step (OBJ data fires, full-rank data falls back after one try)'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/dict-lib.sh"
 need_shared_data anim/facecap-335.tar.xz
 
 test_expect_success 'setup: facecap lower part (OBJ, 6 decimals) repeated to 1675 frames; a noisy copy' '
-	mkdir fc && tar -xJf "$SHARED_DATA/anim/facecap-335.tar.xz" -C fc &&
-	mesh-import --raw "fc/*/frame_*.obj" >face.mesh && rm -rf fc &&
-	anim-avg face.mesh >avg.mesh &&
-	awk -v frac=0.75 -f "$TEST_DIRECTORY/lower-part.awk" avg.mesh >part.lab &&
-	part-split -l part.lab -p 1 face.mesh >lower.mesh &&
+	facecap_parts && mv part_1.mesh lower.mesh &&
 	anim-cat lower.mesh lower.mesh lower.mesh lower.mesh lower.mesh >long.mesh &&
 	awk "BEGIN { srand(2) } /^frame /{ fr = 1 } fr && NF == 3 && \$1 != \"frame\" { printf \"%.6f %.6f %.6f\n\", \$1 + 0.5 * (rand() - 0.5), \$2, \$3; next } { print }" long.mesh >noisy.mesh
 '

@@ -1,0 +1,14 @@
+# dict-lib.sh -- helpers for the dict-learn tests (t0304-t0319), sourced
+# after test-lib.sh.
+
+# facecap_parts [RAW]: facecap's OBJ frames (6 decimals) -> face.mesh and
+# its two parts part_0.mesh (upper) and part_1.mesh (lower: faces whose
+# centroid lies below 75% of the average face's height, as t0301 cuts it);
+# RAW = --raw writes them raw.
+facecap_parts() {
+	mkdir fc && tar -xJf "$SHARED_DATA/anim/facecap-335.tar.xz" -C fc &&
+	mesh-import --raw "fc/*/frame_*.obj" >face.mesh && rm -rf fc &&
+	anim-avg face.mesh >avg.mesh &&
+	awk -v frac=0.75 -f "$TEST_DIRECTORY/lower-part.awk" avg.mesh >part.lab &&
+	part-split -l part.lab -o "part_%d.mesh" ${1:-} face.mesh
+}
