@@ -9,7 +9,8 @@
 # shared: CPU is the honest number).  Baselines in the same run: the
 # paper's reported time (Xeon 2.4 GHz, "labeling and update steps") and the
 # release before this work (dict-learn at commit $OLDREV, built here from
-# git), run with the same options.  Lines: default options (5 restarts,
+# git), run with the same options (it has no --search: its method is the
+# plain descent).  Lines: default options (5 restarts,
 # greedy start, local search) and -r 1 --search 0 (one plain descent, the
 # cheapest run).  BENCH_FULL=1 adds the Bunny under the old release (4.3 GB,
 # about a minute) and the film-scale stream (100,000 frames of a
@@ -54,7 +55,7 @@ line() { # name V F d paper_s old(0/1) file
         new=$(timed dict-learn -d $d -l 2 $opts "$f") || { echo "table1 $name: dict-learn failed"; continue; }
         old="- - - -"
         if [ -n "$OLD" ] && [ "$runold" = 1 ]; then
-            old=$(timed "$OLD" -d $d -l 2 $opts "$f") || old="- - - -"
+            old=$(timed "$OLD" -d $d -l 2 ${opts%--search 0} "$f") || old="- - - -"
         fi
         echo "$new $old" | awk -v n="$name" -v V=$V -v F=$F -v d=$d -v p=$paper -v o="${opts:-defaults}" -v rev=$OLDREV '{
             printf "table1 %s (%s v x %s f x %d pieces, lambda 2, %s): %.2f s wall (%.2f s cpu, %d MB, energy %.6g) | baseline paper %s s; release %s %s s wall (%s s cpu, %s MB, energy %s) | ratio paper %.1f (cpu-based %.1f), release %s (cpu %s), energy %s\n",
