@@ -397,6 +397,52 @@ static void rasterize_face(int f, const int *t, const int32_t *XY, const float *
     }
 }
 
+/* the projection of a W by H (samples) render, fitted to the camera's
+ * view-space bounds */
+static void setup_proj(const struct camera *cam, int W, int H, struct proj *pj)
+{
+    memcpy(pj->R, cam->R, sizeof pj->R);
+    pj->persp = cam->perspective;
+    pj->W2 = 0.5 * W;
+    pj->H2 = 0.5 * H;
+    pj->cx = 0.5 * (cam->lo[0] + cam->hi[0]);
+    pj->cy = 0.5 * (cam->lo[1] + cam->hi[1]);
+    double ex = cam->hi[0] - cam->lo[0], ey = cam->hi[1] - cam->lo[1];
+    double ez = cam->hi[2] - cam->lo[2];
+    double avail = 1 - 2 * (cam->margin < 0 ? 0 : cam->margin > 0.45 ? 0.45 : cam->margin);
+    double sx = ex > 0 ? W * avail / ex : DBL_MAX, sy = ey > 0 ? H * avail / ey : DBL_MAX;
+    if (!pj->persp) {
+        pj->scale = sx < sy ? sx : sy;
+        if (pj->scale == DBL_MAX) pj->scale = 1;
+    } else {
+        double fov = cam->fov > 1 && cam->fov < 170 ? cam->fov : 30;
+        pj->scale = pj->H2 / tan(0.5 * fov * M_PI / 180);     /* focal length in samples */
+        /* the camera sees the bounding sphere of the view-space box; then
+         * the zoom below makes the projected box fill the view */
+        double r = 0.5 * sqrt(ex * ex + ey * ey + ez * ez);
+        if (!(r > 0)) r = 1;
+        pj->eye = 0.5 * (cam->lo[2] + cam->hi[2]) + r / sin(0.5 * fov * M_PI / 180);
+        /* the 8 corners of the view-space box, projected, bound the
+         * projection of every fitted point: zoom and shift so they fill the
+         * view */
+        double mnx = DBL_MAX, mxx = -DBL_MAX, mny = DBL_MAX, mxy = -DBL_MAX;
+        for (int c = 0; c < 8; c++) {
+            double x = c & 1 ? cam->hi[0] : cam->lo[0], y = c & 2 ? cam->hi[1] : cam->lo[1];
+            double z = c & 4 ? cam->hi[2] : cam->lo[2], f = pj->scale / (pj->eye - z);
+            mnx = fmin(mnx, f * (x - pj->cx)); mxx = fmax(mxx, f * (x - pj->cx));
+            mny = fmin(mny, f * (y - pj->cy)); mxy = fmax(mxy, f * (y - pj->cy));
+        }
+        double zx = mxx > mnx ? W * avail / (mxx - mnx) : DBL_MAX;
+        double zy = mxy > mny ? H * avail / (mxy - mny) : DBL_MAX;
+        double zoom = fmin(zx, zy);
+        if (zoom < DBL_MAX && zoom > 0) {
+            pj->scale *= zoom;
+            pj->W2 -= zoom * 0.5 * (mnx + mxx);
+            pj->H2 += zoom * 0.5 * (mny + mxy);
+        }
+    }
+}
+
 int raster_render(const double *V, const int *F, int nv, int nf, const struct camera *cam,
                   const struct render_style *s, int w, int h, struct image *out)
 {
@@ -430,46 +476,7 @@ int raster_render(const double *V, const int *F, int nv, int nf, const struct ca
 
     /* projection fitted to the camera's view-space bounds */
     struct proj pj;
-    memcpy(pj.R, cam->R, sizeof pj.R);
-    pj.persp = cam->perspective;
-    pj.W2 = 0.5 * W;
-    pj.H2 = 0.5 * H;
-    pj.cx = 0.5 * (cam->lo[0] + cam->hi[0]);
-    pj.cy = 0.5 * (cam->lo[1] + cam->hi[1]);
-    double ex = cam->hi[0] - cam->lo[0], ey = cam->hi[1] - cam->lo[1];
-    double ez = cam->hi[2] - cam->lo[2];
-    double avail = 1 - 2 * (cam->margin < 0 ? 0 : cam->margin > 0.45 ? 0.45 : cam->margin);
-    double sx = ex > 0 ? W * avail / ex : DBL_MAX, sy = ey > 0 ? H * avail / ey : DBL_MAX;
-    if (!pj.persp) {
-        pj.scale = sx < sy ? sx : sy;
-        if (pj.scale == DBL_MAX) pj.scale = 1;
-    } else {
-        double fov = cam->fov > 1 && cam->fov < 170 ? cam->fov : 30;
-        pj.scale = pj.H2 / tan(0.5 * fov * M_PI / 180);     /* focal length in samples */
-        /* the camera sees the bounding sphere of the view-space box; then
-         * the zoom below makes the projected box fill the view */
-        double r = 0.5 * sqrt(ex * ex + ey * ey + ez * ez);
-        if (!(r > 0)) r = 1;
-        pj.eye = 0.5 * (cam->lo[2] + cam->hi[2]) + r / sin(0.5 * fov * M_PI / 180);
-        /* the 8 corners of the view-space box, projected, bound the
-         * projection of every fitted point: zoom and shift so they fill the
-         * view */
-        double mnx = DBL_MAX, mxx = -DBL_MAX, mny = DBL_MAX, mxy = -DBL_MAX;
-        for (int c = 0; c < 8; c++) {
-            double x = c & 1 ? cam->hi[0] : cam->lo[0], y = c & 2 ? cam->hi[1] : cam->lo[1];
-            double z = c & 4 ? cam->hi[2] : cam->lo[2], f = pj.scale / (pj.eye - z);
-            mnx = fmin(mnx, f * (x - pj.cx)); mxx = fmax(mxx, f * (x - pj.cx));
-            mny = fmin(mny, f * (y - pj.cy)); mxy = fmax(mxy, f * (y - pj.cy));
-        }
-        double zx = mxx > mnx ? W * avail / (mxx - mnx) : DBL_MAX;
-        double zy = mxy > mny ? H * avail / (mxy - mny) : DBL_MAX;
-        double zoom = fmin(zx, zy);
-        if (zoom < DBL_MAX && zoom > 0) {
-            pj.scale *= zoom;
-            pj.W2 -= zoom * 0.5 * (mnx + mxx);
-            pj.H2 += zoom * 0.5 * (mny + mxy);
-        }
-    }
+    setup_proj(cam, W, H, &pj);
     if (ok)
         for (int i = 0; i < nv; i++) {
             project(&pj, V + 3 * i, P + 3 * i);
@@ -605,4 +612,17 @@ int raster_render(const double *V, const int *F, int nv, int nf, const struct ca
     free(zb); free(id); free(P); free(XY); free(tstart); free(tfaces); free(fc);
     free(N); free(sv);
     return 0;
+}
+
+void raster_project_points(const struct camera *cam, int w, int h, const double *P, int n,
+                           double *XY)
+{
+    struct proj pj;
+    setup_proj(cam, w, h, &pj);
+    for (int i = 0; i < n; i++) {
+        float o[3];
+        project(&pj, P + 3 * i, o);
+        XY[2 * i] = o[0];
+        XY[2 * i + 1] = o[1];
+    }
 }

@@ -95,6 +95,12 @@ void render_style_default(struct render_style *s);
 int raster_render(const double *V, const int *F, int nv, int nf, const struct camera *cam,
                   const struct render_style *s, int w, int h, struct image *out);
 
+/* Where points land in a w by h render with camera cam (pixels, x right,
+ * y down; the same projection as raster_render).
+ *   P   n by 3 positions,  XY  n by 2 (out) */
+void raster_project_points(const struct camera *cam, int w, int h, const double *P, int n,
+                           double *XY);
+
 #ifdef __cplusplus
 }
 #endif

@@ -30,7 +30,8 @@ static const char help[] =
 "  -n, --count N          N frames evenly spaced from first to last\n"
 "      --all              every frame\n"
 "Layout:\n"
-"  -C, --columns C        tiles per row (default: the number of chosen frames, at most 8)\n"
+"  -C, --columns C        tiles per row (default: the number of chosen frames, at most 8;\n"
+"                         inputs of one frame each flow through the columns)\n"
 "  -s, --size WxH         size of one tile in pixels (default 320x320)\n"
 "      --gap N            pixels between tiles (default 4)\n"
 "  -t, --titles LIST      comma separated titles, one per input, drawn left of its rows\n"
@@ -522,13 +523,19 @@ int main(int argc, char **argv)
         for (int j = 0; j < o.ninputs; j++) image_free(&row[j]);
         free(row);
     } else {
-        /* contact sheet: each input starts a new row; titles in a left margin */
-        int C = o.columns > 0 ? o.columns : maxsel < 8 ? maxsel : 8;
+        /* contact sheet: each input starts a new row; titles in a left
+         * margin.  When every input shows one frame, the inputs flow
+         * through the C columns instead (one tile each, its title as the
+         * stamp) */
+        int flow = o.ninputs > 1 && maxsel == 1;
+        int C = o.columns > 0 ? o.columns : flow ? (o.ninputs < 8 ? o.ninputs : 8)
+                                          : maxsel < 8 ? maxsel : 8;
         int nrows = 0;
-        for (int j = 0; j < o.ninputs; j++) nrows += (in[j].nsel + C - 1) / C;
+        if (flow) nrows = (o.ninputs + C - 1) / C;
+        else for (int j = 0; j < o.ninputs; j++) nrows += (in[j].nsel + C - 1) / C;
         int tsc = o.h >= 480 ? 3 : o.h >= 200 ? 2 : 1;
         int margin = 0;
-        if (o.titles)
+        if (o.titles && !flow)
             for (int j = 0; j < o.ninputs; j++) {
                 int tw = text_width(o.titles[j], tsc) + 2 * tsc + o.gap;
                 if (tw > margin) margin = tw;
@@ -543,7 +550,7 @@ int main(int argc, char **argv)
         progress_start(&pr, progname, tiles);
         int r0 = 0, done = 0;
         for (int j = 0; j < o.ninputs; j++) {
-            if (o.titles)
+            if (o.titles && !flow)
                 image_text(&sheet, o.gap + tsc, o.gap + r0 * (o.h + o.gap) + (o.h - text_height(tsc)) / 2,
                            o.titles[j], tsc, fg, NULL);
             for (int i = 0; i < in[j].nsel; i++) {
@@ -551,8 +558,9 @@ int main(int argc, char **argv)
                     continue;
                 struct image tile;
                 snprintf(label, sizeof label, "%d", in[j].sel[i]);
-                render_tile(&o, &in[j], i, &cam, &st, &mc, o.stamp ? label : NULL, &tile);
-                int r = r0 + i / C, c = i % C;
+                if (flow && o.titles) snprintf(label, sizeof label, "%s", o.titles[j]);
+                render_tile(&o, &in[j], i, &cam, &st, &mc, o.stamp || (flow && o.titles) ? label : NULL, &tile);
+                int r = flow ? j / C : r0 + i / C, c = flow ? j % C : i % C;
                 image_blit(&sheet, &tile, margin + o.gap + c * (o.w + o.gap), o.gap + r * (o.h + o.gap));
                 image_free(&tile);
                 progress_step(&pr, ++done);

@@ -7,6 +7,7 @@
  * supersampled edges.  So a person can look at any stream.
  */
 #include "cm_error.h"
+#include "columns.h"
 #include "image.h"
 #include "mesh.h"
 #include "meshcolor.h"
@@ -15,6 +16,8 @@
 #include "render_options.h"
 #include "tool.h"
 #include <getopt.h>
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -32,6 +35,9 @@ static const char help[] =
 "                         columns, e.g. mesh-metrics --per-face (4: distance, 3:\n"
 "                         flipped); a file of one block of rows per frame gives\n"
 "                         frame K's block\n"
+"      --points FILE      draw numbered points (1, 2, ... in row order) at the\n"
+"                         vertices named in column 1 of FILE, e.g. a landmark file\n"
+"      --points-column N  take the vertex indices from column N instead\n"
 RENDER_OPTIONS_HELP
 "  -f, --format FMT       png or ppm (default from the -o extension, else png)\n"
 "  -o, --output FILE      write to FILE (atomically) instead of stdout\n"
@@ -44,17 +50,18 @@ RENDER_OPTIONS_HELP
 
 struct options {
     const char *input;
-    int frame, w, h, fit_all, column;
+    int frame, w, h, fit_all, column, points_col;
+    const char *points;
     struct render_options r;   /* camera and look */
 };
 
-enum { O_FITALL = 256, O_VERSION, O_COLUMN };
+enum { O_FITALL = 256, O_VERSION, O_COLUMN, O_POINTS, O_POINTSCOL };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"frame", 1, 0, 'k'}, {"size", 1, 0, 's'}, {"fit-all", 0, 0, O_FITALL},
-        {"column", 1, 0, O_COLUMN},
+        {"column", 1, 0, O_COLUMN}, {"points", 1, 0, O_POINTS}, {"points-column", 1, 0, O_POINTSCOL},
         RENDER_OPTIONS_LONGOPTS, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -71,6 +78,11 @@ static void parse_args(int argc, char **argv, struct options *o)
                 usage_error("--size: '%s' is not WxH (e.g. 800x600, at most 16384)", optarg);
             break;
         case O_FITALL: o->fit_all = 1; break;
+        case O_POINTS: o->points = optarg; break;
+        case O_POINTSCOL:
+            o->points_col = (int)arg_long(optarg, "--points-column");
+            if (o->points_col < 1) usage_error("--points-column must be >= 1");
+            break;
         case O_COLUMN:
             o->column = (int)arg_long(optarg, "--column");
             if (o->column < 1) usage_error("--column must be >= 1");
@@ -86,6 +98,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->input = optind < argc ? argv[optind] : NULL;
     render_options_check(&o->r);
     if (o->column && !o->r.scalars) usage_error("--column needs --scalars");
+    if (o->points_col && !o->points) usage_error("--points-column needs --points");
+    if (!o->points_col) o->points_col = 1;
     render_options_format(&o->r, o->r.output);
 }
 
@@ -186,11 +200,49 @@ int main(int argc, char **argv)
             info(1, "scalars per %s mapped from range %g,%g", mc.per_face ? "face" : "vertex",
                  mc.lo, mc.hi);
     }
+    /* numbered points: vertex indices from a column of a file */
+    struct columns pts = {0};
+    if (o.points) {
+        if (columns_read(o.points, 0, -1, NULL, &pts) < 0) die("%s", cm_errmsg());
+        if (pts.rows > 0 && o.points_col > pts.cols)
+            die("cannot read '%s': no column %d (it has %d)", o.points, o.points_col, pts.cols);
+        for (int i = 0; i < pts.rows; i++) {
+            double v = pts.x[(size_t)i * pts.cols + o.points_col - 1];
+            if (v != (int)v || v < 0 || v >= r.nv)
+                die("cannot read '%s': row %d: %g is not a vertex index 0..%d", o.points, i + 1, v, r.nv - 1);
+        }
+    }
     double t1 = now_seconds();
 
     struct image im;
     if (raster_render(X, r.F, r.nv, r.nf, &cam, &st, o.w, o.h, &im) < 0)
         die("%s", cm_errmsg());
+    if (pts.rows > 0) {
+        double *P = malloc((size_t)pts.rows * 3 * sizeof *P), *XY = malloc((size_t)pts.rows * 2 * sizeof *XY);
+        if (!P || !XY) die("out of memory");
+        for (int i = 0; i < pts.rows; i++)
+            memcpy(P + 3 * i, X + 3 * (int)pts.x[(size_t)i * pts.cols + o.points_col - 1], 3 * sizeof *P);
+        raster_project_points(&cam, o.w, o.h, P, pts.rows, XY);
+        int rad = o.w > o.h ? o.h / 160 : o.w / 160, sc = o.w >= 1200 ? 3 : o.w >= 500 ? 2 : 1;
+        if (rad < 2) rad = 2;
+        static const unsigned char red[3] = {220, 30, 30}, dark[3] = {20, 20, 20}, white[3] = {255, 255, 255};
+        for (int i = 0; i < pts.rows; i++) {
+            int cx = (int)floor(XY[2 * i]), cy = (int)floor(XY[2 * i + 1]);
+            for (int y = -rad - 1; y <= rad + 1; y++)
+                for (int x = -rad - 1; x <= rad + 1; x++) {
+                    int d2 = x * x + y * y;
+                    if (d2 > (rad + 1) * (rad + 1) || cx + x < 0 || cy + y < 0 || cx + x >= im.w || cy + y >= im.h)
+                        continue;
+                    memcpy(image_px(&im, cx + x, cy + y), d2 > rad * rad ? dark : red, 3);
+                }
+            char num[16];
+            snprintf(num, sizeof num, "%d", i + 1);
+            image_text(&im, cx + rad + 2, cy - rad - text_height(sc), num, sc, dark, white);
+        }
+        free(P);
+        free(XY);
+    }
+    columns_free(&pts);
     double t2 = now_seconds();
     FILE *out = out_open(o.r.output);
     if (image_write(out, &im, o.r.format) < 0)

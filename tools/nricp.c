@@ -9,6 +9,7 @@
 #include "closest_point.h"
 #include "geometry.h"
 #include "landmarks.h"
+#include "landmark_auto.h"
 #include "mesh.h"
 #include "mesh_distance.h"
 #include "nricp.h"
@@ -24,15 +25,17 @@
 #include <getopt.h>
 
 static const char help[] =
-"Usage: nricp [options] -l LANDMARKS SOURCE TARGET\n"
+"Usage: nricp [options] [-l LANDMARKS] SOURCE TARGET\n"
 "Deform SOURCE onto the surface of TARGET (any connectivity); writes the\n"
 "registered source (SOURCE's connectivity) to stdout.\n"
 "\n"
 "Options:\n"
 "  -l, --landmarks FILE  rows 'src_vertex dst_vertex' or 'src_vertex x y z'\n"
+"                        (optional: without it landmark-auto(1) proposes them)\n"
 "      --landmark-mesh M the mesh whose vertices dst_vertex names, if not TARGET\n"
 "                        (e.g. the scan before mesh-clean renumbered it)\n"
-"                        (optional, but large motions need them)\n"
+"      --no-auto         without -l: no landmarks at all (small motions only)\n"
+"      --landmarks-out F write the landmarks used (automatic ones too) to F\n"
 "      --align KIND      rigid | similarity | none: Procrustes on the landmarks\n"
 "                        first (default rigid; none without >= 3 landmarks)\n"
 "  -k, --steps K         stiffness steps (default 6)\n"
@@ -53,7 +56,9 @@ static const char help[] =
 "      --fit-smooth N    smoothing sweeps of the fit's rest shape (default 1)\n"
 "      --eps E           inner loop tolerance, in diagonals (default 1e-4)\n"
 "      --init-deform     first deform the source toward the landmarks with\n"
-"                        clay-deform (volume kept if closed): Algorithm 3\n"
+"                        clay-deform (volume kept if closed): Algorithm 3 (the\n"
+"                        default with automatic landmarks)\n"
+"      --no-init-deform  do not (with automatic landmarks)\n"
 "      --init-model M    its model: arap (default, fast) or shell (the thin shell\n"
 "                        of clay-deform(1); implies --init-deform)\n"
 "      --init-stiffness FILE  per-vertex stiffness for --init-deform (stiffness(1));\n"
@@ -69,19 +74,22 @@ static const char help[] =
 
 struct options {
     const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness, *lm_mesh;
-    int raw, init_deform, init_shell;
+    const char *lm_out;
+    int raw, init_deform, init_shell, no_auto, no_init;
     struct nricp_params p;
 };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
-           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH };
+           O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
+           O_NOAUTO, O_LMOUT, O_NOINIT };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
+        {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
         {0, 0, 0, 0}};
@@ -103,6 +111,9 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_BACK: o->p.backward = arg_double(optarg, "--backward"); break;
         case O_INNER: o->p.max_inner = arg_int(optarg, "--max-inner"); break;
         case O_INIT: o->init_deform = 1; break;
+        case O_NOAUTO: o->no_auto = 1; break;
+        case O_LMOUT: o->lm_out = optarg; break;
+        case O_NOINIT: o->no_init = 1; break;
         case O_LMESH: o->lm_mesh = optarg; break;
         case O_FITS: o->p.fit_smooth = arg_int(optarg, "--fit-smooth"); break;
         case O_SEARCH: o->p.search = arg_double(optarg, "--search"); break;
@@ -136,6 +147,10 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->p.max_angle > 0) || o->p.max_angle > 180) usage_error("--max-angle must be in (0, 180]");
     if (o->p.max_inner < 1) usage_error("--max-inner must be >= 1");
     if (o->lm_mesh && !o->landmarks) usage_error("--landmark-mesh needs --landmarks");
+    if (o->no_auto && o->landmarks) usage_error("--no-auto and --landmarks exclude each other");
+    if (o->no_init && o->init_deform) usage_error("--no-init-deform and --init-deform/--init-model exclude each other");
+    if (o->lm_out && o->no_auto) usage_error("--landmarks-out with --no-auto: there are none");
+    if (!o->landmarks && !o->no_auto && !o->no_init) o->init_deform = 1;
     if (o->p.fit < 0 || o->p.fit > 1000) usage_error("--fit must be in 0..1000");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
@@ -176,6 +191,37 @@ int main(int argc, char **argv)
     if (mesh_read(o.src, &S) < 0) die("%s", cm_errmsg());
     if (mesh_read(o.dst, &T) < 0) die("%s", cm_errmsg());
     if (S.nf < 1 || T.nf < 1) die("cannot register: %s has no faces", S.nf < 1 ? o.src : o.dst);
+    /* one pose each, and surfaces the closest points and geodesics make sense on */
+    for (int k = 0; k < 2; k++) {
+        const struct mesh *M = k ? &T : &S;
+        const char *name = k ? o.dst : o.src;
+        if (M->nframes != 1)
+            die("cannot register %s'%s': it has %d frames, nricp takes one pose; pick one with "
+                "anim-slice -f K", k ? "to " : "", name, M->nframes);
+        struct topology tp;
+        if (topology_build(M->F, M->nf, M->nv, &tp) < 0) die("%s", cm_errmsg());
+        /* a few non-manifold edges (a raw scan's triangle stored twice) do
+         * no harm to closest points: say so; a mesh made of them is no
+         * surface to register to: refuse */
+        int bad = -1, nbf = 0;
+        for (int e = 0; e < tp.ne; e++)
+            if (tp.EFn[e] > 2) {
+                if (bad < 0) bad = e;
+                nbf += tp.EFn[e];
+            }
+        if (bad >= 0) {
+            int a = tp.E[2 * bad], b = tp.E[2 * bad + 1], n = tp.EFn[bad];
+            if (10 * nbf >= M->nf) {
+                topology_free(&tp);
+                die("cannot register %s'%s': %d of its %d faces meet at non-manifold edges "
+                    "(edge %d-%d has %d faces); mesh-clean it first", k ? "to " : "", name, nbf,
+                    M->nf, a, b, n);
+            }
+            warn("'%s': %d non-manifold edges (edge %d-%d has %d faces); mesh-clean would remove them",
+                 name, tp.nnonmanifold, a, b, n);
+        }
+        topology_free(&tp);
+    }
     struct landmarks L = {0};
     struct mesh LM = {0};
     if (o.lm_mesh && mesh_read(o.lm_mesh, &LM) < 0) die("%s", cm_errmsg());
@@ -183,6 +229,29 @@ int main(int argc, char **argv)
                                       o.lm_mesh ? LM.nv : T.nv, &L) < 0)
         die("%s", cm_errmsg());
     if (o.lm_mesh) mesh_free(&LM);
+    if (!o.landmarks && !o.no_auto) {
+        /* landmark-auto: matched geodesic extremities and limb points */
+        struct landmark_auto_params lp;
+        struct landmark_pairs lpairs;
+        landmark_auto_defaults(&lp);
+        double ta = now_seconds();
+        if (landmark_auto(S.V, S.F, S.nv, S.nf, T.V, T.F, T.nv, T.nf, &lp, &lpairs) < 0)
+            die("no landmarks given and none found: %s (give -l, or --no-auto)", cm_errmsg());
+        L.n = lpairs.n;
+        L.src = malloc((size_t)L.n * sizeof *L.src);
+        L.dst = malloc((size_t)L.n * sizeof *L.dst);
+        L.P = malloc((size_t)L.n * 3 * sizeof *L.P);
+        if (!L.src || !L.dst || !L.P) die("out of memory");
+        for (int l = 0; l < L.n; l++) {
+            L.src[l] = lpairs.a[l];
+            L.dst[l] = lpairs.b[l];
+            memcpy(L.P + 3 * l, T.V + 3 * (size_t)lpairs.b[l], 3 * sizeof *L.P);
+        }
+        info(1, "automatic landmarks: %d extremities matched (of %d and %d), %d pairs, "
+             "orientation %.2f, %.2f s", lpairs.matched, lpairs.na, lpairs.nb, L.n, lpairs.orient,
+             now_seconds() - ta);
+        landmark_pairs_free(&lpairs);
+    }
     double t0 = now_seconds();
     /* Procrustes on the landmarks (Algorithm 2, first line) */
     double *VS = malloc((size_t)S.nv * 3 * sizeof *VS + 1);
@@ -284,11 +353,21 @@ int main(int argc, char **argv)
         if (mesh_writer_close(&w) < 0) die("cannot write '%s': %s", o.steps_out, cm_errmsg());
         out_close(f);
     }
+    FILE *lf = NULL;
+    if (o.lm_out) {
+        lf = out_open(o.lm_out);
+        fprintf(lf, "# nricp %s -> %s: landmarks used (%s)\n", o.src, o.dst,
+                o.landmarks ? o.landmarks : "automatic");
+        for (int l = 0; l < L.n; l++)
+            if (L.dst[l] >= 0) fprintf(lf, "%d %d\n", L.src[l], L.dst[l]);
+            else fprintf(lf, "%d %.17g %.17g %.17g\n", L.src[l], L.P[3 * l], L.P[3 * l + 1], L.P[3 * l + 2]);
+    }
     FILE *out = out_open(o.output);
     struct mesh R = S;
     R.V = X;
     R.nframes = 1;
     if (mesh_write(out, &R, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
+    if (lf) out_close(lf);
     out_close(out);
     free(st.frames);
     free(X);

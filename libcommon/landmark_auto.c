@@ -1,0 +1,398 @@
+/* landmark_auto.c -- see landmark_auto.h */
+#include "landmark_auto.h"
+#include "cm_error.h"
+#include "geodesic.h"
+#include "geometry.h"
+#include "topology.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void landmark_auto_defaults(struct landmark_auto_params *p)
+{
+    memset(p, 0, sizeof *p);
+    p->radius = 0.1;
+    p->penalty = 0.25;
+    p->margin = 0.5;
+    p->beam = 400;
+    p->max_extremities = 12;
+    p->limb_t[0] = 0.35;
+    p->nlimb = 1;
+    p->core = 0;
+}
+
+/* ---- a binary heap of (key, vertex) for the bounded Dijkstra */
+struct heap { double *k; int *v; int n, cap; };
+static int heap_push(struct heap *h, double k, int v)
+{
+    if (h->n == h->cap) {
+        int c = 2 * h->cap + 64;
+        double *nk = realloc(h->k, (size_t)c * sizeof *nk);
+        if (!nk) return -1;
+        h->k = nk;
+        int *nv = realloc(h->v, (size_t)c * sizeof *nv);
+        if (!nv) return -1;
+        h->v = nv; h->cap = c;
+    }
+    int i = h->n++;
+    while (i > 0 && h->k[(i - 1) / 2] > k) {
+        h->k[i] = h->k[(i - 1) / 2]; h->v[i] = h->v[(i - 1) / 2]; i = (i - 1) / 2;
+    }
+    h->k[i] = k; h->v[i] = v;
+    return 0;
+}
+static void heap_pop(struct heap *h, double *k, int *v)
+{
+    *k = h->k[0]; *v = h->v[0];
+    double lk = h->k[--h->n]; int lv = h->v[h->n], i = 0;
+    for (;;) {
+        int c = 2 * i + 1;
+        if (c >= h->n) break;
+        if (c + 1 < h->n && h->k[c + 1] < h->k[c]) c++;
+        if (h->k[c] >= lk) break;
+        h->k[i] = h->k[c]; h->v[i] = h->v[c]; i = c;
+    }
+    h->k[i] = lk; h->v[i] = lv;
+}
+
+/* Is v a maximum of f1 + f2 among the vertices within edge-path
+ * distance r?  dist: #V scratch, all INFINITY on entry and on exit. */
+static int local_max(const double *V, const struct topology *t, int v, double r, const double *f1,
+                     const double *f2, double *dist, struct heap *h, int *touched)
+{
+    int nt = 0, ok = 1;
+    h->n = 0;
+    dist[v] = 0;
+    touched[nt++] = v;
+    heap_push(h, 0, v);
+    while (h->n > 0 && ok) {
+        double k; int u;
+        heap_pop(h, &k, &u);
+        if (k > dist[u]) continue;
+        if (f1[u] + f2[u] > f1[v] + f2[v]) { ok = 0; break; }
+        for (int q = t->VVs[u]; q < t->VVs[u + 1]; q++) {
+            int w = t->VV[q];
+            double d = k + dist3(V + 3 * u, V + 3 * w);
+            if (d <= r && d < dist[w]) {
+                if (dist[w] == INFINITY) touched[nt++] = w;
+                dist[w] = d;
+                if (heap_push(h, d, w) < 0) { ok = -1; break; }
+            }
+        }
+    }
+    for (int i = 0; i < nt; i++) dist[touched[i]] = INFINITY;
+    return ok;
+}
+
+static int argmax_finite(const double *D, int n)
+{
+    int b = -1;
+    for (int i = 0; i < n; i++)
+        if (isfinite(D[i]) && (b < 0 || D[i] > D[b])) b = i;
+    return b;
+}
+
+/* extremities with an existing heat-method solver */
+static int extremities(struct geodesic *g, const double *V, const int *F, int nv, int nf,
+                       const struct landmark_auto_params *p, int **E)
+{
+    *E = NULL;
+    double s = sqrt(mesh_area(V, F, nf)), r = p->radius * s;
+    double *f1 = malloc((size_t)nv * sizeof *f1), *f2 = malloc((size_t)nv * sizeof *f2);
+    double *dist = malloc((size_t)nv * sizeof *dist);
+    int *touched = malloc((size_t)nv * sizeof *touched), *cand = malloc((size_t)nv * sizeof *cand);
+    struct topology t = {0};
+    struct heap h = {0};
+    int n = -1;
+    if (!f1 || !f2 || !dist || !touched || !cand) { cm_seterr("out of memory"); goto done; }
+    if (topology_build(F, nf, nv, &t) < 0) goto done;
+    /* an approximate diameter: the farthest vertex from the farthest from vertex 0 */
+    int s0 = 0, p1, p2;
+    while (s0 < nv && t.VFs[s0] == t.VFs[s0 + 1]) s0++;
+    if (s0 == nv) { cm_seterr("the mesh has no faces"); goto done; }
+    if (geodesic_solve(g, &s0, 1, f1) < 0) goto done;
+    p1 = argmax_finite(f1, nv);
+    if (geodesic_solve(g, &p1, 1, f1) < 0) goto done;
+    p2 = argmax_finite(f1, nv);
+    if (geodesic_solve(g, &p2, 1, f2) < 0) goto done;
+    for (int i = 0; i < nv; i++) dist[i] = INFINITY;
+    int nc = 0;
+    for (int v = 0; v < nv; v++) {
+        if (!isfinite(f1[v]) || !isfinite(f2[v]) || t.VVs[v] == t.VVs[v + 1]) continue;
+        int m = 1;
+        for (int q = t.VVs[v]; q < t.VVs[v + 1] && m; q++)
+            if (f1[t.VV[q]] + f2[t.VV[q]] > f1[v] + f2[v]) m = 0;
+        if (!m && v != p1 && v != p2) continue;
+        int lm = (v == p1 || v == p2) ? 1 : local_max(V, &t, v, r, f1, f2, dist, &h, touched);
+        if (lm < 0) { cm_seterr("out of memory"); goto done; }
+        if (lm) cand[nc++] = v;
+    }
+    /* farthest first (by f1 + f2), merging candidates closer than r */
+    for (int i = 1; i < nc; i++)
+        for (int j = i; j > 0 && f1[cand[j]] + f2[cand[j]] > f1[cand[j - 1]] + f2[cand[j - 1]]; j--) {
+            int x = cand[j]; cand[j] = cand[j - 1]; cand[j - 1] = x;
+        }
+    n = 0;
+    for (int i = 0; i < nc && n < p->max_extremities; i++) {
+        int keep = 1;
+        for (int j = 0; j < n && keep; j++)
+            if (dist3(V + 3 * cand[i], V + 3 * cand[j]) < r) keep = 0;
+        if (keep) cand[n++] = cand[i];
+    }
+    *E = malloc((size_t)(n > 0 ? n : 1) * sizeof **E);
+    if (!*E) { n = -1; cm_seterr("out of memory"); goto done; }
+    memcpy(*E, cand, (size_t)n * sizeof **E);
+done:
+    topology_free(&t);
+    free(h.k); free(h.v);
+    free(f1); free(f2); free(dist); free(touched); free(cand);
+    return n;
+}
+
+int mesh_extremities(const double *V, const int *F, int nv, int nf,
+                     const struct landmark_auto_params *p, int **E)
+{
+    struct geodesic *g = geodesic_new(V, F, nv, nf);
+    if (!g) return -1;
+    int n = extremities(g, V, F, nv, nf, p, E);
+    geodesic_free(g);
+    return n;
+}
+
+/* ---- matching */
+
+struct state { double score; int m[32]; unsigned used; };
+
+static int cmp_state(const void *a, const void *b)
+{
+    double x = ((const struct state *)a)->score, y = ((const struct state *)b)->score;
+    return (x < y) - (x > y);
+}
+
+static void area_centroid(const double *V, const int *F, int nf, double c[3])
+{
+    double w = 0;
+    c[0] = c[1] = c[2] = 0;
+    for (int f = 0; f < nf; f++) {
+        double e1[3], e2[3], n[3];
+        const double *a = V + 3 * F[3 * f], *b = V + 3 * F[3 * f + 1], *d = V + 3 * F[3 * f + 2];
+        sub3(b, a, e1); sub3(d, a, e2); cross3(e1, e2, n);
+        double A = 0.5 * norm3(n);
+        for (int k = 0; k < 3; k++) c[k] += A * (a[k] + b[k] + d[k]) / 3;
+        w += A;
+    }
+    if (w > 0) for (int k = 0; k < 3; k++) c[k] /= w;
+}
+
+static double triple(const double *c, const double *x, const double *y, const double *z)
+{
+    double a[3], b[3], d[3], n[3];
+    sub3(x, c, a); sub3(y, c, b); sub3(z, c, d);
+    cross3(b, d, n);
+    return dot3(a, n);
+}
+
+/* orientation agreement of a map: weighted mean of sign agreements of the
+ * triple products, -1 (mirrored) .. 1 */
+static double orientation(const double *VA, const int *EA, const double *cA, const double *VB,
+                          const int *EB, const double *cB, const int *m, int na)
+{
+    double num = 0, den = 0;
+    for (int i = 0; i < na; i++) {
+        if (m[i] < 0) continue;
+        for (int j = i + 1; j < na; j++) {
+            if (m[j] < 0) continue;
+            for (int k = j + 1; k < na; k++) {
+                if (m[k] < 0) continue;
+                double a = triple(cA, VA + 3 * EA[i], VA + 3 * EA[j], VA + 3 * EA[k]);
+                double b = triple(cB, VB + 3 * EB[m[i]], VB + 3 * EB[m[j]], VB + 3 * EB[m[k]]);
+                double w = fmin(fabs(a), fabs(b));
+                num += (a * b > 0 ? 1 : -1) * w;
+                den += w;
+            }
+        }
+    }
+    return den > 0 ? num / den : 0;
+}
+
+void landmark_pairs_free(struct landmark_pairs *L)
+{
+    free(L->a); free(L->b); free(L->kind);
+    memset(L, 0, sizeof *L);
+}
+
+int landmark_auto(const double *VA, const int *FA, int nva, int nfa,
+                  const double *VB, const int *FB, int nvb, int nfb,
+                  const struct landmark_auto_params *p, struct landmark_pairs *out)
+{
+    memset(out, 0, sizeof *out);
+    struct geodesic *gA = geodesic_new(VA, FA, nva, nfa), *gB = NULL;
+    int *EA = NULL, *EB = NULL, rc = -1, na = 0, nb = 0;
+    double *DA = NULL, *DB = NULL;
+    struct state *beam = NULL, *next = NULL;
+    if (!gA) return -1;
+    if (!(gB = geodesic_new(VB, FB, nvb, nfb))) goto done;
+    if ((na = extremities(gA, VA, FA, nva, nfa, p, &EA)) < 0) goto done;
+    if ((nb = extremities(gB, VB, FB, nvb, nfb, p, &EB)) < 0) goto done;
+    if (na > 32) na = 32;
+    if (nb > 32) nb = 32;
+    out->na = na; out->nb = nb;
+    if (na < 3 || nb < 3) {
+        cm_seterr("landmarks: %d and %d extremities found, need 3 on each", na, nb);
+        goto done;
+    }
+    double sA = sqrt(mesh_area(VA, FA, nfa)), sB = sqrt(mesh_area(VB, FB, nfb));
+    /* distance fields of every extremity (kept for the limb points) */
+    DA = malloc((size_t)na * nva * sizeof *DA);
+    DB = malloc((size_t)nb * nvb * sizeof *DB);
+    if (!DA || !DB) { cm_seterr("out of memory"); goto done; }
+    for (int i = 0; i < na; i++)
+        if (geodesic_solve(gA, EA + i, 1, DA + (size_t)i * nva) < 0) goto done;
+    for (int i = 0; i < nb; i++)
+        if (geodesic_solve(gB, EB + i, 1, DB + (size_t)i * nvb) < 0) goto done;
+    /* symmetric, scale-free extremity distances */
+    double dA[32][32], dB[32][32];
+    for (int i = 0; i < na; i++)
+        for (int j = 0; j < na; j++)
+            dA[i][j] = 0.5 * (DA[(size_t)i * nva + EA[j]] + DA[(size_t)j * nva + EA[i]]) / sA;
+    for (int i = 0; i < nb; i++)
+        for (int j = 0; j < nb; j++)
+            dB[i][j] = 0.5 * (DB[(size_t)i * nvb + EB[j]] + DB[(size_t)j * nvb + EB[i]]) / sB;
+
+    /* beam search: every pair of matched extremities whose distances agree
+     * to within tau scores tau - |dA - dB| */
+    double tau = p->penalty;
+    int W = p->beam > 0 ? p->beam : 1, nbeam = 1;
+    beam = calloc((size_t)W * (nb + 1), sizeof *beam);
+    next = calloc((size_t)W * (nb + 1), sizeof *next);
+    if (!beam || !next) { cm_seterr("out of memory"); goto done; }
+    for (int i = 0; i < 32; i++) beam[0].m[i] = -1;
+    for (int i = 0; i < na; i++) {
+        int nn = 0;
+        for (int s = 0; s < nbeam; s++)
+            for (int c = -1; c < nb; c++) {
+                if (c >= 0 && (beam[s].used >> c & 1)) continue;
+                struct state x = beam[s];
+                x.m[i] = c;
+                if (c >= 0) {
+                    x.used |= 1u << c;
+                    for (int j = 0; j < i; j++)
+                        if (x.m[j] >= 0) {
+                            double e = fabs(dA[i][j] - dB[c][x.m[j]]);
+                            x.score += e < tau ? tau - e : 0;
+                        }
+                }
+                next[nn++] = x;
+            }
+        qsort(next, nn, sizeof *next, cmp_state);
+        nbeam = nn < W ? nn : W;
+        struct state *tmp = beam; beam = next; next = tmp;
+    }
+    /* orientation among the near-best maps */
+    double cA[3], cB[3];
+    area_centroid(VA, FA, nfa, cA);
+    area_centroid(VB, FB, nfb, cB);
+    double best = beam[0].score, pick = -1e300;
+    int ib = -1;
+    out->orient_mirror = -2;
+    for (int s = 0; s < nbeam; s++) {
+        if (beam[s].score < (1 - p->margin) * best) break;
+        int k = 0;
+        for (int i = 0; i < na; i++) k += beam[s].m[i] >= 0;
+        if (k < 3) continue;
+        double o = orientation(VA, EA, cA, VB, EB, cB, beam[s].m, na);
+        double v = beam[s].score / (best > 0 ? best : 1) + o;
+        if (v > pick) {
+            if (ib >= 0 && o < out->orient) out->orient_mirror = out->orient;
+            pick = v; ib = s; out->orient = o;
+        } else if (out->orient_mirror < -1 || o < out->orient_mirror)
+            out->orient_mirror = o;
+    }
+    if (ib < 0) { cm_seterr("landmarks: fewer than 3 extremities of the two meshes match"); goto done; }
+    int *m = beam[ib].m;
+    /* drop matched extremities that disagree with the rest on average (a
+     * spurious bump matched to some other bump) */
+    for (;;) {
+        int worst = -1, cnt = 0;
+        double wv = 0;
+        for (int i = 0; i < na; i++) cnt += m[i] >= 0;
+        if (cnt <= 3) break;
+        for (int i = 0; i < na; i++) {
+            if (m[i] < 0) continue;
+            double e = 0;
+            for (int j = 0; j < na; j++)
+                if (j != i && m[j] >= 0) e += fabs(dA[i][j] - dB[m[i]][m[j]]);
+            e /= cnt - 1;
+            if (e > wv) { wv = e; worst = i; }
+        }
+        if (wv <= 0.5 * tau) break;
+        m[worst] = -1;
+    }
+    int k = 0;
+    double cost = 0; int npairs = 0;
+    for (int i = 0; i < na; i++) {
+        if (m[i] < 0) continue;
+        k++;
+        for (int j = i + 1; j < na; j++)
+            if (m[j] >= 0) { cost += fabs(dA[i][j] - dB[m[i]][m[j]]); npairs++; }
+    }
+    out->matched = k;
+    out->cost = npairs ? cost / npairs : 0;
+    int cap = k * (1 + p->nlimb) + 1;
+    out->a = malloc((size_t)cap * sizeof *out->a);
+    out->b = malloc((size_t)cap * sizeof *out->b);
+    out->kind = malloc((size_t)cap * sizeof *out->kind);
+    if (!out->a || !out->b || !out->kind) { cm_seterr("out of memory"); goto done; }
+    for (int i = 0; i < na; i++)
+        if (m[i] >= 0) {
+            out->a[out->n] = EA[i]; out->b[out->n] = EB[m[i]]; out->kind[out->n++] = 0;
+        }
+    /* cores: the smallest sum of distances to the matched extremities */
+    int coreA = 0, coreB = 0;
+    double bestA = INFINITY, bestB = INFINITY;
+    for (int v = 0; v < nva; v++) {
+        double sum = 0;
+        for (int i = 0; i < na; i++) if (m[i] >= 0) sum += DA[(size_t)i * nva + v];
+        if (sum < bestA) { bestA = sum; coreA = v; }
+    }
+    for (int v = 0; v < nvb; v++) {
+        double sum = 0;
+        for (int i = 0; i < na; i++) if (m[i] >= 0) sum += DB[(size_t)m[i] * nvb + v];
+        if (sum < bestB) { bestB = sum; coreB = v; }
+    }
+    /* limb points: on the ring at distance t x (distance to the nearest
+     * other matched extremity, in A) from each tip, the vertex with the
+     * smallest sum of distances to the other matched extremities (the
+     * inner side of the limb, on the way to the body) */
+    for (int l = 0; l < p->nlimb; l++)
+        for (int i = 0; i < na; i++) {
+            if (m[i] < 0) continue;
+            double near = INFINITY;
+            for (int j = 0; j < na; j++)
+                if (j != i && m[j] >= 0 && dA[i][j] < near) near = dA[i][j];
+            int pv[2] = {-1, -1};
+            for (int side = 0; side < 2; side++) {
+                int n = side ? nvb : nva;
+                double sc = side ? sB : sA, r = p->limb_t[l] * near * sc, band = 0.02 * sc, bb = INFINITY;
+                const double *De = side ? DB + (size_t)m[i] * nvb : DA + (size_t)i * nva;
+                for (int v = 0; v < n; v++) {
+                    if (fabs(De[v] - r) > band) continue;
+                    double sum = 0;
+                    for (int j = 0; j < na; j++)
+                        if (j != i && m[j] >= 0)
+                            sum += side ? DB[(size_t)m[j] * nvb + v] : DA[(size_t)j * nva + v];
+                    if (sum < bb) { bb = sum; pv[side] = v; }
+                }
+            }
+            if (pv[0] < 0 || pv[1] < 0) continue;
+            out->a[out->n] = pv[0]; out->b[out->n] = pv[1]; out->kind[out->n++] = 1;
+        }
+    if (p->core) { out->a[out->n] = coreA; out->b[out->n] = coreB; out->kind[out->n++] = 2; }
+    rc = 0;
+done:
+    if (rc < 0 && out->a) { int na2 = out->na, nb2 = out->nb; landmark_pairs_free(out); out->na = na2; out->nb = nb2; }
+    geodesic_free(gA);
+    geodesic_free(gB);
+    free(EA); free(EB); free(DA); free(DB); free(beam); free(next);
+    return rc;
+}

@@ -1,0 +1,72 @@
+/* landmark_auto.h -- corresponding landmarks between two scans of one
+ * character in different poses, without hand work.
+ *
+ * 1. Extremities of each mesh (tips of limbs, head, tail, ears): the
+ *    vertices that are local maxima, within a geodesic radius, of the
+ *    geodesic distance from both ends of an approximate diameter (the
+ *    feature points of Tierny et al.; the two ends themselves included).
+ *    Geodesics: the heat method (geodesic.h).
+ * 2. Matching: an injective partial map from A's extremities to B's that
+ *    keeps the geodesic distances between matched extremities (isometry),
+ *    found by beam search; every unmatched extremity costs a penalty.
+ * 3. Left and right: a bilateral character's intrinsic distances cannot
+ *    tell its left legs from its right ones (the mirrored map costs the
+ *    same).  Among the maps within a small margin of the best cost, the one
+ *    whose matched extremities keep their orientation wins: the signs of
+ *    the triple products (x_i - c) . ((x_j - c) x (x_k - c)) over all
+ *    triples, c the area centroid, weighted by the smaller volume.
+ * 4. More landmarks on the limbs: for each matched extremity, on the ring
+ *    at geodesic distance t x (its distance to the nearest other matched
+ *    extremity) the vertex with the smallest sum of distances to the other
+ *    matched extremities (the limb's inner side); optionally the cores
+ *    (the smallest sum of distances to all of them: ill-defined on a round
+ *    body, off by default).
+ */
+#ifndef CM_LANDMARK_AUTO_H
+#define CM_LANDMARK_AUTO_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct landmark_auto_params {
+    double radius;      /* local-maximum radius, fraction of sqrt(area) (default 0.1) */
+    double penalty;     /* cost of an unmatched extremity, fraction of sqrt(area) (default 0.25) */
+    double margin;      /* maps within (1 + margin) x the best cost compete on orientation (default 0.5) */
+    int beam;           /* beam width of the matching search (default 400) */
+    int max_extremities;/* keep at most this many per mesh, farthest first (default 12) */
+    double limb_t[4];   /* fractions t for limb landmarks (see 4.) */
+    int nlimb;          /* how many of limb_t (default 1: 0.35) */
+    int core;           /* 1: also pair the cores (default 0) */
+};
+void landmark_auto_defaults(struct landmark_auto_params *p);
+
+/* Extremities of one mesh.
+ *   V #V by 3, F #F by 3 (an oriented manifold, one component)
+ *   E (out, malloc'd) their vertex indices, farthest from the rest first
+ * Returns their number, -1 on error (cm_errmsg). */
+int mesh_extremities(const double *V, const int *F, int nv, int nf,
+                     const struct landmark_auto_params *p, int **E);
+
+struct landmark_pairs {
+    int n;
+    int *a, *b;         /* n vertex indices of A and of B */
+    int *kind;          /* n: 0 extremity, 1 limb point, 2 core */
+    int na, nb;         /* extremities found on A and B */
+    int matched;        /* extremity pairs */
+    double cost;        /* mean |dA - dB| over matched extremity pairs, over sqrt(area of A) */
+    double orient;      /* orientation agreement of the chosen map, -1..1 */
+    double orient_mirror;/* that of the best mirrored competitor (-2: none) */
+};
+
+/* Corresponding landmarks of A (VA, FA) and B (VB, FB).  Returns 0 or -1
+ * (cm_errmsg: a mesh the heat method refuses, fewer than 3 matched
+ * extremities). */
+int landmark_auto(const double *VA, const int *FA, int nva, int nfa,
+                  const double *VB, const int *FB, int nvb, int nfb,
+                  const struct landmark_auto_params *p, struct landmark_pairs *out);
+void landmark_pairs_free(struct landmark_pairs *L);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
