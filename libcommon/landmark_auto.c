@@ -122,23 +122,19 @@ static int extremities(struct geodesic *g, const double *V, const int *F, int nv
         int m = 1;
         for (int q = t.VVs[v]; q < t.VVs[v + 1] && m; q++)
             if (f1[t.VV[q]] + f2[t.VV[q]] > f1[v] + f2[v]) m = 0;
-        if (!m && v != p1 && v != p2) continue;
-        int lm = (v == p1 || v == p2) ? 1 : local_max(V, &t, v, r, f1, f2, dist, &h, touched);
+        if (!m) continue;
+        int lm = local_max(V, &t, v, r, f1, f2, dist, &h, touched);
         if (lm < 0) { cm_seterr("out of memory"); goto done; }
         if (lm) cand[nc++] = v;
     }
-    /* farthest first (by f1 + f2), merging candidates closer than r */
+    /* farthest first (by f1 + f2); no two are within r of each other
+     * along the surface (each is the maximum of its r-neighbourhood), so
+     * two feet that touch in space both stay */
     for (int i = 1; i < nc; i++)
         for (int j = i; j > 0 && f1[cand[j]] + f2[cand[j]] > f1[cand[j - 1]] + f2[cand[j - 1]]; j--) {
             int x = cand[j]; cand[j] = cand[j - 1]; cand[j - 1] = x;
         }
-    n = 0;
-    for (int i = 0; i < nc && n < p->max_extremities; i++) {
-        int keep = 1;
-        for (int j = 0; j < n && keep; j++)
-            if (dist3(V + 3 * cand[i], V + 3 * cand[j]) < r) keep = 0;
-        if (keep) cand[n++] = cand[i];
-    }
+    n = nc < p->max_extremities ? nc : p->max_extremities;
     *E = malloc((size_t)(n > 0 ? n : 1) * sizeof **E);
     if (!*E) { n = -1; cm_seterr("out of memory"); goto done; }
     memcpy(*E, cand, (size_t)n * sizeof **E);

@@ -4,7 +4,7 @@
  * 1. Extremities of each mesh (tips of limbs, head, tail, ears): the
  *    vertices that are local maxima, within a geodesic radius, of the
  *    geodesic distance from both ends of an approximate diameter (the
- *    feature points of Tierny et al.; the two ends themselves included).
+ *    feature points of Tierny et al.).
  *    Geodesics: the heat method (geodesic.h).
  * 2. Matching: an injective partial map from A's extremities to B's that
  *    keeps the geodesic distances between matched extremities (isometry),
