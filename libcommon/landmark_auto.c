@@ -127,6 +127,14 @@ static int extremities(struct geodesic *g, const double *V, const int *F, int nv
         if (lm < 0) { cm_seterr("out of memory"); goto done; }
         if (lm) cand[nc++] = v;
     }
+    /* the diameter's ends are extremities too, unless a local maximum lies
+     * within r of them (f1, f2 are the distances from them) */
+    for (int e = 0; e < 2; e++) {
+        const double *fe = e ? f2 : f1;
+        int pe = e ? p2 : p1, near = 0;
+        for (int i = 0; i < nc && !near; i++) near = fe[cand[i]] < r || cand[i] == pe;
+        if (!near) cand[nc++] = pe;
+    }
     /* farthest first (by f1 + f2); no two are within r of each other
      * along the surface (each is the maximum of its r-neighbourhood), so
      * two feet that touch in space both stay */
