@@ -7,6 +7,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* vertices, centroids, edge midpoints of (V, F) into S ((nv + nf + ne) by 3) */
+static void samples(const double *V, int nv, const int *F, int nf, const struct topology *t, double *S)
+{
+    int k = 0;
+    for (int v = 0; v < nv; v++, k++)
+        for (int d = 0; d < 3; d++) S[3 * k + d] = V[3 * v + d];
+    for (int f = 0; f < nf; f++, k++)
+        for (int d = 0; d < 3; d++)
+            S[3 * k + d] = (V[3 * F[3 * f] + d] + V[3 * F[3 * f + 1] + d] + V[3 * F[3 * f + 2] + d]) / 3;
+    for (int e = 0; e < t->ne; e++, k++)
+        for (int d = 0; d < 3; d++) S[3 * k + d] = 0.5 * (V[3 * t->E[2 * e] + d] + V[3 * t->E[2 * e + 1] + d]);
+}
+
 int one_sided_distance(const double *V, int nv, const int *F, int nf,
                        const struct closest_point_tree *B, struct one_sided *out)
 {
@@ -14,14 +27,7 @@ int one_sided_distance(const double *V, int nv, const int *F, int nf,
     if (topology_build(F, nf, nv, &t) < 0) return -1;
     int ns = nv + nf + t.ne;
     double *P = malloc((size_t)ns * 3 * sizeof *P + 1), *D = malloc((size_t)ns * sizeof *D + 1);
-    int k = 0;
-    for (int v = 0; v < nv; v++, k++)
-        for (int d = 0; d < 3; d++) P[3 * k + d] = V[3 * v + d];
-    for (int f = 0; f < nf; f++, k++)
-        for (int d = 0; d < 3; d++)
-            P[3 * k + d] = (V[3 * F[3 * f] + d] + V[3 * F[3 * f + 1] + d] + V[3 * F[3 * f + 2] + d]) / 3;
-    for (int e = 0; e < t.ne; e++, k++)
-        for (int d = 0; d < 3; d++) P[3 * k + d] = 0.5 * (V[3 * t.E[2 * e] + d] + V[3 * t.E[2 * e + 1] + d]);
+    samples(V, nv, F, nf, &t, P);
     topology_free(&t);
     closest_points(B, P, ns, NULL, NULL, NULL, D);
     out->max = 0; out->sumsq = 0; out->n = ns;
@@ -129,19 +135,6 @@ struct frame_compare {
     int *HX;                            /* nsx: closest reference face of each frame sample */
     double *SX, *BX, *DX, *DC, *NX;
 };
-
-/* vertices, centroids, edge midpoints of (V, F) into S ((nv + nf + ne) by 3) */
-static void samples(const double *V, int nv, const int *F, int nf, const struct topology *t, double *S)
-{
-    int k = 0;
-    for (int v = 0; v < nv; v++, k++)
-        for (int d = 0; d < 3; d++) S[3 * k + d] = V[3 * v + d];
-    for (int f = 0; f < nf; f++, k++)
-        for (int d = 0; d < 3; d++)
-            S[3 * k + d] = (V[3 * F[3 * f] + d] + V[3 * F[3 * f + 1] + d] + V[3 * F[3 * f + 2] + d]) / 3;
-    for (int e = 0; e < t->ne; e++, k++)
-        for (int d = 0; d < 3; d++) S[3 * k + d] = 0.5 * (V[3 * t->E[2 * e] + d] + V[3 * t->E[2 * e + 1] + d]);
-}
 
 /* a face of a mesh with topology t next to each of its samples (the hint
  * when the other mesh has the same connectivity) */
