@@ -79,6 +79,13 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
     set -- $(hf "$T/c05.mesh" "$T/ch05.mesh"); hc=$1 fc=$2
     set -- $(hf "$T/c05.mesh" "$T/b5.mesh"); hb5=$1 fb5=$2
     echo "nricp camel 01->05 direct, --init-model shell: $hs5 % ($fs5 flipped); with the arap start $h5 % ($f5 flipped); chained through 02-04 $hc % ($fc flipped) | baseline nearest-vertex direct $hb5 % | ratio $(ratio "$hs5" "$hb5") shell, $(ratio "$h5" "$hb5") arap, $(ratio "$hc" "$hb5") chained (goal < 2 %; trimesh peer 21 %)"
+    # nricp without landmark files (landmark-auto inside) against the old
+    # default without landmarks, 01 -> 03 (two frames apart)
+    nricp "$T/c01.mesh" "$T/c03.mesh" >"$T/a3.mesh" &&
+    nricp --no-auto "$T/c01.mesh" "$T/c03.mesh" >"$T/n3.mesh" || exit 1
+    set -- $(hf "$T/c03.mesh" "$T/a3.mesh"); ha=$1 fa=$2
+    set -- $(hf "$T/c03.mesh" "$T/n3.mesh"); hn=$1 fn=$2
+    echo "nricp automatic landmarks camel 01->03: $ha % ($fa flipped) | baseline --no-auto $hn % ($fn flipped) | ratio $(ratio "$ha" "$hn") (goal < 1 %, 0 flipped)"
     # mesh-metrics on 21 ARAP in-betweens of 01 -> 02 against scan 01 (the
     # examples/clay interp-metrics case): one process for all frames (tree,
     # samples and topology of the reference once, each frame's closest
