@@ -60,3 +60,153 @@ extern "C" int cdt2_mesh_box(const double lo[2], const double hi[2], const doubl
         return cm_seterr("2D meshing failed: %s", e.what());
     }
 }
+
+// ---------------------------------------------------------------------
+// overlay of N triangulations of one polygon (see cdt2.h)
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <cmath>
+#include <set>
+
+namespace {
+typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> PVb;
+typedef CGAL::Triangulation_face_base_with_info_2<int, K> PFi;
+typedef CGAL::Constrained_triangulation_face_base_2<K, PFi> PFb;
+typedef CGAL::Triangulation_data_structure_2<PVb, PFb> PTds;
+typedef CGAL::Constrained_Delaunay_triangulation_2<K, PTds, CGAL::Exact_predicates_tag> PCDT;
+
+// the m-2 triangles of a simple polygon (corners 0..m-1), no new points
+int polygon_triangles(int m, const double *X, std::vector<int> &T)
+{
+    PCDT cdt;
+    std::vector<PCDT::Vertex_handle> vh(m);
+    for (int i = 0; i < m; i++) {
+        vh[i] = cdt.insert(PCDT::Point(X[2 * i], X[2 * i + 1]));
+        vh[i]->info() = i;
+    }
+    if ((int)cdt.number_of_vertices() != m) return cm_seterr("overlay: repeated corner");
+    for (int i = 0; i < m; i++) cdt.insert_constraint(vh[i], vh[(i + 1) % m]);
+    if ((int)cdt.number_of_vertices() != m) return cm_seterr("overlay: piece is not simple");
+    // inside: odd nesting (flood from the infinite face across constraints)
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+    std::vector<PCDT::Face_handle> stack{cdt.infinite_face()};
+    cdt.infinite_face()->info() = 0;
+    std::vector<PCDT::Face_handle> next;
+    for (int level = 0; !stack.empty(); level++) {
+        while (!stack.empty()) {
+            auto f = stack.back(); stack.pop_back();
+            for (int e = 0; e < 3; e++) {
+                auto g = f->neighbor(e);
+                if (g->info() >= 0) continue;
+                if (f->is_constrained(e)) next.push_back(g);
+                else { g->info() = level; stack.push_back(g); }
+            }
+        }
+        for (auto g : next) if (g->info() < 0) { g->info() = level + 1; stack.push_back(g); }
+        next.clear();
+    }
+    T.clear();
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+        if (f->info() % 2 == 1)
+            for (int k = 0; k < 3; k++) T.push_back(f->vertex(k)->info());
+    if ((int)T.size() != 3 * (m - 2)) return cm_seterr("overlay: piece is not a simple polygon");
+    return 0;
+}
+
+typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+typedef CGAL::Triangulation_vertex_base_with_info_2<int, EK> EVb;
+typedef CGAL::Constrained_triangulation_face_base_2<EK> EFb;
+typedef CGAL::Triangulation_data_structure_2<EVb, EFb> ETds;
+typedef CGAL::Constrained_triangulation_plus_2<
+    CGAL::Constrained_Delaunay_triangulation_2<EK, ETds, CGAL::Exact_intersections_tag>> ECDT;
+}
+
+extern "C" int cdt2_overlay(int m, int N, const double *const *X, double **Sout, int *kout, int **Fout,
+                            int *nfout)
+{
+    try {
+        std::vector<std::vector<int>> T(N);
+        for (int s = 0; s < N; s++)
+            if (polygon_triangles(m, X[s], T[s]) < 0) return -1;
+        // corners on the unit circle at their mean arc-length position
+        // (not evenly: the diagonals of a regular polygon meet three at a
+        // point, and rounded, in tiny triangles)
+        std::vector<double> t(m + 1, 0.0);
+        for (int s = 0; s < N; s++) {
+            double L = 0;
+            std::vector<double> c(m + 1, 0.0);
+            for (int i = 0; i < m; i++) {
+                const double *a = X[s] + 2 * i, *b = X[s] + 2 * ((i + 1) % m);
+                L += std::hypot(b[0] - a[0], b[1] - a[1]);
+                c[i + 1] = L;
+            }
+            for (int i = 0; i <= m; i++) t[i] += c[i] / L / N;
+        }
+        std::vector<EK::Point_2> D(m);
+        for (int i = 0; i < m; i++) {
+            // at least a quarter of the even spacing between neighbours
+            double u = 0.5 * t[i] + 0.5 * (double)i / m;
+            D[i] = EK::Point_2(std::cos(2 * M_PI * u), std::sin(2 * M_PI * u));
+        }
+        ECDT cdt;
+        std::vector<ECDT::Vertex_handle> vh(m);
+        for (int i = 0; i < m; i++) { vh[i] = cdt.insert(D[i]); vh[i]->info() = i; }
+        std::set<std::pair<int, int>> done;
+        for (int i = 0; i < m; i++) cdt.insert_constraint(vh[i], vh[(i + 1) % m]);
+        for (int s = 0; s < N; s++)
+            for (size_t t = 0; t < T[s].size(); t += 3)
+                for (int e = 0; e < 3; e++) {
+                    int a = T[s][t + e], b = T[s][t + (e + 1) % 3];
+                    if (a > b) std::swap(a, b);
+                    if (b - a == 1 || (a == 0 && b == m - 1)) continue;
+                    if (!done.insert({a, b}).second) continue;
+                    cdt.insert_constraint(vh[a], vh[b]);
+                }
+        int k = 0;
+        std::vector<ECDT::Vertex_handle> extra;
+        std::set<ECDT::Vertex_handle> corner(vh.begin(), vh.end());
+        for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+            ECDT::Vertex_handle h = v;
+            if (!corner.count(h)) { h->info() = m + k++; extra.push_back(h); }
+        }
+        double *S = (double *)malloc(2 * (size_t)N * k * sizeof(double) + 1);
+        if (!S) return cm_seterr("out of memory");
+        for (int s = 0; s < N; s++)
+            for (int q = 0; q < k; q++) {
+                const EK::Point_2 &p = extra[q]->point();
+                int found = 0;
+                for (size_t t = 0; t < T[s].size() && !found; t += 3) {
+                    const EK::Point_2 &A = D[T[s][t]], &B = D[T[s][t + 1]], &C = D[T[s][t + 2]];
+                    // the shape's triangles are ccw in the shape, so ccw on the circle too
+                    if (CGAL::orientation(A, B, p) == CGAL::RIGHT_TURN ||
+                        CGAL::orientation(B, C, p) == CGAL::RIGHT_TURN ||
+                        CGAL::orientation(C, A, p) == CGAL::RIGHT_TURN) continue;
+                    EK::FT area = CGAL::area(A, B, C);
+                    double la = CGAL::to_double(CGAL::area(p, B, C) / area);
+                    double lb = CGAL::to_double(CGAL::area(A, p, C) / area);
+                    double lc = 1 - la - lb;
+                    const double *xa = X[s] + 2 * T[s][t], *xb = X[s] + 2 * T[s][t + 1], *xc = X[s] + 2 * T[s][t + 2];
+                    double *o = S + 2 * ((size_t)s * k + q);
+                    o[0] = la * xa[0] + lb * xb[0] + lc * xc[0];
+                    o[1] = la * xa[1] + lb * xb[1] + lc * xc[1];
+                    found = 1;
+                }
+                if (!found) { free(S); return cm_seterr("overlay: a crossing lies in no triangle"); }
+            }
+        std::vector<int> F;
+        for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+            for (int e = 0; e < 3; e++) F.push_back(f->vertex(e)->info());
+        *Fout = (int *)malloc(F.size() * sizeof(int) + 1);
+        if (!*Fout) { free(S); return cm_seterr("out of memory"); }
+        std::copy(F.begin(), F.end(), *Fout);
+        *nfout = (int)(F.size() / 3);
+        *Sout = S;
+        *kout = k;
+        return 0;
+    } catch (const std::exception &e) {
+        return cm_seterr("overlay triangulation failed: %s", e.what());
+    }
+}

@@ -21,6 +21,29 @@ extern "C" {
 int cdt2_mesh_box(const double lo[2], const double hi[2], const double *P, int np, double size,
                   double **V, int *nv, int **F, int *nf, int *pidx);
 
+/* Compatible triangulation of one polygon given in N shapes, by overlay
+ * (Aronov, Seidel, Souvaine 1993): every shape's polygon is triangulated
+ * without new points (constrained Delaunay), the m corners are put on a
+ * circle in the same order, where every shape's diagonals become chords;
+ * the chords of all shapes are overlaid (constrained triangulation with
+ * exact intersections), and every vertex of the overlay is mapped back
+ * into each shape through the barycentric coordinates of the shape's
+ * triangle that holds it.  Each overlay triangle lies in one triangle of
+ * every shape, so it is positive in all of them (up to the rounding of the
+ * mapped points to doubles, which the caller checks).  Always succeeds on
+ * simple counter-clockwise polygons; costs Steiner points (the chord
+ * crossings), so it is the fallback for pieces the divide and conquer
+ * cannot split.
+ * m        corners
+ * N        shapes
+ * X        N arrays of m by 2 corner positions (simple, counter-clockwise)
+ * S        out: N arrays (malloc'd, stacked: *S is N by k by 2) of the k new
+ *          vertices' positions, shape by shape
+ * k        out: number of new vertices (numbered m .. m+k-1)
+ * F        out: #F by 3 counter-clockwise triangles over 0..m+k-1 (malloc'd)
+ * Returns -1 on failure (cm_errmsg set). */
+int cdt2_overlay(int m, int N, const double *const *X, double **S, int *k, int **F, int *nf);
+
 #ifdef __cplusplus
 }
 #endif

@@ -3,6 +3,8 @@
 #include "cm_error.h"
 #include "rings.h"
 #include "topology.h"
+#include "predicates2.h"
+#include "cdt2.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -174,6 +176,75 @@ int compat_match(int N, double *const *P, const int *n, const int *corr, int nco
     return 0;
 }
 
+int compat_corr_order(int N, const int *n, int *corr, int ncorr)
+{
+    /* +1: every shape increasing cyclically, -1: every shape decreasing */
+    int dir = 0;
+    for (int s = 0; s < N; s++) {
+        for (int k = 0; k < ncorr; k++) {
+            int v = corr[k * N + s];
+            if (v < 0 || v >= n[s])
+                return cm_seterr("correspondence %d: index %d out of range for shape %d (0..%d)",
+                                 k + 1, v, s, n[s] - 1);
+            for (int l = 0; l < k; l++)
+                if (corr[l * N + s] == v)
+                    return cm_seterr("correspondences %d and %d: shape %d: both are vertex %d", l + 1, k + 1, s, v);
+        }
+        if (ncorr < 3) continue;
+        int d = 0;
+        for (int sign = 1; sign >= -1 && !d; sign -= 2) {
+            int ok = 1, base = corr[s], prev = 0;
+            for (int k = 1; k < ncorr && ok; k++) {
+                int r = ((sign * (corr[k * N + s] - base)) % n[s] + n[s]) % n[s];
+                if (r <= prev) ok = 0;
+                prev = r;
+            }
+            if (ok) d = sign;
+        }
+        if (!d)
+            return cm_seterr("shape %d: the correspondence points are not in one cyclic order along its "
+                             "outline (rows must list them in the same order for every shape)", s);
+        if (dir && d != dir)
+            return cm_seterr("shape %d: the correspondence points run the other way round its outline "
+                             "than in shape 0", s);
+        dir = d;
+    }
+    if (dir >= 0) return 0;
+    for (int a = 0, b = ncorr - 1; a < b; a++, b--)
+        for (int s = 0; s < N; s++) {
+            int t = corr[a * N + s];
+            corr[a * N + s] = corr[b * N + s];
+            corr[b * N + s] = t;
+        }
+    return 1;
+}
+
+static double seg_dist(const double *p, const double *a, const double *b);
+
+static double ring_dist(const double *p, const double *R, int n)
+{
+    double d = INFINITY;
+    for (int i = 0; i < n; i++) d = fmin(d, seg_dist(p, R + 2 * i, R + 2 * ((i + 1) % n)));
+    return d;
+}
+
+double compat_outline_error(const struct compat *c, int s, const double *P, int n)
+{
+    const double *X = c->X[s];
+    int nb = c->nb;
+    double h = 0;
+    for (int i = 0; i < n; i++) h = fmax(h, ring_dist(P + 2 * i, X, nb));
+    /* the other direction: 16 points along every simplified edge */
+    for (int i = 0; i < nb; i++) {
+        const double *a = X + 2 * i, *b = X + 2 * ((i + 1) % nb);
+        for (int t = 0; t < 16; t++) {
+            double u = t / 16.0, q[2] = {a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])};
+            h = fmax(h, ring_dist(q, P, n));
+        }
+    }
+    return h / diag2(P, n);
+}
+
 /* ------------------------------------------------------------------ */
 /* simplification */
 
@@ -225,15 +296,15 @@ int compat_simplify(struct compat *c, double err, const unsigned char *keep)
             const double *A = c->B[s] + 2 * a, *Bp = c->B[s] + 2 * b;
             for (int i = nxt[b]; i != a && !bad; i = nxt[i]) {
                 int j = nxt[i];
-                if (segments_intersect(A, Bp, c->B[s] + 2 * i, c->B[s] + 2 * j)) {
+                if (segments_meet(A, Bp, c->B[s] + 2 * i, c->B[s] + 2 * j)) {
                     /* edges sharing an endpoint with the chord only touch there */
-                    if (j == a && orient2(A, Bp, c->B[s] + 2 * i) != 0) continue;
+                    if (j == a && orient2_sign(A, Bp, c->B[s] + 2 * i) != 0) continue;
                     bad = 1;
                 }
             }
             /* edge b -> nxt[b] shares b: reject a collinear continuation
              * (conservative: it could fold back onto the chord) */
-            if (!bad && orient2(A, Bp, c->B[s] + 2 * nxt[b]) == 0) bad = 1;
+            if (!bad && orient2_sign(A, Bp, c->B[s] + 2 * nxt[b]) == 0) bad = 1;
             /* the polygon must stay counter-clockwise */
             if (!bad && area[s] - 0.5 * orient2(A, c->B[s] + 2 * best, Bp) <= 0) bad = 1;
         }
@@ -277,17 +348,15 @@ struct sub {
 
 static const double *V(const struct sub *p, int i) { return p->X + 2 * p->poly[i]; }
 
-/* direction q strictly inside the interior angle at polygon corner i */
+/* direction q strictly inside the interior angle at polygon corner i
+ * (exact predicates: a corner whose neighbours are collinear with it to
+ * the last bit is still a corner, and q on one of its edges is outside) */
 static int incone(const struct sub *p, int i, const double *q)
 {
     const double *a = V(p, i), *pr = V(p, (i + p->m - 1) % p->m), *nx = V(p, (i + 1) % p->m);
-    /* angles below ~1e-7 rad count as zero: the matched boundary has many
-     * points on straight edges, nearly collinear after rounding */
-    double ln = hypot(nx[0] - a[0], nx[1] - a[1]), lp = hypot(pr[0] - a[0], pr[1] - a[1]);
-    double lq = hypot(q[0] - a[0], q[1] - a[1]), tol = 1e-7;
-    double o1 = orient2(a, nx, q) / (ln * lq), o2 = orient2(pr, a, q) / (lp * lq);
-    if (orient2(pr, a, nx) / (ln * lp) > tol) return o1 > tol && o2 > tol;
-    return o1 > tol || o2 > tol;
+    int o1 = orient2_sign(a, nx, q), o2 = orient2_sign(pr, a, q);
+    if (orient2_sign(pr, a, nx) > 0) return o1 > 0 && o2 > 0;
+    return o1 > 0 || o2 > 0;
 }
 
 /* smallest of the two angles the direction q makes at corner i */
@@ -309,12 +378,59 @@ static int seg_inside(const struct sub *p, int i, const double *P, int j, const 
     for (int e = 0; e < m; e++) {
         int f = (e + 1) % m;
         if (e == i || f == i || e == j || f == j) continue;
-        if (segments_intersect(P, Q, V(p, e), V(p, f))) return 0;
+        if (segments_meet(P, Q, V(p, e), V(p, f))) return 0;
     }
     /* corners i adjacent to edges we skipped: a corner other than i, j lying
      * on PQ was caught by the edges around it unless both its edges were
      * skipped, i.e. it sits between i and j: ruled out by the cone tests */
     return 1;
+}
+
+#define STAGE2_MIN (2 * M_PI / 180)
+#define CLEARANCE_MIN (0.5 * M_PI / 180)
+#define STAGE1_MIN 1e-6
+
+/* how far the segment P-Q (corners i, j, or free if < 0) keeps from the
+ * other corners, as an angle: the smallest over corners v of the smaller
+ * of the angles v-P-Q and v-Q-P (a corner close to the segment makes a
+ * sliver in one of the pieces) */
+static double clearance(const struct sub *p, int i, const double *P, int j, const double *Q)
+{
+    double ux = Q[0] - P[0], uy = Q[1] - P[1], q = M_PI;
+    int m = p->m;
+    for (int v = 0; v < m; v++) {
+        if (v == i || v == j) continue;
+        /* the neighbours of corners are the cone angles' business */
+        if (i >= 0 && (v == (i + 1) % m || v == (i + m - 1) % m)) continue;
+        if (j >= 0 && (v == (j + 1) % m || v == (j + m - 1) % m)) continue;
+        const double *x = V(p, v);
+        double ax = x[0] - P[0], ay = x[1] - P[1], bx = x[0] - Q[0], by = x[1] - Q[1];
+        double cr = fabs(ux * ay - uy * ax);
+        double aP = atan2(cr, ux * ax + uy * ay), aQ = atan2(fabs(ux * by - uy * bx), -(ux * bx + uy * by));
+        q = fmin(q, fmin(aP, aQ));
+    }
+    return q;
+}
+
+/* a Steiner point near the middle of the inside segment a-b (a is corner
+ * ia or free if ia < 0, likewise b), pushed off the segment so that the
+ * pieces on both sides get a real corner there instead of a flat one:
+ * offsets of 0.15, 0.075, ... times |ab| to either side, then the plain
+ * midpoint; the first whose two links are inside the polygon (exact
+ * tests: a rounded midpoint can fall outside a thin piece).  Returns -1 if
+ * none is. */
+static int bent_point(const struct sub *p, int ia, const double *a, int ib, const double *b, double *q)
+{
+    double mx = 0.5 * (a[0] + b[0]), my = 0.5 * (a[1] + b[1]);
+    double nx = -(b[1] - a[1]), ny = b[0] - a[0];
+    for (double h = 0.15; h > 1e-3; h *= 0.5)
+        for (int side = 1; side >= -1; side -= 2) {
+            q[0] = mx + side * h * nx; q[1] = my + side * h * ny;
+            if (seg_inside(p, ia, a, -1, q) && seg_inside(p, -1, q, ib, b)) return 0;
+        }
+    q[0] = mx; q[1] = my;
+    if (seg_inside(p, ia, a, -1, q) && seg_inside(p, -1, q, ib, b)) return 0;
+    return -1;
 }
 
 /* ear-clipping triangulation of the sub-polygon: candidate interior
@@ -330,14 +446,14 @@ static int candidates(const struct sub *p, double **out)
         int found = 0;
         for (int k = 0; k < n && !found; k++) {
             int a = idx[(k + n - 1) % n], b = idx[k], d = idx[(k + 1) % n];
-            if (orient2(V(p, a), V(p, b), V(p, d)) <= 0) continue;
+            if (orient2_sign(V(p, a), V(p, b), V(p, d)) <= 0) continue;
             int inside = 0;
             for (int t = 0; t < n && !inside; t++) {
                 int w = idx[t];
                 if (w == a || w == b || w == d) continue;
                 const double *q = V(p, w);
-                if (orient2(V(p, a), V(p, b), q) >= 0 && orient2(V(p, b), V(p, d), q) >= 0 &&
-                    orient2(V(p, d), V(p, a), q) >= 0) inside = 1;
+                if (orient2_sign(V(p, a), V(p, b), q) >= 0 && orient2_sign(V(p, b), V(p, d), q) >= 0 &&
+                    orient2_sign(V(p, d), V(p, a), q) >= 0) inside = 1;
             }
             if (inside) continue;
             const double *A = V(p, a), *B = V(p, b), *D = V(p, d);
@@ -385,6 +501,20 @@ static double pair_score(double q, int i, int j, int m)
     return q * (1 + 0.25 * balance(i, j, m));
 }
 
+/* does the path corner i -> pts (k points) -> corner j cross itself? */
+static int path_crosses(const struct sub *p, int i, int j, const double *pts, int k)
+{
+    for (int t = 0; t <= k; t++)
+        for (int u = t + 2; u <= k; u++) {
+            const double *a = t ? pts + 2 * (t - 1) : V(p, i), *b = t < k ? pts + 2 * t : V(p, j);
+            const double *e = pts + 2 * (u - 1), *f = u < k ? pts + 2 * u : V(p, j);
+            if (segments_meet(a, b, e, f)) return 1;
+        }
+    return 0;
+}
+
+
+
 /* quality of path corner i -> points -> corner j in one shape: min angle */
 static double path_quality(const struct sub *p, int i, int j, const double *pts, int k)
 {
@@ -419,10 +549,17 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
             for (int s = 0; s < N && all; s++) {
                 if (!incone(&sp[s], i, V(&sp[s], j)) || !incone(&sp[s], j, V(&sp[s], i))) { all = 0; break; }
                 double qq = fmin(cone_quality(&sp[s], i, V(&sp[s], j)), cone_quality(&sp[s], j, V(&sp[s], i)));
+                /* a diagonal along a run of (nearly) collinear corners cuts off
+                 * a zero-width sliver: leave such pieces to the overlay */
+                if (qq < STAGE1_MIN && c->split_mode != COMPAT_LINKPATH) { all = 0; break; }
                 /* a pair that cannot beat the best score needs no edge tests */
                 if (pair_score(fmin(q, qq), i, j, m) <= best) { all = 0; break; }
-                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) q = fmin(q, qq);
-                else all = 0;
+                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) {
+                    double cl = clearance(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j));
+                    /* a diagonal grazing another corner makes a sliver piece */
+                    if (cl < CLEARANCE_MIN && c->split_mode != COMPAT_LINKPATH) all = 0;
+                    q = fmin(q, fmin(qq, cl));
+                } else all = 0;
             }
             if (all) {
                 double sc = pair_score(q, i, j, m);
@@ -465,13 +602,19 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                 double bq = -1;
                 if (vis[((size_t)s * m + i) * m + j]) {
                     const double *A = V(&sp[s], i), *B = V(&sp[s], j);
-                    double mid[2] = {0.5 * (A[0] + B[0]), 0.5 * (A[1] + B[1])};
-                    bq = path_quality(&sp[s], i, j, mid, 1);
-                    tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
+                    double mid[2];
+                    if (bent_point(&sp[s], i, A, j, B, mid) == 0) {
+                        bq = fmin(path_quality(&sp[s], i, j, mid, 1),
+                                  fmin(clearance(&sp[s], i, A, -1, mid), clearance(&sp[s], -1, mid, j, B)));
+                        tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
+                    }
                 }
                 for (int a = 0; a < nc[s]; a++)
                     if (cv[s][(size_t)a * m + i] && cv[s][(size_t)a * m + j]) {
-                        double pq = path_quality(&sp[s], i, j, C[s] + 2 * a, 1);
+                        const double *x = C[s] + 2 * a;
+                        double pq = path_quality(&sp[s], i, j, x, 1);
+                        if (pq > bq) pq = fmin(pq, fmin(clearance(&sp[s], i, V(&sp[s], i), -1, x),
+                                                        clearance(&sp[s], -1, x, j, V(&sp[s], j))));
                         if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
                     }
                 if (bq < 0) all = 0;
@@ -484,11 +627,14 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         }
     free(tmp);
     int rc = 0;
-    if (bi >= 0) {
+    /* a Steiner point squeezed into a sliver only makes thinner pieces: below
+     * STAGE2_MIN the overlay does better */
+    if (bi >= 0 && (best >= STAGE2_MIN || c->split_mode == COMPAT_LINKPATH)) {
         out->i = bi; out->j = bj; out->k = 1; out->path = bestpath; out->stage = 1;
         goto done;
     }
     free(bestpath);
+    if (c->split_mode == COMPAT_OVERLAY) { rc = 1; goto done; }
     /* stage III: link distances through candidate points */
     {
         int **dist = malloc(N * sizeof *dist);   /* dist[s][i*m + j]: links */
@@ -563,22 +709,38 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                         pts[2 * t] = C[s][2 * a]; pts[2 * t + 1] = C[s][2 * a + 1];
                     }
                 }
-                /* pad: split the longest link until the shape has k points */
-                while (have < k) {
-                    int bt = 0;
-                    double bl = -1;
-                    for (int t = 0; t <= have; t++) {
-                        const double *a = t ? pts + 2 * (t - 1) : V(&sp[s], bi);
-                        const double *b = t < have ? pts + 2 * t : V(&sp[s], bj);
-                        double l = hypot(b[0] - a[0], b[1] - a[1]);
-                        if (l > bl) { bl = l; bt = t; }
+                /* pad: split the longest link that can take a point (inside
+                 * the piece, path still simple) until the shape has k points */
+                while (have < k && rc == 0) {
+                    double tried = INFINITY;
+                    int placed = 0;
+                    while (!placed) {
+                        int bt = -1;
+                        double bl = -1;
+                        for (int t = 0; t <= have; t++) {
+                            const double *a = t ? pts + 2 * (t - 1) : V(&sp[s], bi);
+                            const double *b = t < have ? pts + 2 * t : V(&sp[s], bj);
+                            double l = hypot(b[0] - a[0], b[1] - a[1]);
+                            if (l > bl && l < tried) { bl = l; bt = t; }
+                        }
+                        if (bt < 0) break;
+                        tried = bl;
+                        const double *a = bt ? pts + 2 * (bt - 1) : V(&sp[s], bi);
+                        const double *b = bt < have ? pts + 2 * bt : V(&sp[s], bj);
+                        double mid[2];
+                        if (bent_point(&sp[s], bt ? -1 : bi, a, bt < have ? -1 : bj, b, mid) < 0) continue;
+                        memmove(pts + 2 * (bt + 1), pts + 2 * bt, 2 * (size_t)(have - bt) * sizeof *pts);
+                        pts[2 * bt] = mid[0]; pts[2 * bt + 1] = mid[1];
+                        have++;
+                        placed = 1;
+                        if (path_crosses(&sp[s], bi, bj, pts, have)) {
+                            memmove(pts + 2 * bt, pts + 2 * (bt + 1), 2 * (size_t)(have - 1 - bt) * sizeof *pts);
+                            have--;
+                            placed = 0;
+                        }
                     }
-                    const double *a = bt ? pts + 2 * (bt - 1) : V(&sp[s], bi);
-                    const double *b = bt < have ? pts + 2 * bt : V(&sp[s], bj);
-                    double mid[2] = {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])};
-                    memmove(pts + 2 * (bt + 1), pts + 2 * bt, 2 * (size_t)(have - bt) * sizeof *pts);
-                    pts[2 * bt] = mid[0]; pts[2 * bt + 1] = mid[1];
-                    have++;
+                    if (!placed) rc = cm_seterr("compatible triangulation failed: no room for a Steiner point "
+                                                "on a path in shape %d", s);
                 }
                 /* the path must not cross itself */
                 for (int t = 0; t <= k && rc == 0; t++)
@@ -587,7 +749,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                         const double *b = t < k ? pts + 2 * t : V(&sp[s], bj);
                         const double *e = u ? pts + 2 * (u - 1) : V(&sp[s], bi);
                         const double *f = u < k ? pts + 2 * u : V(&sp[s], bj);
-                        if (segments_intersect(a, b, e, f)) {
+                        if (segments_meet(a, b, e, f)) {
                             rc = cm_seterr("compatible triangulation failed: stage III path crosses itself");
                             break;
                         }
@@ -605,13 +767,59 @@ done:
     return rc;
 }
 
+/* triangulate the piece by overlay (cdt2_overlay): always possible; the
+ * chord crossings become Steiner points */
+static int overlay_piece(struct compat *c, const int *poly, int m)
+{
+    int N = c->N;
+    double **X = malloc(N * sizeof *X);
+    for (int s = 0; s < N; s++) {
+        X[s] = malloc(2 * (size_t)m * sizeof **X);
+        for (int i = 0; i < m; i++) {
+            X[s][2 * i] = c->X[s][2 * poly[i]];
+            X[s][2 * i + 1] = c->X[s][2 * poly[i] + 1];
+        }
+    }
+    double *S = NULL;
+    int k = 0, nf = 0, *F = NULL;
+    int rc = cdt2_overlay(m, N, (const double *const *)X, &S, &k, &F, &nf);
+    for (int s = 0; s < N; s++) free(X[s]);
+    free(X);
+    if (rc < 0) return -1;
+    int base = c->nv;
+    if (reserve_v(c, c->nv + k) < 0) { free(S); free(F); return -1; }
+    for (int s = 0; s < N; s++)
+        memcpy(c->X[s] + 2 * (size_t)base, S + 2 * (size_t)s * k, 2 * (size_t)k * sizeof *S);
+    c->nv += k;
+    c->nsteiner += k;
+    free(S);
+    for (int f = 0; f < nf && rc == 0; f++) {
+        int v[3];
+        for (int e = 0; e < 3; e++) v[e] = F[3 * f + e] < m ? poly[F[3 * f + e]] : base + F[3 * f + e] - m;
+        for (int s = 0; s < N; s++)
+            if (orient2_sign(c->X[s] + 2 * v[0], c->X[s] + 2 * v[1], c->X[s] + 2 * v[2]) <= 0) {
+                rc = cm_seterr("compatible triangulation failed: a %d-gon piece is too thin in shape %d "
+                               "(an overlay triangle rounds to zero area)", m, s);
+                break;
+            }
+        if (rc == 0) rc = add_face(c, v[0], v[1], v[2]);
+    }
+    free(F);
+    return rc;
+}
+
 static int triangulate_rec(struct compat *c, int *poly, int m, int depth)
 {
     if (m < 3) return cm_seterr("internal: degenerate sub-polygon");
     if (m == 3) return add_face(c, poly[0], poly[1], poly[2]);
     if (depth > 100000) return cm_seterr("compatible triangulation failed: recursion too deep");
     struct split sp = {0};
-    if (choose_split(c, poly, m, &sp) < 0) return -1;
+    int rc0 = choose_split(c, poly, m, &sp);
+    if (rc0 < 0) return -1;
+    if (rc0 > 0) {
+        c->stage_count[2]++;
+        return overlay_piece(c, poly, m);
+    }
     c->stage_count[sp.stage]++;
     int k = sp.k, base = c->nv;
     if (k > 0) {
@@ -670,7 +878,7 @@ static double face_quality(const struct compat *c, int a, int b, int d)
     double q = INFINITY;
     for (int s = 0; s < c->N; s++) {
         const double *X = c->X[s];
-        if (orient2(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
+        if (orient2_sign(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
         q = fmin(q, tri_min_angle(X + 2 * a, X + 2 * b, X + 2 * d));
     }
     return q;
@@ -825,7 +1033,7 @@ static void smooth_pass(struct compat *c, const struct topology *t, int relaxed)
                 double nq = INFINITY;
                 for (int k = t->VFs[v]; k < t->VFs[v + 1] && nq > 0; k++) {
                     const int *F = c->F + 3 * t->VF[k];
-                    if (orient2(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) <= 0) nq = -1;
+                    if (orient2_sign(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) <= 0) nq = -1;
                     else nq = fmin(nq, tri_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]));
                 }
                 if (nq >= old || (nq > 0 && nq > 0.5 * old && relaxed)) break;

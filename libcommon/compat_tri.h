@@ -44,7 +44,8 @@ struct compat {
     int *F;           /* #F by 3, counter-clockwise in every shape */
     int nsteiner;     /* interior vertices added by stages II-III */
     int nrefine;      /* interior vertices added by refinement */
-    int stage_count[3]; /* splits made by stage I, II, III */
+    int stage_count[3]; /* splits made by stage I, II, III (or overlays) */
+    int split_mode;   /* COMPAT_OVERLAY (default) or COMPAT_LINKPATH */
     int cap;          /* private: allocated vertices */
     int fcap;         /* private: allocated faces */
     /* private: the matched boundary before simplification (for errors) */
@@ -64,10 +65,29 @@ struct compat {
 int compat_match(int N, double *const *P, const int *n, const int *corr, int ncorr,
                  struct compat *c, unsigned char **keep);
 
+/* Check and normalize the cyclic order of the correspondence rows (corr:
+ * ncorr by N, as for compat_match; n: N ring sizes of counter-clockwise
+ * rings).  Rows listed clockwise along every ring are reversed in place.
+ * Returns 0 (as given), 1 (reversed), -1 (out of range, repeated vertex,
+ * no single cyclic order, or shapes disagree; cm_errmsg says which). */
+int compat_corr_order(int N, const int *n, int *corr, int ncorr);
+
+/* Two-sided Hausdorff distance between shape s's boundary (c->X[s],
+ * vertices 0..nb-1) and the input ring P (n by 2), divided by the ring's
+ * bounding-box diagonal.  Input vertices to the boundary exactly; the
+ * boundary to the ring at 16 points per boundary edge. */
+double compat_outline_error(const struct compat *c, int s, const double *P, int n);
+
 /* Greedy compatible simplification of the boundary; err: threshold as a
  * fraction of each shape's bounding-box diagonal; keep: M flags of points
  * never removed.  Returns the new boundary size. */
 int compat_simplify(struct compat *c, double err, const unsigned char *keep);
+
+/* What to do with a piece that no common diagonal and no single Steiner
+ * point splits: triangulate it by overlay (cdt2_overlay: always succeeds)
+ * or, as in Baxter et al., split it along a path of several Steiner points
+ * (link distances through candidate points; can fail on thin pieces). */
+enum { COMPAT_OVERLAY = 0, COMPAT_LINKPATH = 1 };
 
 /* Compatible triangulation of the boundary polygons (interior Steiner
  * points appended after the boundary).  Returns -1 if it fails. */

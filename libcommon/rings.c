@@ -1,5 +1,6 @@
 /* rings.c -- see rings.h */
 #include "rings.h"
+#include "predicates2.h"
 #include "cm_error.h"
 #include "numparse.h"
 #include "textline.h"
@@ -227,10 +228,25 @@ static int on_segment(const double *a, const double *b, const double *p)
            fmin(a[1], b[1]) <= p[1] && p[1] <= fmax(a[1], b[1]);
 }
 
+int rings_degenerate(const struct rings *r, int k)
+{
+    const double *P = rings_ring(r, k);
+    int n = rings_count(r, k);
+    double lo[2] = {P[0], P[1]}, hi[2] = {P[0], P[1]};
+    for (int i = 1; i < n; i++)
+        for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], P[2 * i + d]); hi[d] = fmax(hi[d], P[2 * i + d]); }
+    double dg = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    if (!(fabs(rings_area(r, k)) > 1e-12 * dg * dg)) return 1;
+    for (int i = 2; i < n; i++)
+        if (orient2_sign(P, P + 2, P + 2 * i) != 0) return 0;
+    return 1;
+}
+
 int segments_intersect(const double *a, const double *b, const double *c, const double *d)
 {
-    double o1 = orient2(a, b, c), o2 = orient2(a, b, d);
-    double o3 = orient2(c, d, a), o4 = orient2(c, d, b);
+    /* exact signs (predicates2.h) */
+    int o1 = orient2_sign(a, b, c), o2 = orient2_sign(a, b, d);
+    int o3 = orient2_sign(c, d, a), o4 = orient2_sign(c, d, b);
     if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
         return 1;
     if (o1 == 0 && on_segment(a, b, c)) return 1;

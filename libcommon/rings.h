@@ -45,6 +45,10 @@ static inline double *rings_ring(const struct rings *r, int k) { return r->P + 2
 /* Signed area of ring k (> 0: counter-clockwise). */
 double rings_area(const struct rings *r, int k);
 
+/* Is ring k degenerate: all its points on one line (exact), or its area
+ * below 1e-12 of its bounding-box diagonal squared? */
+int rings_degenerate(const struct rings *r, int k);
+
 /* Check that no two edges of any rings cross or touch (other than
  * consecutive edges at their shared point) and that no edge folds back
  * onto its neighbour.  Error names both edges by file line. */

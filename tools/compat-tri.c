@@ -22,12 +22,17 @@ static const char help[] =
 "  -c, --corr FILE       correspondence points: one row per point, N columns,\n"
 "                        column i = vertex index (0-based) in SHAPEi's ring;\n"
 "                        at least 3 rows, in the same order along every outline\n"
-"  -e, --error E         simplification threshold: max distance of the\n"
-"                        simplified to the matched outline, as a fraction of\n"
-"                        the bounding-box diagonal (default 0.004; 0: none)\n"
+"  -e, --error E         outline tolerance: two-sided Hausdorff distance of\n"
+"                        the simplified to the input outline, as a fraction\n"
+"                        of each pose's bounding-box diagonal (default 0.005;\n"
+"                        0: keep every input point)\n"
 "  -l, --edge-length L   refine interior edges to L times the mean boundary\n"
 "                        edge length (default 3; 0: no refinement)\n"
 "  -s, --smooth N        smoothing + flip rounds (default 10; 0: none)\n"
+"      --split MODE      pieces that no common diagonal or single Steiner point\n"
+"                        splits: 'overlay' (default: overlay of the shapes'\n"
+"                        triangulations, always succeeds) or 'linkpath' (the\n"
+"                        paper's Steiner paths; can fail on thin pieces)\n"
 "      --raw             raw (binary) MESH output (or STOPMO_RAW=1)\n"
 "  -o, --output FILE     write to FILE (temporary + rename)\n"
 "  -v, --verbose         print counts, Steiner points, minimum angle, time\n"
@@ -38,7 +43,7 @@ static const char help[] =
 struct options {
     const char *corr, *output;
     double err, edge;
-    int smooth, raw;
+    int smooth, raw, split;
     int nshapes;
     char **shapes;
 };
@@ -47,10 +52,10 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"corr", 1, 0, 'c'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
-        {"smooth", 1, 0, 's'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
+        {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
-    o->err = 0.004; o->edge = 3; o->smooth = 10;
+    o->err = 0.005; o->edge = 3; o->smooth = 10;
     int c;
     while ((c = getopt_long(argc, argv, "c:e:l:s:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -58,6 +63,11 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'e': o->err = arg_double(optarg, "--error"); break;
         case 'l': o->edge = arg_double(optarg, "--edge-length"); break;
         case 's': o->smooth = arg_int(optarg, "--smooth"); break;
+        case 'S':
+            if (!strcmp(optarg, "overlay")) o->split = COMPAT_OVERLAY;
+            else if (!strcmp(optarg, "linkpath")) o->split = COMPAT_LINKPATH;
+            else usage_error("--split must be 'overlay' or 'linkpath'");
+            break;
         case 'R': o->raw = 1; break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;
@@ -92,7 +102,12 @@ int main(int argc, char **argv)
     double **P = malloc(N * sizeof *P);
     int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
     for (int s = 0; s < N; s++) {
-        if (rings_read(o.shapes[s], &R[s]) < 0 || rings_check_simple(&R[s]) < 0) die("%s", cm_errmsg());
+        if (rings_read(o.shapes[s], &R[s]) < 0) die("%s", cm_errmsg());
+        for (int k = 0; k < R[s].nrings; k++)
+            if (rings_degenerate(&R[s], k))
+                die("cannot read '%s': line %ld: degenerate outline (ring %d encloses no area)", R[s].name,
+                    R[s].line[R[s].start[k]] - 1, k + 1);
+        if (rings_check_simple(&R[s]) < 0) die("%s", cm_errmsg());
         if (R[s].nrings != 1)
             die("cannot read '%s': line %ld: %d rings; compat-tri needs one simple outer outline "
                 "(holes and pieces are not supported)", R[s].name, R[s].line[R[s].start[1]], R[s].nrings);
@@ -131,28 +146,28 @@ int main(int argc, char **argv)
 
     struct compat cp;
     unsigned char *keep = NULL;
-    /* a triangulation can fail on near-degenerate sub-polygons (long runs
-     * of nearly collinear matched points); a slightly coarser boundary
-     * avoids them, so retry a few times with a larger simplification error */
-    double err = o.err;
-    for (int attempt = 0;; attempt++) {
-        if (compat_match(N, P, n, corr, C.rows, &cp, &keep) < 0)
-            die("cannot read '%s': %s", o.corr, cm_errmsg());
-        int M = cp.nb;
-        compat_simplify(&cp, err, keep);
-        info(1, "boundary: %d matched points, %d after simplification (error %g)", M, cp.nb, err);
-        if (compat_triangulate(&cp) == 0) break;
-        if (attempt == 5) die("%s", cm_errmsg());
-        info(1, "%s; retrying with a coarser boundary", cm_errmsg());
-        compat_free(&cp);
-        free(keep);
-        keep = NULL;
-        err = err > 0 ? 1.5 * err : 0.001;
+    int rev = compat_corr_order(N, n, corr, C.rows);
+    if (rev < 0) die("cannot read '%s': %s", o.corr, cm_errmsg());
+    if (rev) info(1, "%s: points run clockwise along the outlines; using them in reverse order", o.corr);
+    if (compat_match(N, P, n, corr, C.rows, &cp, &keep) < 0)
+        die("cannot read '%s': %s", o.corr, cm_errmsg());
+    int M = cp.nb;
+    cp.split_mode = o.split;
+    compat_simplify(&cp, o.err, keep);
+    /* the outline actually kept, against the input rings */
+    double hmax = 0;
+    int hs = 0;
+    for (int s = 0; s < N; s++) {
+        double h = compat_outline_error(&cp, s, P[s], n[s]);
+        if (h > hmax) { hmax = h; hs = s; }
     }
+    info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
+            "largest two-sided Hausdorff distance %.3g, in %s)", M, cp.nb, o.err, hmax, o.shapes[hs]);
+    if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
     double ma0, q0 = compat_min_angle(&cp, &ma0);
-    info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d stage III), "
+    info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
-         cp.stage_count[2], q0 * 180 / M_PI);
+         cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
     /* target edge length: mean boundary edge, relative to each shape's diagonal */
     double target = 0;
     if (o.edge > 0) {
