@@ -28,16 +28,31 @@ double hermite_step(double t, double a, double b)
     return u * u * (3 - 2 * u);
 }
 
-void shear_limit_weights(const double *w, int N, double *wl)
+double soft_clamp(double t, double d)
+{
+    if (t < 0) return d * tanh(t / d);
+    if (t > 1) return 1 + d * tanh((t - 1) / d);
+    return t;
+}
+
+void shear_limit_weights(const double *w, int N, int mode, double *wl)
 {
     double s = 0;
-    for (int i = 0; i < N; i++) s += wl[i] = hermite_step(w[i], 0, 1);
+    for (int i = 0; i < N; i++)
+        s += wl[i] = mode == SHEAR_HERMITE ? hermite_step(w[i], 0, 1) : soft_clamp(w[i], SHEAR_MARGIN);
     for (int i = 0; i < N; i++) wl[i] = s > 0 ? wl[i] / s : 1.0 / N;
 }
 
-void texture_weights(const double *w, int N, double sigma, double *wt)
+void texture_weights(const double *w, int N, int mode, double sigma, double *wt)
 {
-    shear_limit_weights(w, N, wt);
+    /* colours must not extrapolate: the Hermite step, or a hard clamp to
+     * [0, 1] (the identity inside, like the soft clamp) */
+    if (mode == SHEAR_HERMITE) shear_limit_weights(w, N, mode, wt);
+    else {
+        double s = 0;
+        for (int i = 0; i < N; i++) s += wt[i] = fmin(fmax(w[i], 0), 1);
+        for (int i = 0; i < N; i++) wt[i] = s > 0 ? wt[i] / s : 1.0 / N;
+    }
     double s = 0;
     for (int i = 0; i < N; i++) {
         double x = sigma > 0 ? sigma * hermite_step(wt[i], sigma / 2, 1 - sigma / 2) : 0;

@@ -34,11 +34,24 @@ void nway_blend_free(struct nway_blend *B);
 
 /* Hermite smoothstep phi(t, a, b): 0 below a, 1 above b, 3u^2 - 2u^3 between. */
 double hermite_step(double t, double a, double b);
-/* Shear limiting: w'_i = phi(w_i) / sum_j phi(w_j), phi = hermite_step(., 0, 1). */
-void shear_limit_weights(const double *w, int N, double *wl);
+/* Soft clamp to [0, 1]: t on [0, 1]; below, d tanh(t / d) (in (-d, 0));
+ * above, 1 + d tanh((t - 1) / d).  C2 at 0 and 1. */
+double soft_clamp(double t, double d);
+
+/* Shear limiting: w'_i = phi(w_i) / sum_j phi(w_j) (uniform if the sum is
+ * not positive).  mode SHEAR_SOFT (default): phi = soft_clamp(., SHEAR_MARGIN),
+ * the identity on [0, 1], so weights inside the pose simplex (all in
+ * [0, 1], summing to 1) are unchanged and the morph there is plain ARAP;
+ * only extrapolated weights are bent back (to at most SHEAR_MARGIN beyond).
+ * mode SHEAR_HERMITE: the paper's phi = hermite_step(., 0, 1), which also
+ * remaps weights inside [0, 1] (3t^2 - 2t^3). */
+enum { SHEAR_SOFT = 0, SHEAR_HERMITE = 1 };
+#define SHEAR_MARGIN 0.1
+void shear_limit_weights(const double *w, int N, int mode, double *wl);
 /* Texture weights: w*_i = sigma phi(w'_i, sigma/2, 1 - sigma/2) + (1 - sigma) w'_i,
- * normalized (w' = shear-limited weights). */
-void texture_weights(const double *w, int N, double sigma, double *wt);
+ * normalized; w' = the Hermite-limited weights (SHEAR_HERMITE) or the weights
+ * clamped to [0, 1] and normalized (SHEAR_SOFT): colours never extrapolate. */
+void texture_weights(const double *w, int N, int mode, double sigma, double *wt);
 
 #ifdef __cplusplus
 }

@@ -21,7 +21,10 @@ static const char help[] =
 "e.g. from biharm-weights).\n"
 "\n"
 "  -b, --base K           base pose (default 0)\n"
-"  -l, --shear-limit      remap the stretch weights with a Hermite step (extrapolation)\n"
+"  -l, --shear-limit      limit the stretch weights outside [0, 1] (extrapolation);\n"
+"                         weights in [0, 1] are unchanged (plain ARAP there)\n"
+"      --shear-hermite    the paper's shear limiting: every stretch weight through\n"
+"                         a Hermite step (also changes weights inside [0, 1])\n"
 "      --linear           baseline: blend vertex positions linearly\n"
 "      --sigma S          texture-weight sharpening in [0, 1] (with --texture-weights)\n"
 "      --texture-weights FILE  write the sharpened texture weights, one row per frame\n"
@@ -30,18 +33,22 @@ static const char help[] =
 "  -v, --verbose          frames/s and inverted triangles on stderr\n"
 "  -h, --help, --version\n"
 "\n"
+"\n"
+"Every row of weights is divided by its sum (so rows need not sum to 1 exactly;\n"
+"-v counts rows off by more than 1e-6); a row summing to 0 is an error.\n"
+"\n"
 "Example: echo '0.5 0.5' | arap-morph two.mesh | mesh2svg >half.svg\n";
 
 struct options {
     const char *mesh, *weights, *output, *texout;
-    int base, shear, linear, raw;
+    int base, shear, hermite, linear, raw;
     double sigma;
 };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
-        {"base", 1, 0, 'b'}, {"shear-limit", 0, 0, 'l'}, {"linear", 0, 0, 'L'}, {"sigma", 1, 0, 'S'},
+        {"base", 1, 0, 'b'}, {"shear-limit", 0, 0, 'l'}, {"shear-hermite", 0, 0, 'H'}, {"linear", 0, 0, 'L'}, {"sigma", 1, 0, 'S'},
         {"texture-weights", 1, 0, 'T'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -50,6 +57,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         switch (c) {
         case 'b': o->base = arg_int(optarg, "--base"); break;
         case 'l': o->shear = 1; break;
+        case 'H': o->shear = 1; o->hermite = 1; break;
         case 'L': o->linear = 1; break;
         case 'S': o->sigma = arg_double(optarg, "--sigma"); break;
         case 'T': o->texout = optarg; break;
@@ -94,6 +102,15 @@ int main(int argc, char **argv)
             o.weights ? o.weights : "<stdin>", W.cols, N);
     double **X = malloc(N * sizeof *X);
     for (int s = 0; s < N; s++) X[s] = mesh_frame(&m, s);
+    /* every row is divided by its sum: refuse zero sums before any output */
+    for (int r = 0; r < W.rows; r++) {
+        double sum = 0, mx = 0;
+        for (int s = 0; s < N; s++) { sum += W.x[(size_t)r * N + s]; mx = fmax(mx, fabs(W.x[(size_t)r * N + s])); }
+        if (!(fabs(sum) > 1e-9 * mx) || !isfinite(sum))
+            die("cannot read '%s': row %d: the weights sum to %g; blend weights must sum to 1 "
+                "(rows are divided by their sum, which needs a nonzero sum)",
+                o.weights ? o.weights : "<stdin>", r + 1, sum);
+    }
     double t0 = now();
     struct nway_blend *B = NULL;
     if (!o.linear) {
@@ -112,8 +129,14 @@ int main(int argc, char **argv)
     int frames_inv = 0;
     struct progress pg;
     progress_start(&pg, "arap-morph", W.rows);
+    int renorm = 0;
+    double *wn = malloc(N * sizeof *wn);
     for (int r = 0; r < W.rows; r++) {
-        const double *w = W.x + (size_t)r * N;
+        double sum = 0;
+        for (int s = 0; s < N; s++) sum += W.x[(size_t)r * N + s];
+        if (fabs(sum - 1) > 1e-6) renorm++;
+        for (int s = 0; s < N; s++) wn[s] = W.x[(size_t)r * N + s] / sum;
+        const double *w = wn;
         double tb = now();
         if (o.linear) {
             memset(Y, 0, 3 * (size_t)m.nv * sizeof *Y);
@@ -122,7 +145,7 @@ int main(int argc, char **argv)
         } else {
             double anchor[2] = {0, 0};
             for (int s = 0; s < N; s++) { anchor[0] += w[s] * X[s][0]; anchor[1] += w[s] * X[s][1]; }
-            if (o.shear) shear_limit_weights(w, N, wl);
+            if (o.shear) shear_limit_weights(w, N, o.hermite ? SHEAR_HERMITE : SHEAR_SOFT, wl);
             if (nway_blend_eval(B, w, o.shear ? wl : NULL, anchor, Y) < 0) die("%s", cm_errmsg());
         }
         tcomp += now() - tb;
@@ -137,7 +160,7 @@ int main(int argc, char **argv)
         }
         if (mesh_writer_frame(&mw, Y, 0) < 0) die("cannot write output: %s", cm_errmsg());
         if (tex) {
-            texture_weights(w, N, o.sigma, wl);
+            texture_weights(w, N, o.hermite ? SHEAR_HERMITE : SHEAR_SOFT, o.sigma, wl);
             columns_write(tex, wl, 1, N);
         }
         progress_step(&pg, r + 1);
@@ -148,9 +171,11 @@ int main(int argc, char **argv)
     out_close(out);
     if (tex) out_close(tex);
     info(1, "%s: %d vertices, %d triangles, %d poses; setup %.4f s; %d frames: blending %.4f s = %.1f frames/s "
-            "(with output %.4f s)", o.linear ? "linear" : o.shear ? "arap, shear-limited" : "arap", m.nv, m.nf, N,
+            "(with output %.4f s)", o.linear ? "linear" : o.shear ? o.hermite ? "arap, shear-limited (Hermite)" : "arap, shear-limited" : "arap", m.nv, m.nf, N,
          t1 - t0, W.rows, tcomp, W.rows / fmax(tcomp, 1e-9), t2 - t1);
     info(1, "inverted triangles: %ld in %d of %d frames", inverted, frames_inv, W.rows);
+    if (renorm) info(1, "%d of %d weight rows did not sum to 1 and were divided by their sum", renorm, W.rows);
+    free(wn);
     nway_blend_free(B);
     free(Y); free(wl); free(X);
     columns_free(&W);
