@@ -1,19 +1,9 @@
 #!/bin/sh
 test_description='compat-tri: every subset of the six shared elephant poses (skips without ../shared/data)'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/morph2d-lib.sh"
 need_shared_data shapes2d/poses/elephant-pose6.rings.txt
 P="$SHARED_DATA/shapes2d/poses"
-
-# smallest signed triangle area over all frames of a plain MESH stream
-min_area() {
-	awk '$1 == "f" { F[nfa++] = $2 " " $3 " " $4 }
-	     $1 == "frame" { k = 0; fr++; next }
-	     fr > 0 && NF == 3 { X[fr, k] = $1; Y[fr, k] = $2; k++ }
-	     END { m = 1e300; for (f = 1; f <= fr; f++) for (t = 0; t < nfa; t++) {
-		split(F[t], v, " "); a = v[1]; b = v[2]; c = v[3];
-		s = (X[f,b]-X[f,a])*(Y[f,c]-Y[f,a]) - (Y[f,b]-Y[f,a])*(X[f,c]-X[f,a]);
-		if (s < m) m = s }; print m }' "$1"
-}
 
 test_expect_success 'every subset of 2..6 poses (corr6.txt), positive in every pose' '
 	ok=0 tot=0 mask=3 &&
