@@ -382,6 +382,12 @@ int text_height(int scale)
     return scale * FONT_H;
 }
 
+const unsigned char *font_glyph(int c)
+{
+    c &= 0xff;
+    return font5x7[(c >= 32 && c < 127 ? c : '?') - 32];
+}
+
 void image_text(struct image *im, int x, int y, const char *s, int scale,
                 const unsigned char fg[3], const unsigned char *bg)
 {
@@ -390,8 +396,7 @@ void image_text(struct image *im, int x, int y, const char *s, int scale,
         image_fill_rect(im, x - scale, y - scale, text_width(s, scale) + 2 * scale,
                         text_height(scale) + 2 * scale, bg);
     for (; *s; s++, x += FONT_ADVANCE * scale) {
-        unsigned c = (unsigned char)*s;
-        const unsigned char *g = font5x7[(c >= 32 && c < 127 ? c : '?') - 32];
+        const unsigned char *g = font_glyph((unsigned char)*s);
         for (int r = 0; r < FONT_H; r++)
             for (int b = 0; b < FONT_W; b++)
                 if (g[r] & (0x10 >> b))

@@ -64,6 +64,10 @@ int image_grid(const struct image *tiles, int n, int columns, int gap,
 
 /* Size in pixels of text s drawn at integer magnification scale >= 1. */
 int text_width(const char *s, int scale);
+/* The glyph of character c: FONT_H bytes, one per row (top first), bit
+ * (0x10 >> x) set where column x (0 = left) is drawn; '?' for bytes
+ * outside ASCII 32..126.  Used to engrave piece ids (piece-plug). */
+const unsigned char *font_glyph(int c);
 int text_height(int scale);
 /* Draw text s with its top-left corner at (x, y), magnification scale,
  * colour fg; if bg is not NULL a box of bg (scale pixels of padding) is

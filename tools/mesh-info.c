@@ -6,6 +6,7 @@
  * the reason on stderr and exits 1.
  */
 #include "mesh.h"
+#include "solid.h"
 #include "topology.h"
 #include "geometry.h"
 #include "numparse.h"
@@ -26,7 +27,9 @@ static const char help[] =
 "\n"
 "Options:\n"
 "  -c, --check PROP   print nothing; exit 1 with the reason unless PROP holds:\n"
-"                     manifold, closed, oriented (may be repeated)\n"
+"                     manifold, closed, oriented, or solid (closed, manifold\n"
+"                     and, first frame, no two faces intersect: CGAL's\n"
+"                     self_intersections) (may be repeated)\n"
 "  -q, --quiet        validate only: print nothing, exit 0 on a valid stream\n"
 "  -v, --verbose      timings on stderr\n"
 "  -h, --help         show this help\n"
@@ -37,7 +40,7 @@ static const char help[] =
 "\n"
 "Example: mesh-gen -n 4 cylinder | mesh-info\n";
 
-enum { CHECK_MANIFOLD = 1, CHECK_CLOSED = 2, CHECK_ORIENTED = 4 };
+enum { CHECK_MANIFOLD = 1, CHECK_CLOSED = 2, CHECK_ORIENTED = 4, CHECK_SOLID = 8 };
 
 struct options {
     const char *input;
@@ -57,7 +60,8 @@ static void parse_args(int argc, char **argv, struct options *o)
             if (!strcmp(optarg, "manifold")) o->checks |= CHECK_MANIFOLD;
             else if (!strcmp(optarg, "closed")) o->checks |= CHECK_CLOSED;
             else if (!strcmp(optarg, "oriented")) o->checks |= CHECK_ORIENTED;
-            else usage_error("--check: unknown property '%s' (manifold, closed, oriented)", optarg);
+            else if (!strcmp(optarg, "solid")) o->checks |= CHECK_SOLID | CHECK_CLOSED;
+            else usage_error("--check: unknown property '%s' (manifold, closed, oriented, solid)", optarg);
             break;
         case 'q': o->quiet = 1; break;
         case 'v': verbose++; break;
@@ -251,6 +255,12 @@ int main(int argc, char **argv)
                 t.nboundary_edges, t.nloops);
         if ((o.checks & CHECK_ORIENTED) && !t.oriented)
             die("'%s': not consistently oriented", name);
+        if (o.checks & CHECK_SOLID) {
+            struct solid_info si;
+            if (solid_check(X0, nv, r.F, nf, &si) < 0) die("'%s': %s", name, cm_errmsg());
+            if (si.self_intersections)
+                die("'%s': not a solid: %d pairs of faces intersect", name, si.self_intersections);
+        }
         mesh_reader_close(&r);
         return 0;
     }
