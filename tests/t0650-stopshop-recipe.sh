@@ -4,7 +4,7 @@ test_description='examples/stopshop: the whole StopShop recipe on a small genera
 
 run_recipe() {
 	make -s -C "$STOPMO_ROOT/examples/stopshop" BIN="$STOPMO_BIN" OUT="$TRASH/out" \
-		FRAMES=36 PIECES=4 SWEEP=2:6:2 "$@"
+		FRAMES=36 PIECES=4 BUDGET= SWEEP=2:6:2 "$@"
 }
 
 test_expect_success 'the recipe runs end to end' '

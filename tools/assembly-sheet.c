@@ -28,6 +28,8 @@ static const char help[] =
 "  -s, --solids LIST     comma separated solid libraries (shell-extrude output,\n"
 "                        one per part, same order): gives the piece count,\n"
 "                        volumes and grams\n"
+"      --volumes FILE    piece volumes instead: rows \"part piece volume ...\"\n"
+"                        (piece-plug --report; model units^3)\n"
 "  -n, --names LIST      comma separated part names for the header\n"
 "      --density D       material density in g/cm^3 (default 1.2, PLA/resin)\n"
 "      --unit-mm U       length of one model unit in mm (default 1)\n"
@@ -54,10 +56,10 @@ int main(int argc, char **argv)
 {
     tool_init(argc, argv);
     static const struct option lo[] = {
-        {"catalogue", 1, 0, 'c'}, {"solids", 1, 0, 's'}, {"names", 1, 0, 'n'},
+        {"catalogue", 1, 0, 'c'}, {"solids", 1, 0, 's'}, {"volumes", 1, 0, 'W'}, {"names", 1, 0, 'n'},
         {"density", 1, 0, 'D'}, {"unit-mm", 1, 0, 'U'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
-    const char *catalogue = NULL, *output = NULL;
+    const char *catalogue = NULL, *output = NULL, *volumes = NULL;
     char *solids = NULL, *names = NULL;
     double density = 1.2, unit = 1;
     int c;
@@ -65,6 +67,7 @@ int main(int argc, char **argv)
         switch (c) {
         case 'c': catalogue = optarg; break;
         case 's': solids = optarg; break;
+        case 'W': volumes = optarg; break;
         case 'n': names = optarg; break;
         case 'D': density = arg_double(optarg, "--density");
             if (!(density > 0)) usage_error("--density must be > 0");
@@ -86,8 +89,30 @@ int main(int argc, char **argv)
     if (names && (nlist = split(names, &name)) != np) usage_error("--names: %d names for %d parts", nlist, np);
     if (solids && (nlist = split(solids, &solid)) != np) usage_error("--solids: %d files for %d parts", nlist, np);
 
+    if (solids && volumes) usage_error("--solids and --volumes exclude each other");
     int **L = malloc(sizeof(int *) * np), *npieces = calloc(np, sizeof(int)), n = -1;
     double **vol = calloc(np, sizeof(double *));
+    if (volumes) {
+        struct columns vc = {0};
+        if (columns_read(volumes, 0, -1, "pieces", &vc) < 0) die("%s", cm_errmsg());
+        if (vc.cols < 3) die("cannot read '%s': %d columns, expected \"part piece volume\"", volumes, vc.cols);
+        for (int i = 0; i < vc.rows; i++) {
+            double pp = vc.x[i * vc.cols], kk = vc.x[i * vc.cols + 1];
+            if (pp != floor(pp) || pp < 0 || pp >= np || kk != floor(kk) || kk < 0 || kk > 1e7)
+                die("cannot read '%s': row %d: part %g piece %g (%d parts)", volumes, i + 1, pp, kk, np);
+            if (kk + 1 > npieces[(int)pp]) npieces[(int)pp] = (int)kk + 1;
+        }
+        for (int p = 0; p < np; p++) {
+            vol[p] = malloc(sizeof(double) * (npieces[p] + 1));
+            for (int k = 0; k < npieces[p]; k++) vol[p][k] = NAN;
+        }
+        for (int i = 0; i < vc.rows; i++)
+            vol[(int)vc.x[i * vc.cols]][(int)vc.x[i * vc.cols + 1]] = fabs(vc.x[i * vc.cols + 2]);
+        for (int p = 0; p < np; p++)
+            for (int k = 0; k < npieces[p]; k++)
+                if (isnan(vol[p][k])) die("cannot read '%s': no volume for part %d piece %d", volumes, p, k);
+        columns_free(&vc);
+    }
     for (int p = 0; p < np; p++) {
         int hi = -1;
         struct mesh s;
@@ -100,11 +125,12 @@ int main(int argc, char **argv)
             mesh_free(&s);
         }
         int rows;
+        if (volumes) hi = npieces[p] - 1;
         if (labels_read(argv[optind + p], n, "frames", 0, hi, &L[p], &rows) < 0) die("%s", cm_errmsg());
         n = rows;
         if (n == 0)
             die("cannot read '%s': no labels (one piece id per frame expected)", argv[optind + p]);
-        if (!solids)
+        if (!solids && !volumes)
             for (int f = 0; f < n; f++) if (L[p][f] + 1 > npieces[p]) npieces[p] = L[p][f] + 1;
     }
 
@@ -148,7 +174,7 @@ int main(int argc, char **argv)
             }
         out_close(cf);
         info(1, "%d frames, %d parts, %d pieces used", n, np, used_total);
-        if (solids) info(1, "material %.4g g", total);
+        if (solids || volumes) info(1, "material %.4g g", total);
     }
     out_close(out);
     for (int p = 0; p < np; p++) { free(L[p]); free(vol[p]); }
