@@ -5,7 +5,7 @@ test_description='examples/stopshop writes out/review.html: input | stop-motion 
 
 run_recipe() {
 	make -s -C "$STOPMO_ROOT/examples/stopshop" BIN="$STOPMO_ROOT/bin" OUT="$TRASH/out" \
-		FRAMES=36 PIECES=4 SWEEP=2:6:2 "$@"
+		FRAMES=36 PIECES=4 BUDGET= SWEEP=2:6:2 "$@"
 }
 
 test_expect_view 'the recipe writes out/review.html and says so' '
