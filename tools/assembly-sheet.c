@@ -33,6 +33,9 @@ static const char help[] =
 "  -n, --names LIST      comma separated part names for the header\n"
 "      --density D       material density in g/cm^3 (default 1.2, PLA/resin)\n"
 "      --unit-mm U       length of one model unit in mm (default 1)\n"
+"      --changes         list only the frames where a piece changes, and in\n"
+"                        them only the parts that change (others left empty);\n"
+"                        frame 0 lists every part\n"
 "  -o, --output FILE     write the sheet to FILE instead of stdout\n"
 "  -v, --verbose         pieces used and total material on stderr\n"
 "  -h, --help            show this help\n"
@@ -56,18 +59,19 @@ int main(int argc, char **argv)
 {
     tool_init(argc, argv);
     static const struct option lo[] = {
-        {"catalogue", 1, 0, 'c'}, {"solids", 1, 0, 's'}, {"volumes", 1, 0, 'W'}, {"names", 1, 0, 'n'},
+        {"catalogue", 1, 0, 'c'}, {"solids", 1, 0, 's'}, {"volumes", 1, 0, 'W'}, {"changes", 0, 0, 'X'}, {"names", 1, 0, 'n'},
         {"density", 1, 0, 'D'}, {"unit-mm", 1, 0, 'U'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     const char *catalogue = NULL, *output = NULL, *volumes = NULL;
     char *solids = NULL, *names = NULL;
     double density = 1.2, unit = 1;
-    int c;
+    int c, changes = 0;
     while ((c = getopt_long(argc, argv, "c:s:n:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'c': catalogue = optarg; break;
         case 's': solids = optarg; break;
         case 'W': volumes = optarg; break;
+        case 'X': changes = 1; break;
         case 'n': names = optarg; break;
         case 'D': density = arg_double(optarg, "--density");
             if (!(density > 0)) usage_error("--density must be > 0");
@@ -139,11 +143,20 @@ int main(int argc, char **argv)
     for (int p = 0; p < np; p++)
         if (name) fprintf(out, ",%s", name[p]); else fprintf(out, ",part%d", p);
     fprintf(out, "\n");
+    int swaps = 0;
     for (int f = 0; f < n; f++) {
+        int changed = f == 0;
+        for (int p = 0; p < np && f; p++) changed |= L[p][f] != L[p][f - 1];
+        if (changes && !changed) continue;
         fprintf(out, "%d", f);
-        for (int p = 0; p < np; p++) fprintf(out, ",%d", L[p][f]);
+        for (int p = 0; p < np; p++) {
+            int ch = f > 0 && L[p][f] != L[p][f - 1];
+            swaps += ch;
+            if (!changes || f == 0 || ch) fprintf(out, ",%d", L[p][f]); else fprintf(out, ",");
+        }
         fprintf(out, "\n");
     }
+    info(1, "%d swaps on set (a part changes piece between consecutive frames)", swaps);
     if (catalogue) {
         FILE *cf = out_open(catalogue);
         fprintf(cf, "part,piece,count,frames,volume,grams\n");
