@@ -1,6 +1,7 @@
 // solid.cpp -- see solid.h
 #include "solid.h"
 #include "cm_error.h"
+#include "surface_mesh_build.hpp"
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
@@ -21,16 +22,9 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 // mesh non-manifold (add_face refuses it), 1 on success.
 static int build(const double *V, int nv, const int *F, int nf, Mesh &m)
 {
-    std::vector<Mesh::Vertex_index> vi;
-    vi.reserve(nv);
-    for (int v = 0; v < nv; v++) vi.push_back(m.add_vertex(K::Point_3(V[3 * v], V[3 * v + 1], V[3 * v + 2])));
-    for (int f = 0; f < nf; f++) {
-        const int *t = F + 3 * f;
-        if (t[0] < 0 || t[1] < 0 || t[2] < 0 || t[0] >= nv || t[1] >= nv || t[2] >= nv)
-            return cm_seterr("face %d has a vertex index out of range", f);
-        if (m.add_face(vi[t[0]], vi[t[1]], vi[t[2]]) == Mesh::null_face()) return 0;
-    }
-    return 1;
+    int bad, r = surface_mesh_build(V, nv, F, nf, m, &bad);
+    if (r < 0) return cm_seterr("face %d has a vertex index out of range", bad);
+    return r;
 }
 
 extern "C" int solid_check(const double *V, int nv, const int *F, int nf, struct solid_info *info)
