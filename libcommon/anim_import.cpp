@@ -258,6 +258,42 @@ struct Gltf {
         return &(buffers[i] = out);
     }
 
+    /* Every accessor's elements lie inside its bufferView and every view
+     * inside its buffer (sizes checked without overflow; byteStride at least
+     * the element size, at most 252).  Checked before assimp sees the file:
+     * assimp 5.2 trusts the sizes and reads out of bounds.  false with *bad
+     * = the accessor. */
+    bool accessors_in_bounds(size_t *bad)
+    {
+        const JVal *accs = root.get("accessors"), *bvs = root.get("bufferViews");
+        for (size_t ai = 0; accs && ai < accs->arr.size(); ai++) {
+            const JVal &a = accs->arr[ai];
+            *bad = ai;
+            const JVal *bvi = a.get("bufferView"), *ty = a.get("type");
+            if (!bvi || !ty) continue;
+            int ct = (int)a.number("componentType", 0);
+            size_t csize = ct == 5126 || ct == 5125 ? 4 : ct == 5122 || ct == 5123 ? 2 : ct == 5120 || ct == 5121 ? 1 : 0;
+            const std::string &t = ty->str;
+            size_t ncomp = t == "SCALAR" ? 1 : t == "VEC2" ? 2 : t == "VEC3" ? 3 : t == "VEC4" || t == "MAT2" ? 4
+                         : t == "MAT3" ? 9 : t == "MAT4" ? 16 : 0;
+            if (!csize || !ncomp) continue;             /* assimp refuses these itself */
+            size_t elem = csize * ncomp, count = a.size("count", 0);
+            const JVal *bv = bvs ? bvs->at(JVal::index(bvi->num)) : nullptr;
+            if (!bv || count == SIZE_MAX) return false;
+            const std::string *buf = buffer(bv->size("buffer", 0));
+            if (!buf) continue;                         /* a missing file: assimp names it */
+            size_t bvoff = bv->size("byteOffset", 0), aoff = a.size("byteOffset", 0);
+            size_t stride = bv->size("byteStride", 0), len = bv->size("byteLength", 0);
+            if (!stride) stride = elem;
+            else if (stride < elem || stride > 252) return false;
+            if (bvoff > buf->size() || len > buf->size() - bvoff || aoff > len)
+                return false;
+            if (count && (len - aoff < elem || count - 1 > (len - aoff - elem) / stride))
+                return false;
+        }
+        return true;
+    }
+
     /* Scalar float accessor values (normalized integers decoded);
      * *type gets the componentType.  false if unsupported. */
     bool scalars(size_t ai, std::vector<double> &out, int *type)
@@ -407,6 +443,13 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
     fclose(f);
     int fmt = o->format ? o->format : anim_format_from_name(path);
 
+    if (fmt == ANIM_GLTF || fmt == ANIM_GLB) {
+        Gltf pre;
+        size_t bad;
+        if (pre.load(path) && !pre.accessors_in_bounds(&bad))
+            return cm_seterr("cannot read '%s': accessor %zu reaches outside its buffer "
+                             "(byteOffset, byteStride, count or byteLength is wrong)", path, bad);
+    }
     Assimp::Importer imp;
     /* no post-processing that merges or splits vertices: the file's vertex
      * list is kept (glTF is indexed already); triangulate polygons only */
