@@ -569,6 +569,23 @@ static int ply_check(const std::string &b, const char *path)
     if (need > (double)(b.size() - at))
         return cm_seterr("cannot read '%s': truncated: the PLY header announces at least %.0f bytes of data, "
                          "the file has %zu", path, need, b.size() - at);
+    /* ascii: OpenMesh's reader never stops (and grows without bound) at a
+     * token that is not a number, so every token of the body must be one */
+    long line = no + 1;
+    for (size_t i = at; ascii && i < b.size();) {
+        unsigned char c = (unsigned char)b[i];
+        if (c == '\n') line++;
+        if (c == ' ' || (c >= '\t' && c <= '\r')) { i++; continue; }
+        size_t j = i;
+        while (j < b.size() && b[j] != ' ' && !(b[j] >= '\t' && b[j] <= '\r')) j++;
+        std::string tok = b.substr(i, j - i);
+        char *end;
+        strtod(tok.c_str(), &end);
+        if (end != tok.c_str() + tok.size())
+            return cm_seterr("cannot read '%s': not a valid PLY file (line %ld: a value that is not a number)",
+                             path, line);
+        i = j;
+    }
     return 0;
 }
 

@@ -42,6 +42,11 @@ test_expect_success 'PLY: counts beyond the file size, unknown types, missing x 
 	printf "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n" >p5.ply &&
 	test_fails_cleanly mesh-import p5.ply 2>err && grep "vertex element without x, y, z" err
 '
+test_expect_success 'PLY: a value that is not a number in an ascii body (OpenMesh grew without bound)' '
+	printf "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\377\377 2\n" >p9.ply &&
+	test_fails_cleanly timeout 60 mesh-import p9.ply 2>err &&
+	grep "p9.ply.: not a valid PLY file (line 13: a value that is not a number)" err
+'
 test_expect_success 'PLY: a valid file still imports (binary and ascii round trip)' '
 	mesh-gen -s 1 icosphere >ico.mesh &&
 	mesh-export -o ico.ply ico.mesh && mesh-import ico.ply | mesh-info | grep "^faces 80$" &&
