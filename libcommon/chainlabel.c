@@ -16,12 +16,20 @@ static inline int linked(const struct chain *p, int f)
 /* pair cost of labels (a, b) on pair (f, f+1) */
 static inline double pair_cost(const struct chain *p, int f, int a, int b)
 {
-    if (!p->T && !p->H && !p->c) return 0;
+    if (!p->T && !p->H && !p->c && !(p->swap > 0)) return 0;
     double v = 0;
     if (p->c) v += p->c[f];
     if (p->T) v += p->T[(size_t)a * p->d + b];
     if (p->H) v += p->H[(size_t)f * p->d + b] - p->H[(size_t)f * p->d + a];
+    if (p->swap > 0 && a != b) v += p->swap;
     return v;
+}
+
+int chain_swaps(const struct chain *p, const int *l)
+{
+    int s = 0;
+    for (int f = 0; f + 1 < p->n; f++) s += linked(p, f) && l[f] != l[f + 1];
+    return s;
 }
 
 double chain_energy(const struct chain *p, const int *l, double *unary, double *pair)
@@ -81,6 +89,11 @@ double chain_dp(const struct chain *p, int *l)
                 for (int a = 1; a < d; a++) if (h[a] < m) m = h[a];
                 for (int b = 0; b < d; b++) Vn[b] = m;
             }
+            if (p->swap > 0)    /* staying costs T_bb = 0, any change costs swap more */
+                for (int b = 0; b < d; b++) {
+                    double v = Vn[b] + p->swap;
+                    Vn[b] = h[b] < v ? h[b] : v;
+                }
             const double *Un = p->U + (size_t)(f + 1) * d;
             for (int b = 0; b < d; b++) V[b] = Vn[b] + Un[b] + cf + (Hf ? Hf[b] : 0);
         }
@@ -95,6 +108,7 @@ double chain_dp(const struct chain *p, int *l)
             double m = INFINITY;
             for (int a = 0; a < d; a++) {
                 double v = h[a] + (p->T ? p->T[(size_t)a * d + b] : 0);
+                if (p->swap > 0 && a != b) v += p->swap;
                 if (v < m) { m = v; am = a; }
             }
             l[f] = am;

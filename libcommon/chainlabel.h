@@ -3,17 +3,23 @@
  * labeling step (Eq. 14-16):
  *
  *   E(l) = sum_f U[f][l_f] + sum_{f: link[f]} ( c[f] + T[l_f][l_{f+1}]
- *                                               + H[f][l_{f+1}] - H[f][l_f] )
+ *                                               + H[f][l_{f+1}] - H[f][l_f]
+ *                                               + swap [l_f != l_{f+1}] )
  *
  * For StopShop, with mu = lambda/2, P = Z R^T and Q = R R^T:
  *   U[f][a] = |z_f|^2 + Q_aa - 2 P_fa                   (Eq. 15)
  *   T[a][b] = mu |r_a - r_b|^2 = mu (Q_aa + Q_bb - 2 Q_ab)
  *   H[f][a] = -2 mu (P_{f+1,a} - P_{f,a})   (dz_f . r_a from one GEMM)
  *   c[f]    = mu |z_{f+1} - z_f|^2                      (Eq. 16)
- * which is mu |dz_f - (r_b - r_a)|^2 expanded.
+ * which is mu |dz_f - (r_b - r_a)|^2 expanded.  The swap term (a Potts
+ * term, >= 0) charges every change of piece between two frames of one clip:
+ * the animator's swaps on set.  A change across a clip boundary is free.
  *
  * Three minimizers:
- *   chain_dp         exact (Viterbi, O(n d^2)): the graph is a chain.
+ *   chain_dp         exact (Viterbi, O(n d^2)): the graph is a chain.  The
+ *                    swap term adds O(d) per frame:
+ *                    min_a (h_a + T_ab + swap [a != b])
+ *                      = min(h_b, min_a (h_a + T_ab) + swap)   (T_bb = 0).
  *   chain_expansion  alpha-expansion moves solved with BK max-flow.  An
  *                    expansion move on a pair labelled (a, b) is submodular
  *                    only if T_ab <= T_a,alpha + T_alpha,b, which squared
@@ -43,7 +49,13 @@ struct chain {
     const double *H;            /* n by d per-pair linear terms (row f used for pair f,f+1) or NULL */
     const double *c;            /* n per-pair constants (entry f for pair f,f+1) or NULL */
     const unsigned char *link;  /* n flags: link[f] = 1 couples f and f+1 (0 at a cut and for f = n-1); NULL = all linked */
+    double swap;                /* cost of a change of label between linked frames, >= 0 and finite
+                                   (energy units); 0 = none, and then every result is bit for bit
+                                   what it was without the term */
 };
+
+/* Number of changes of label between linked frames of l (n): the swaps. */
+int chain_swaps(const struct chain *p, const int *l);
 
 /* Energy of labels l (n), and optionally its parts: *unary = sum of U terms,
  * *pair = sum of pair terms (either pointer may be NULL). */

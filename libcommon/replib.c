@@ -198,6 +198,8 @@ int replib_prepare(struct replib_data *D)
     double t0 = wall();
     if (n < 1 || nv < 1) return cm_seterr("replib: empty animation (%d frames, %d vertices)", n, nv);
     if (D->nfix < 0 || (D->nfix > 0 && !D->Rfix)) return cm_seterr("replib: bad fixed pieces");
+    if (!(D->swap_cost >= 0) || !isfinite(D->swap_cost))
+        return cm_seterr("replib: swap cost %g is not a finite number >= 0", D->swap_cost);
     int m3 = D->m3 = 3 * nv, N = D->N = n + D->nfix;
     for (size_t k = 0; k < (size_t)n * m3; k++)
         if (!isfinite(D->X[k]))
@@ -619,7 +621,7 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
     for (int f = 0; f < n; f++)
         for (int a = 0; a < d; a++)
             w->U[(size_t)f * d + a] = D->zz[f] + Q[(size_t)a * d + a] - 2 * P[(size_t)f * d + a];
-    w->ch.n = n; w->ch.d = d; w->ch.U = w->U; w->ch.link = D->link;
+    w->ch.n = n; w->ch.d = d; w->ch.U = w->U; w->ch.link = D->link; w->ch.swap = D->swap_cost;
     if (mu > 0) {
         for (int a = 0; a < d; a++)
             for (int b = 0; b < d; b++)
@@ -642,8 +644,8 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
 /* label step on the chain in w; l in/out (used as the start for moves) */
 static double label_step(struct work *w, enum replib_method m, int *l, int have_start)
 {
-    if (!w->ch.T && !w->ch.H) {
-        /* lambda = 0: every method gives the nearest piece (lowest on ties) */
+    if (!w->ch.T && !w->ch.H && !(w->ch.swap > 0)) {
+        /* lambda = 0, no swap cost: every method gives the nearest piece (lowest on ties) */
         int n = w->ch.n, d = w->ch.d;
         double E = 0;
         for (int f = 0; f < n; f++) {
@@ -1168,6 +1170,7 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
     if (d < D->nfix) return cm_seterr("d = %d is less than the %d fixed pieces", d, D->nfix);
     if (d - D->nfix > n) return cm_seterr("d = %d pieces but only %d frames", d, n);
     if (!(o->lambda >= 0) || !isfinite(o->lambda)) return cm_seterr("lambda must be >= 0");
+    if (D->swap_cost != 0) return cm_seterr("replib_learn: a swap cost is charged by replib_label only");
     if (o->init_labels)
         for (int f = 0; f < n; f++)
             if (o->init_labels[f] < 0 || o->init_labels[f] >= d)

@@ -58,6 +58,10 @@ struct replib_data {
     const unsigned char *cut;   /* n flags, 1 = frame starts a clip, or NULL */
     int gram;                   /* -1 auto, 0 direct, 1 Gram, 2 Gram in single precision */
     int no_lowrank;             /* 1: never use the exact low-rank Gram matrix */
+    double swap_cost;           /* >= 0, energy units (as the data term): each change of piece
+                                   between consecutive frames of one clip costs this much
+                                   (chainlabel.h's swap term).  Charged by replib_label only;
+                                   replib_learn refuses a nonzero value (relabel its library) */
     /* frames held elsewhere (replib_sketch.h): then X is NULL, Z holds
      * reduced coordinates, and the pieces come from */
     const float *Xf;            /* n by 3#V: x_f - ref in single precision, or NULL: */
@@ -142,7 +146,8 @@ void replib_result_free(struct replib_result *res);
 
 /* Labels for a fixed library: D prepared with nfix = d pieces (Rfix = the
  * library).  l (out): n labels.  Returns the energy (*data, *velocity may
- * be NULL), NAN on failure. */
+ * be NULL; D->swap_cost times the swaps is in the returned energy and in
+ * *velocity), NAN on failure. */
 double replib_label(const struct replib_data *D, double lambda, enum replib_method method,
                     int *l, double *data, double *velocity);
 

@@ -181,6 +181,28 @@ int arg_intlist(const char *s, const char *what, int **out)
     return n;
 }
 
+int arg_doublelist(const char *s, const char *what, double **out)
+{
+    int n = 0, cap = 8;
+    double *v = malloc(cap * sizeof *v);
+    const char *p = s;
+    while (*p) {
+        char *end;
+        errno = 0;
+        double x = strtod(p, &end);
+        if (end == p || errno || !isfinite(x) || (*end && *end != ','))
+            usage_error("%s: '%s' is not a comma separated list of numbers", what, s);
+        if (n == cap)
+            v = realloc(v, (cap *= 2) * sizeof *v);
+        v[n++] = x;
+        p = *end ? end + 1 : end;
+    }
+    if (n == 0)
+        usage_error("%s: empty list", what);
+    *out = v;
+    return n;
+}
+
 FILE *out_open(const char *path)
 {
     if (!path || !strcmp(path, "-"))

@@ -48,6 +48,8 @@ int arg_int(const char *s, const char *what);
 /* Parse a comma separated list of integers into *out (malloc'd); returns
  * the count. */
 int arg_intlist(const char *s, const char *what, int **out);
+/* The same for finite numbers ("0,0.5,2"). */
+int arg_doublelist(const char *s, const char *what, double **out);
 
 /* The input operand of a tool that reads per-triangle part labels from
  * LABELS (-l, required) and one animation (e.g. part-split, seam-homog),

@@ -8,6 +8,7 @@
  */
 #include "replib.h"
 #include "replib_sketch.h"
+#include "swapcost.h"
 #include "blas_tune.h"
 #include "mesh.h"
 #include "columns.h"
@@ -43,6 +44,13 @@ static const char help[] =
 "                         0 = plain block coordinate descent (the paper's)\n"
 "      --init-labels FILE start restart 0 from these labels (one per frame)\n"
 "      --labels-out FILE  write the per-frame labels (0-based piece ids)\n"
+"  -c, --swap-cost C      fewer swaps on set: once the library is learned, the\n"
+"                         labels are chosen again by exact chain DP with every\n"
+"                         change of piece inside a clip costing C (data-term\n"
+"                         units); the report counts the swaps (default 0)\n"
+"      --swap-sweep LIST  learn once, relabel for each swap cost of LIST\n"
+"                         (\"0,1,10\") and print \"swap_cost swaps energy data\n"
+"                         velocity mean_err max_err\" instead of the library\n"
 "      --report FILE      write the energy report (key value lines)\n"
 "      --max-error E      choose the smallest D whose worst per-vertex error\n"
 "                         is <= E model units (Fig. 16); -d is then ignored\n"
@@ -71,6 +79,8 @@ static const char help[] =
 
 struct options {
     const char *input, *weights, *fixed, *init_labels, *labels_out, *report, *output, *sweep;
+    double swap_cost, *swap_sweep;
+    int nswap;
     int d, restarts, iterations, raw, gram, threads, search, stream, rank;
     double memory;
     enum replib_start start;
@@ -85,7 +95,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"pieces", 1, 0, 'd'}, {"lambda", 1, 0, 'l'}, {"restarts", 1, 0, 'r'},
         {"iterations", 1, 0, 'i'}, {"seed", 1, 0, 'S'}, {"weights", 1, 0, 'w'},
         {"fixed", 1, 0, 'F'}, {"method", 1, 0, 'm'}, {"init-labels", 1, 0, 'I'},
-        {"labels-out", 1, 0, 'L'}, {"report", 1, 0, 'P'}, {"max-error", 1, 0, 'E'},
+        {"labels-out", 1, 0, 'L'}, {"swap-cost", 1, 0, 'c'}, {"swap-sweep", 1, 0, 'Z'}, {"report", 1, 0, 'P'}, {"max-error", 1, 0, 'E'},
         {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"threads", 1, 0, 'T'}, {"start", 1, 0, 's'}, {"stream", 1, 0, 'y'}, {"rank", 1, 0, 'k'}, {"memory", 1, 0, 'M'}, {"search", 1, 0, 'X'}, {"output", 1, 0, 'o'},
         {"raw", 0, 0, 'R'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
@@ -93,7 +103,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->d = 20; o->lambda = 2; o->restarts = 5; o->iterations = 50; o->seed = 1;
     o->gram = -1; o->max_error = -1; o->search = -1; o->stream = -1; o->rank = 128; o->memory = 4096;
     int c;
-    while ((c = getopt_long(argc, argv, "d:l:r:i:w:m:o:vh", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "d:l:r:i:w:m:c:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'd': o->d = arg_int(optarg, "--pieces"); break;
         case 'l': o->lambda = arg_double(optarg, "--lambda"); break;
@@ -110,6 +120,14 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'I': o->init_labels = optarg; break;
         case 'L': o->labels_out = optarg; break;
+        case 'c': o->swap_cost = arg_double(optarg, "--swap-cost");
+            if (!(o->swap_cost >= 0)) usage_error("--swap-cost must be >= 0");
+            break;
+        case 'Z':
+            o->nswap = arg_doublelist(optarg, "--swap-sweep", &o->swap_sweep);
+            for (int k = 0; k < o->nswap; k++)
+                if (!(o->swap_sweep[k] >= 0)) usage_error("--swap-sweep: %g is negative", o->swap_sweep[k]);
+            break;
         case 'P': o->report = optarg; break;
         case 'E': o->max_error = arg_double(optarg, "--max-error");
             if (!(o->max_error >= 0)) usage_error("--max-error must be >= 0");
@@ -159,6 +177,9 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->lambda >= 0) || !isfinite(o->lambda)) usage_error("--lambda must be >= 0");
     if (o->restarts < 1) usage_error("--restarts must be at least 1");
     if (o->iterations < 1) usage_error("--iterations must be at least 1");
+    if ((o->swap_cost > 0 || o->nswap) && (o->sweep || o->max_error >= 0))
+        usage_error("--swap-cost and --swap-sweep relabel one library: not with --sweep or --max-error");
+    if (o->nswap && o->swap_cost > 0) usage_error("--swap-sweep and --swap-cost exclude each other");
 }
 
 static void log_iter(void *ctx, const struct replib_iter *it)
@@ -383,6 +404,42 @@ int main(int argc, char **argv)
         learn(&D, &o, d, init, &m, D.w, &best);
     }
 
+    /* fewer swaps: the learned library relabelled with the swap term */
+    int swaps = swap_count(best.res.labels, m.nframes, m.cut);
+    if (o.swap_cost > 0 || o.nswap) {
+        if (!m.V) die("--swap-cost needs the animation in memory (--stream off)");
+        struct replib_data L = {0};
+        L.n = m.nframes; L.nv = m.nv; L.X = m.V; L.nfix = d; L.Rfix = best.res.R;
+        L.w = D.w; L.cut = m.cut; L.gram = 0;
+        if (replib_prepare(&L) < 0) die("%s", cm_errmsg());
+        struct swap_point *pt = calloc(o.nswap ? o.nswap : 1, sizeof *pt);
+        if (!pt) die("out of memory");
+        for (int k = 0; k < (o.nswap ? o.nswap : 1); k++) {
+            double C = o.nswap ? o.swap_sweep[k] : o.swap_cost;
+            if (swap_relabel(&L, o.lambda, o.method, C, best.res.labels, &pt[k]) < 0) die("%s", cm_errmsg());
+            info(1, "swap cost %g: %d swaps inside %d clips (%d without), energy %.10g (%.10g without), max error %.6g",
+                 C, pt[k].swaps, mesh_nclips(&m), swaps, pt[k].rep.energy, best.rep.energy, pt[k].rep.max_err);
+        }
+        replib_data_free(&L);
+        if (o.nswap) {
+            FILE *out = out_open(o.output);
+            fprintf(out, "# swap_cost swaps energy data velocity mean_err max_err (%d frames, %d clips, %d pieces, lambda %g)\n",
+                    m.nframes, mesh_nclips(&m), d, o.lambda);
+            for (int k = 0; k < o.nswap; k++)
+                fprintf(out, "%.10g %d %.10g %.10g %.10g %.10g %.10g\n", pt[k].cost, pt[k].swaps, pt[k].rep.energy,
+                        pt[k].rep.data, pt[k].rep.velocity, pt[k].rep.mean_err, pt[k].rep.max_err);
+            out_close(out);
+            free(pt);
+            replib_result_free(&best.res); replib_data_free(&D); free(init); free(o.swap_sweep);
+            columns_free(&wc); if (o.fixed) mesh_free(&fx); mesh_free(&m);
+            return 0;
+        }
+        best.rep = pt[0].rep;
+        swaps = pt[0].swaps;
+        free(pt);
+    } else
+        info(1, "%d swaps on set inside %d clips", swaps, mesh_nclips(&m));
+
     /* everything computed: write outputs */
     if (o.labels_out) {
         FILE *f = out_open(o.labels_out);
@@ -399,6 +456,8 @@ int main(int argc, char **argv)
         fprintf(f, "energy %.10g\ndata %.10g\nvelocity %.10g\n", p->energy, p->data, p->velocity);
         fprintf(f, "mean_error %.10g\nmax_error %.10g\nworst_frame %d\n", p->mean_err, p->max_err, p->worst_frame);
         fprintf(f, "mean_velocity_error %.10g\nmax_velocity_error %.10g\n", p->mean_verr, p->max_verr);
+        fprintf(f, "swaps %d\nswap_cost %.10g\nenergy_with_swaps %.10g\n", swaps, o.swap_cost,
+                p->energy + o.swap_cost * swaps);
         int used = 0;
         int *cnt = calloc(d, sizeof(int));
         for (int k = 0; k < m.nframes; k++) cnt[r->labels[k]]++;
