@@ -146,7 +146,7 @@ static int fit_step(void *ctx, int iter, double mu, int rejected, int folded, co
     return 0;
 }
 
-int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
+int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs, int nfs,
                    const double *VT0, const int *FT, int nvt, int nft,
                    const int *lm_src, const double *lm_dst0, int nl,
                    const struct nricp_params *p, double *Xout, nricp_step_fn cb, void *ctx)
@@ -166,6 +166,11 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
     for (int i = 0; i < nvs; i++) for (int d = 0; d < 3; d++) VS[3 * i + d] = (VS0[3 * i + d] - c[d]) / sc;
     for (int i = 0; i < nvt; i++) for (int d = 0; d < 3; d++) VT[3 * i + d] = (VT0[3 * i + d] - c[d]) / sc;
     for (int i = 0; i < nl; i++) for (int d = 0; d < 3; d++) LD[3 * i + d] = (lm_dst0[3 * i + d] - c[d]) / sc;
+    double *RS = NULL;
+    if (RS0) {
+        RS = malloc((size_t)nvs * 3 * sizeof *RS + 1);
+        for (int i = 0; i < nvs; i++) for (int d = 0; d < 3; d++) RS[3 * i + d] = (RS0[3 * i + d] - c[d]) / sc;
+    }
 
     struct topology ts = {0}, tt = {0};
     struct system S = {0};
@@ -291,7 +296,7 @@ int nricp_register(const double *VS0, const int *FS, int nvs, int nfs,
         ap.max_dist = p->max_dist;
         ap.search = p->search;
         ap.rest_smooth = p->fit_smooth;
-        int frc = arap_fit(VS, FS, nvs, nfs, VT, FT, nvt, nft, TT, &ap, P, cb ? fit_step : NULL, &fc);
+        int frc = arap_fit(RS ? RS : VS, FS, nvs, nfs, VT, FT, nvt, nft, TT, &ap, P, cb ? fit_step : NULL, &fc);
         if (frc < 0) goto done;
     }
     for (int i = 0; i < nvs; i++)
@@ -303,7 +308,7 @@ done:
     system_free(&S);
     topology_free(&ts);
     topology_free(&tt);
-    free(VS); free(VT); free(LD); free(X); free(B); free(P); free(Pold); free(NS); free(NT);
+    free(VS); free(RS); free(VT); free(LD); free(X); free(B); free(P); free(Pold); free(NS); free(NT);
     free(U); free(UB); free(UF); free(TB); free(TC); free(TF);
     free(uok); free(tok);
     return rc;

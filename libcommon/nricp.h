@@ -68,11 +68,14 @@ typedef int (*nricp_step_fn)(void *ctx, int step, double alpha, double beta, int
                              int rejected, int folded, const double *X);
 
 /* VS: #VS by 3 source (already rigidly aligned), FS: #FS by 3;
+ * RS: #VS by 3 rest shape of the ARAP fit, or NULL for VS: when VS is a
+ * warm start (the previous key's registration in a chain), RS is the first
+ * key itself, so the fit keeps its shape and distortion cannot build up;
  * VT: #VT by 3 target, FT: #FT by 3.
  * lm_src: nl source vertex indices, lm_dst: nl by 3 target positions.
  * X: #VS by 3 (out) registered source positions.
  * Returns 0, or -1 (cm_errmsg set) on bad indices or a failed solve. */
-int nricp_register(const double *VS, const int *FS, int nvs, int nfs,
+int nricp_register(const double *VS, const double *RS, const int *FS, int nvs, int nfs,
                    const double *VT, const int *FT, int nvt, int nft,
                    const int *lm_src, const double *lm_dst, int nl,
                    const struct nricp_params *p, double *X, nricp_step_fn cb, void *ctx);

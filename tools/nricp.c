@@ -26,10 +26,18 @@
 
 static const char help[] =
 "Usage: nricp [options] [-l LANDMARKS] SOURCE TARGET\n"
+"       nricp --chain [options] SOURCE TARGET1 TARGET2 ...\n"
 "Deform SOURCE onto the surface of TARGET (any connectivity); writes the\n"
-"registered source (SOURCE's connectivity) to stdout.\n"
+"registered source (SOURCE's connectivity) to stdout.  --chain registers\n"
+"SOURCE to every TARGET in turn, each from the previous result, and writes\n"
+"the key poses as one animation: SOURCE, then one frame per TARGET.\n"
 "\n"
 "Options:\n"
+"      --chain           a chain of keys: each key starts from the previous key's\n"
+"                        result, but the ARAP fit keeps SOURCE's shape (--rest\n"
+"                        SOURCE), so the error does not build up along the chain\n"
+"      --rest FILE       rest shape of the ARAP fit (SOURCE's connectivity), when\n"
+"                        SOURCE is a warm start: the first key of a chain\n"
 "  -l, --landmarks FILE  rows 'src_vertex dst_vertex' or 'src_vertex x y z'\n"
 "                        (optional: without it landmark-auto(1) proposes them)\n"
 "      --landmark-mesh M the mesh whose vertices dst_vertex names, if not TARGET\n"
@@ -74,7 +82,9 @@ static const char help[] =
 
 struct options {
     const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness, *lm_mesh;
-    const char *lm_out;
+    const char *lm_out, *rest;
+    const char **targets;
+    int ntargets, chain;
     int raw, init_deform, init_shell, no_auto, no_init;
     struct nricp_params p;
 };
@@ -83,12 +93,13 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
-           O_NOAUTO, O_LMOUT, O_NOINIT };
+           O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
+        {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
@@ -112,6 +123,8 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_INNER: o->p.max_inner = arg_int(optarg, "--max-inner"); break;
         case O_INIT: o->init_deform = 1; break;
         case O_NOAUTO: o->no_auto = 1; break;
+        case O_CHAIN: o->chain = 1; break;
+        case O_REST: o->rest = optarg; break;
         case O_LMOUT: o->lm_out = optarg; break;
         case O_NOINIT: o->no_init = 1; break;
         case O_LMESH: o->lm_mesh = optarg; break;
@@ -136,9 +149,15 @@ static void parse_args(int argc, char **argv, struct options *o)
         default: usage_error("unknown option");
         }
     }
-    if (argc - optind != 2) usage_error("expected SOURCE and TARGET");
+    if (o->chain ? argc - optind < 2 : argc - optind != 2)
+        usage_error(o->chain ? "expected SOURCE and at least one TARGET" : "expected SOURCE and TARGET");
     o->src = argv[optind];
     o->dst = argv[optind + 1];
+    o->targets = (const char **)argv + optind + 1;
+    o->ntargets = argc - optind - 1;
+    if (o->chain && o->rest) usage_error("--chain keeps SOURCE as the rest shape: no --rest");
+    if (o->chain && (o->landmarks || o->lm_out || o->steps_out))
+        usage_error("--chain takes no -l, --landmarks-out or --steps-out (one key per run does)");
     if (strcmp(o->align, "rigid") && strcmp(o->align, "similarity") && strcmp(o->align, "none"))
         usage_error("--align must be rigid, similarity or none");
     if (o->p.steps < 1 || o->p.steps > 1000) usage_error("--steps must be in 1..1000");
@@ -181,20 +200,12 @@ static int on_step(void *ctx, int step, double alpha, double beta, int inner, in
     return 0;
 }
 
-int main(int argc, char **argv)
+/* one pose, and a surface the closest points and geodesics make sense on */
+static void check_surface(const struct mesh *M, const char *name, int is_target)
 {
-    tool_init(argc, argv);
-    blas_single_thread();          /* small supernodes: threads only spin */
-    struct options o;
-    parse_args(argc, argv, &o);
-    struct mesh S, T;
-    if (mesh_read(o.src, &S) < 0) die("%s", cm_errmsg());
-    if (mesh_read(o.dst, &T) < 0) die("%s", cm_errmsg());
-    if (S.nf < 1 || T.nf < 1) die("cannot register: %s has no faces", S.nf < 1 ? o.src : o.dst);
-    /* one pose each, and surfaces the closest points and geodesics make sense on */
-    for (int k = 0; k < 2; k++) {
-        const struct mesh *M = k ? &T : &S;
-        const char *name = k ? o.dst : o.src;
+    if (M->nf < 1) die("cannot register: %s has no faces", name);
+    {
+        int k = is_target;
         if (M->nframes != 1)
             die("cannot register %s'%s': it has %d frames, nricp takes one pose; pick one with "
                 "anim-slice -f K", k ? "to " : "", name, M->nframes);
@@ -222,46 +233,56 @@ int main(int argc, char **argv)
         }
         topology_free(&tp);
     }
-    struct landmarks L = {0};
-    struct mesh LM = {0};
-    if (o.lm_mesh && mesh_read(o.lm_mesh, &LM) < 0) die("%s", cm_errmsg());
-    if (o.landmarks && landmarks_read(o.landmarks, S.nv, o.lm_mesh ? LM.V : T.V,
-                                      o.lm_mesh ? LM.nv : T.nv, &L) < 0)
-        die("%s", cm_errmsg());
-    if (o.lm_mesh) mesh_free(&LM);
-    if (!o.landmarks && !o.no_auto) {
+}
+
+/* landmark-auto: matched geodesic extremities and limb points, between the
+ * pose V of the source and the target T */
+static void auto_landmarks(const double *V, const struct mesh *S, const struct mesh *T,
+                           struct landmarks *L)
+{
+    {
         /* landmark-auto: matched geodesic extremities and limb points */
         struct landmark_auto_params lp;
         struct landmark_pairs lpairs;
         landmark_auto_defaults(&lp);
         double ta = now_seconds();
-        if (landmark_auto(S.V, S.F, S.nv, S.nf, T.V, T.F, T.nv, T.nf, &lp, &lpairs) < 0)
+        if (landmark_auto(V, S->F, S->nv, S->nf, T->V, T->F, T->nv, T->nf, &lp, &lpairs) < 0)
             die("no landmarks given and none found: %s (give -l, or --no-auto)", cm_errmsg());
-        L.n = lpairs.n;
-        L.src = malloc((size_t)L.n * sizeof *L.src);
-        L.dst = malloc((size_t)L.n * sizeof *L.dst);
-        L.P = malloc((size_t)L.n * 3 * sizeof *L.P);
-        if (!L.src || !L.dst || !L.P) die("out of memory");
-        for (int l = 0; l < L.n; l++) {
-            L.src[l] = lpairs.a[l];
-            L.dst[l] = lpairs.b[l];
-            memcpy(L.P + 3 * l, T.V + 3 * (size_t)lpairs.b[l], 3 * sizeof *L.P);
+        L->n = lpairs.n;
+        L->src = malloc((size_t)L->n * sizeof *L->src);
+        L->dst = malloc((size_t)L->n * sizeof *L->dst);
+        L->P = malloc((size_t)L->n * 3 * sizeof *L->P);
+        if (!L->src || !L->dst || !L->P) die("out of memory");
+        for (int l = 0; l < L->n; l++) {
+            L->src[l] = lpairs.a[l];
+            L->dst[l] = lpairs.b[l];
+            memcpy(L->P + 3 * l, T->V + 3 * (size_t)lpairs.b[l], 3 * sizeof *L->P);
         }
         info(1, "automatic landmarks: %d extremities matched (of %d and %d), %d pairs, "
-             "orientation %.2f, %.2f s", lpairs.matched, lpairs.na, lpairs.nb, L.n, lpairs.orient,
+             "orientation %.2f, %.2f s", lpairs.matched, lpairs.na, lpairs.nb, L->n, lpairs.orient,
              now_seconds() - ta);
         landmark_pairs_free(&lpairs);
     }
+}
+
+/* one key: align SOURCE's pose START (#V by 3) on the landmarks L, the clay
+ * start, NRICP with the ARAP fit relative to REST (NULL: START); X (out) */
+static void register_key(const struct options *op, const struct mesh *S, const double *start,
+                         const double *rest, const struct mesh *T, const char *tname,
+                         const struct landmarks *Lp, struct steps *st, double *X)
+{
+    const struct options o = *op;
+    const struct landmarks L = *Lp;
     double t0 = now_seconds();
     /* Procrustes on the landmarks (Algorithm 2, first line) */
-    double *VS = malloc((size_t)S.nv * 3 * sizeof *VS + 1);
-    memcpy(VS, S.V, (size_t)S.nv * 3 * sizeof *VS);
+    double *VS = malloc((size_t)S->nv * 3 * sizeof *VS + 1);
+    memcpy(VS, start, (size_t)S->nv * 3 * sizeof *VS);
     if (strcmp(o.align, "none") && L.n >= 3) {
         double *A = malloc((size_t)L.n * 3 * sizeof *A), R[9], t[3], s;
-        for (int l = 0; l < L.n; l++) memcpy(A + 3 * l, S.V + 3 * (size_t)L.src[l], 3 * sizeof *A);
+        for (int l = 0; l < L.n; l++) memcpy(A + 3 * l, start + 3 * (size_t)L.src[l], 3 * sizeof *A);
         double res = procrustes(A, L.P, NULL, L.n, !strcmp(o.align, "similarity"), R, t, &s);
         if (res < 0) die("%s", cm_errmsg());
-        similarity_apply(R, t, s, VS, S.nv, VS);
+        similarity_apply(R, t, s, VS, S->nv, VS);
         info(1, "%s alignment on %d landmarks: scale %.6g, RMS residual %.6g", o.align, L.n, s, res);
         free(A);
     }
@@ -271,14 +292,14 @@ int main(int argc, char **argv)
         double *k = NULL;
         if (o.init_stiffness) {
             struct columns col;
-            if (columns_read(o.init_stiffness, 1, S.nv, "vertices", &col) < 0) die("%s", cm_errmsg());
-            for (int v = 0; v < S.nv; v++)
+            if (columns_read(o.init_stiffness, 1, S->nv, "vertices", &col) < 0) die("%s", cm_errmsg());
+            for (int v = 0; v < S->nv; v++)
                 if (!(col.x[v] > 0))
                     die("cannot read '%s': row %d: stiffness must be positive", o.init_stiffness, v + 1);
             k = col.x;
         }
         struct topology t;
-        if (topology_build(S.F, S.nf, S.nv, &t) < 0) die("%s", cm_errmsg());
+        if (topology_build(S->F, S->nf, S->nv, &t) < 0) die("%s", cm_errmsg());
         int closed = t.nboundary == 0 && t.nnonmanifold == 0;
         topology_free(&t);
         /* arap: clay_deform.h, one factorization; shell: thin_shell.h (the
@@ -289,12 +310,12 @@ int main(int argc, char **argv)
             struct thin_shell_params sp;
             thin_shell_defaults(&sp);
             if (!closed) sp.kv = sp.kvg = 0;
-            sh = thin_shell_new(VS, S.F, S.nv, S.nf, k, L.src, L.n, &sp);
+            sh = thin_shell_new(VS, S->F, S->nv, S->nf, k, L.src, L.n, &sp);
         } else
-            cd = clay_deform_new(VS, S.F, S.nv, S.nf, k, L.src, L.n, 100);
+            cd = clay_deform_new(VS, S->F, S->nv, S->nf, k, L.src, L.n, 100);
         if (!cd && !sh) die("--init-deform: %s", cm_errmsg());
-        double *X0 = malloc((size_t)S.nv * 3 * sizeof *X0), *TL = malloc((size_t)L.n * 3 * sizeof *TL);
-        memcpy(X0, VS, (size_t)S.nv * 3 * sizeof *X0);
+        double *X0 = malloc((size_t)S->nv * 3 * sizeof *X0), *TL = malloc((size_t)L.n * 3 * sizeof *TL);
+        memcpy(X0, VS, (size_t)S->nv * 3 * sizeof *X0);
         const int nsteps = 10;
         for (int s = 1; s <= nsteps; s++) {
             double a = (double)s / nsteps;
@@ -304,44 +325,92 @@ int main(int argc, char **argv)
             if ((sh ? thin_shell_solve(sh, TL, 5, X0, NULL) : clay_deform_solve(cd, TL, 5, closed, X0)) < 0)
                 die("--init-deform: %s", cm_errmsg());
         }
-        memcpy(VS, X0, (size_t)S.nv * 3 * sizeof *VS);
+        memcpy(VS, X0, (size_t)S->nv * 3 * sizeof *VS);
         info(1, "clay deformation (%s) toward %d landmarks%s: %.2f s", sh ? "thin shell" : "arap",
              L.n, closed ? " (volume kept)" : "", now_seconds() - t0);
         clay_deform_free(cd);
         thin_shell_free(sh);
         free(X0); free(TL); free(k);
     }
-    struct steps st = {0};
-    st.nv = S.nv;
-    st.nsteps = o.p.steps;
-    st.nfit = o.p.fit;
-    st.t0 = t0;
-    if (o.steps_out) {
-        st.frames = malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *st.frames);
-        memcpy(st.frames, VS, (size_t)S.nv * 3 * sizeof *VS);
-        st.n = 1;
+    st->t0 = t0;
+    if (st->frames) {
+        memcpy(st->frames, VS, (size_t)S->nv * 3 * sizeof *VS);
+        st->n = 1;
     }
-    double *X = malloc((size_t)S.nv * 3 * sizeof *X + 1);
-    progress_start(&st.pr, progname, o.p.steps);
-    if (nricp_register(VS, S.F, S.nv, S.nf, T.V, T.F, T.nv, T.nf, L.src, L.P, L.n, &o.p, X,
-                       on_step, &st) < 0)
+    progress_start(&st->pr, progname, o.p.steps);
+    if (nricp_register(VS, rest, S->F, S->nv, S->nf, T->V, T->F, T->nv, T->nf, L.src, L.P, L.n,
+                       &o.p, X, on_step, st) < 0)
         die("%s", cm_errmsg());
-    progress_end(&st.pr);
+    progress_end(&st->pr);
     double t1 = now_seconds();
     if (verbose) {
-        struct closest_point_tree *TS = closest_point_tree_new(X, S.nv, S.F, S.nf);
-        struct closest_point_tree *TT = closest_point_tree_new(T.V, T.nv, T.F, T.nf);
+        struct closest_point_tree *TS = closest_point_tree_new(X, S->nv, S->F, S->nf);
+        struct closest_point_tree *TT = closest_point_tree_new(T->V, T->nv, T->F, T->nf);
         double h, rms;
-        if (TS && TT && symmetric_distance(X, S.nv, S.F, S.nf, TS, T.V, T.nv, T.F, T.nf, TT, &h, &rms) == 0) {
-            double diag = bbox_diagonal(T.V, T.nv);
-            info(1, "registered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), RMS %.4g, "
-                 "%d flipped faces", t1 - t0, h, 100 * h / diag, rms,
-                 flipped_faces(X, S.F, S.nf, T.V, T.nv, T.F, T.nf, TT,
+        if (TS && TT && symmetric_distance(X, S->nv, S->F, S->nf, TS, T->V, T->nv, T->F, T->nf, TT, &h, &rms) == 0) {
+            double diag = bbox_diagonal(T->V, T->nv);
+            info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), RMS %.4g, "
+                 "%d flipped faces", o.chain ? tname : "", o.chain ? ": " : "", t1 - t0, h,
+                 100 * h / diag, rms,
+                 flipped_faces(X, S->F, S->nf, T->V, T->nv, T->F, T->nf, TT,
                                FLIP_THIN_TOL * diag));
         }
         closest_point_tree_free(TS);
         closest_point_tree_free(TT);
     }
+    free(VS);
+}
+
+int main(int argc, char **argv)
+{
+    tool_init(argc, argv);
+    blas_single_thread();          /* small supernodes: threads only spin */
+    struct options o;
+    parse_args(argc, argv, &o);
+    struct mesh S, R = {0};
+    if (mesh_read(o.src, &S) < 0) die("%s", cm_errmsg());
+    check_surface(&S, o.src, 0);
+    if (o.rest) {
+        if (mesh_read(o.rest, &R) < 0) die("%s", cm_errmsg());
+        if (R.nv != S.nv || R.nf != S.nf || memcmp(R.F, S.F, (size_t)S.nf * 3 * sizeof *S.F))
+            die("cannot use '%s' as the rest shape: its connectivity is not that of '%s'", o.rest, o.src);
+        if (R.nframes != 1)
+            die("cannot use '%s' as the rest shape: it has %d frames; pick one with anim-slice -f K",
+                o.rest, R.nframes);
+    }
+    /* every target is read and checked before any work */
+    struct mesh *T = calloc((size_t)o.ntargets, sizeof *T);
+    for (int k = 0; k < o.ntargets; k++) {
+        if (mesh_read(o.targets[k], &T[k]) < 0) die("%s", cm_errmsg());
+        check_surface(&T[k], o.targets[k], 1);
+    }
+    struct landmarks L = {0};
+    struct mesh LM = {0};
+    if (o.lm_mesh && mesh_read(o.lm_mesh, &LM) < 0) die("%s", cm_errmsg());
+    if (o.landmarks && landmarks_read(o.landmarks, S.nv, o.lm_mesh ? LM.V : T[0].V,
+                                      o.lm_mesh ? LM.nv : T[0].nv, &L) < 0)
+        die("%s", cm_errmsg());
+    if (o.lm_mesh) mesh_free(&LM);
+    struct steps st = {0};
+    st.nv = S.nv;
+    st.nsteps = o.p.steps;
+    st.nfit = o.p.fit;
+    if (o.steps_out) st.frames = malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *st.frames);
+    /* the keys: frame 0 the source, frame k the registration to target k;
+     * key k starts from key k - 1, the fit keeps the source's shape */
+    double *K = malloc((size_t)(o.ntargets + 1) * S.nv * 3 * sizeof *K);
+    memcpy(K, S.V, (size_t)S.nv * 3 * sizeof *K);
+    for (int k = 0; k < o.ntargets; k++) {
+        const double *start = K + (size_t)k * S.nv * 3;
+        double *X = K + (size_t)(k + 1) * S.nv * 3;
+        if (!o.landmarks && !o.no_auto) {
+            landmarks_free(&L);
+            auto_landmarks(start, &S, &T[k], &L);
+        }
+        register_key(&o, &S, start, o.chain && k > 0 ? S.V : o.rest ? R.V : NULL, &T[k],
+                     o.targets[k], &L, &st, X);
+    }
+    double *X = K + (size_t)o.ntargets * S.nv * 3;
     if (o.steps_out) {
         FILE *f = out_open(o.steps_out);
         struct mesh_writer w;
@@ -363,17 +432,18 @@ int main(int argc, char **argv)
             else fprintf(lf, "%d %.17g %.17g %.17g\n", L.src[l], L.P[3 * l], L.P[3 * l + 1], L.P[3 * l + 2]);
     }
     FILE *out = out_open(o.output);
-    struct mesh R = S;
-    R.V = X;
-    R.nframes = 1;
-    if (mesh_write(out, &R, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
+    struct mesh W = S;
+    W.V = o.chain ? K : X;
+    W.nframes = o.chain ? o.ntargets + 1 : 1;
+    if (mesh_write(out, &W, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
     if (lf) out_close(lf);
     out_close(out);
     free(st.frames);
-    free(X);
-    free(VS);
+    free(K);
     landmarks_free(&L);
     mesh_free(&S);
-    mesh_free(&T);
+    mesh_free(&R);
+    for (int k = 0; k < o.ntargets; k++) mesh_free(&T[k]);
+    free(T);
     return 0;
 }

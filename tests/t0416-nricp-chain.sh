@@ -1,0 +1,53 @@
+#!/bin/sh
+test_description='nricp --chain and --rest on generated shapes; bad input'
+. "$(dirname "$0")/test-lib.sh"
+
+# an egg with a nose, its upper part turned by $2 radians about y
+shape() {
+	awk -v a="$2" '/^frame [0-9]/ { on = 1; print; next }
+	on && NF == 3 { x = 0.35 * $1; y = 0.2 * $2; z = $3
+		if (x > 0) x += 0.25 * x / 0.35 * exp(-((z - 0.4)^2 + y^2) / 0.04)
+		s = (z + 0.1) / 0.3; s = s < 0 ? 0 : s > 1 ? 1 : s; t = a * s * s * (3 - 2 * s)
+		zz = z + 0.1; xx = x * cos(t) - zz * sin(t); zz = x * sin(t) + zz * cos(t)
+		printf "%.17g %.17g %.17g\n", xx, y, zz - 0.1; next }
+	{ print }' "$1"
+}
+test_expect_success 'setup: a source and two poses remeshed finer' '
+	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh &&
+	shape s3.mesh 0 >src.mesh && shape s4.mesh 0.15 >g1.mesh && shape s4.mesh 0.3 >g2.mesh
+'
+test_expect_success 'nricp --chain writes SOURCE and one key per target; key 1 is the single run' '
+	nricp --no-auto -k 3 --fit 6 --chain src.mesh g1.mesh g2.mesh >keys.mesh &&
+	grep -q "^frames 3" keys.mesh &&
+	anim-slice -f 0 keys.mesh >k0.mesh && anim-slice -f 1 keys.mesh >k1.mesh &&
+	test_near "$(anim-diff -s src.mesh k0.mesh | awk "/^max/ { print \$2 }")" 0 1e-12 &&
+	nricp --no-auto -k 3 --fit 6 src.mesh g1.mesh >one.mesh &&
+	test_near "$(anim-diff -s one.mesh k1.mesh | awk "/^max/ { print \$2 }")" 0 1e-9
+'
+test_expect_success 'nricp --rest SOURCE: key 2 of the chain is a run from key 1 with the rest shape SOURCE' '
+	anim-slice -f 2 keys.mesh >k2.mesh &&
+	nricp --no-auto -k 3 --fit 6 --rest src.mesh k1.mesh g2.mesh >two.mesh &&
+	test_near "$(anim-diff -s two.mesh k2.mesh | awk "/^max/ { print \$2 }")" 0 1e-9 &&
+	nricp --no-auto -k 3 --fit 6 k1.mesh g2.mesh >prev.mesh &&
+	! test_near "$(anim-diff -s prev.mesh k2.mesh | awk "/^max/ { print \$2 }")" 0 1e-6
+'
+test_expect_success 'nricp -v --chain reports every key by name' '
+	nricp -v --no-auto -k 2 --fit 2 --chain src.mesh g1.mesh g2.mesh >/dev/null 2>err &&
+	grep "g1.mesh: registered in" err && grep "g2.mesh: registered in" err
+'
+test_expect_success 'bad input: --rest of another connectivity, an animation as rest' '
+	test_fails_cleanly nricp --no-auto --rest s4.mesh src.mesh g1.mesh &&
+	grep "s4.mesh.*connectivity" .err &&
+	anim-cat src.mesh src.mesh >two-frames.mesh &&
+	test_fails_cleanly nricp --no-auto --rest two-frames.mesh src.mesh g1.mesh &&
+	grep "2 frames" .err
+'
+test_expect_success 'usage: --chain with -l, --rest, --steps-out; --chain without a target' '
+	printf "0 0\n" >m.txt &&
+	test_must_fail_usage nricp --chain -l m.txt src.mesh g1.mesh g2.mesh &&
+	test_must_fail_usage nricp --chain --rest src.mesh src.mesh g1.mesh &&
+	test_must_fail_usage nricp --chain --steps-out s.mesh src.mesh g1.mesh &&
+	test_must_fail_usage nricp --chain src.mesh &&
+	test_must_fail_usage nricp src.mesh g1.mesh g2.mesh
+'
+test_done
