@@ -462,27 +462,103 @@ public:
     }
 };
 
-/* Check a PLY header before OpenMesh sees it: OpenMesh 9 crashes on a
- * property before any element and loops forever on a header without
- * end_header.  The counts must fit the bytes after the header (binary: each
- * element at least its fixed-size properties and list counts; ascii: at
- * least 2 bytes a property), so no reservation exceeds the file. */
+/* Check a PLY file before OpenMesh sees it: OpenMesh 9 crashes on a
+ * property before any element, loops forever on a header without
+ * end_header, and reads past the end (growing without bound) when a list
+ * count is not what its type allows or fewer values follow than announced.
+ * So the header is parsed here, the counts must fit the bytes after it
+ * (binary: each element at least its fixed-size properties and list counts;
+ * ascii: at least 2 bytes a property), and then the body is walked element
+ * by element against the header: ascii, every value a number (integer types:
+ * an integer in the type's range), every list count a non-negative integer
+ * that fits its declared type and followed by that many values, nothing
+ * after the last element; binary, every list count non-negative and its
+ * values inside the file, the file ending with the last element. */
+namespace {
+struct PlyType { const char *name; int size; bool integer, sign; };
+const PlyType ply_types[] = {
+    {"char", 1, true, true},    {"uchar", 1, true, false},   {"short", 2, true, true},
+    {"ushort", 2, true, false}, {"int", 4, true, true},      {"uint", 4, true, false},
+    {"float", 4, false, true},  {"double", 8, false, true},  {"int8", 1, true, true},
+    {"uint8", 1, true, false},  {"int16", 2, true, true},    {"uint16", 2, true, false},
+    {"int32", 4, true, true},   {"uint32", 4, true, false},  {"float32", 4, false, true},
+    {"float64", 8, false, true},
+};
+const PlyType *ply_type(const std::string &t)
+{
+    for (const PlyType &p : ply_types)
+        if (t == p.name) return &p;
+    return NULL;
+}
+struct PlyProp { const PlyType *type, *count; };  /* count: NULL unless a list */
+struct PlyElem { std::string name; long count; long minsize; bool x, y, z, list; std::vector<PlyProp> P; };
+
+/* the ascii body as tokens, with line numbers */
+struct PlyTokens {
+    const std::string &b;
+    size_t i;
+    long line;
+    /* next token in [*s, *e); false at the end of the file */
+    bool next(size_t *s, size_t *e)
+    {
+        while (i < b.size()) {
+            unsigned char c = (unsigned char)b[i];
+            if (!(c == ' ' || (c >= '\t' && c <= '\r'))) break;
+            if (c == '\n') line++;
+            i++;
+        }
+        if (i >= b.size()) return false;
+        *s = i;
+        while (i < b.size() && b[i] != ' ' && !(b[i] >= '\t' && b[i] <= '\r')) i++;
+        *e = i;
+        return true;
+    }
+};
+
+/* an ascii value of type t in b[s, e): 0, or a reason */
+const char *ply_ascii_value(const std::string &b, size_t s, size_t e, const PlyType *t, long long *v)
+{
+    const char *p = b.c_str() + s, *end;
+    if (!t->integer) {
+        char *q;
+        strtod(p, &q);
+        return q == b.c_str() + e ? NULL : "a value that is not a number";
+    }
+    end = b.c_str() + e;
+    const char *d = p + (*p == '-' || *p == '+');
+    if (d == end) return "a value that is not a number";
+    for (const char *c = d; c < end; c++)
+        if (*c < '0' || *c > '9') {
+            char *q;
+            strtod(p, &q);
+            return q == end ? "a value of an integer type that is not an integer" : "a value that is not a number";
+        }
+    errno = 0;
+    char *q;
+    long long x = strtoll(p, &q, 10);
+    int bits = 8 * t->size;
+    long long lo = t->sign ? -(1LL << (bits - 1)) : 0, hi = t->sign ? (1LL << (bits - 1)) - 1 : (1LL << bits) - 1;
+    if (errno == ERANGE || x < lo || x > hi) return "an integer out of the range of its type";
+    *v = x;
+    return NULL;
+}
+
+/* a binary count of type t at u (file order: big endian or not) */
+long long ply_binary_count(const unsigned char *u, const PlyType *t, bool big)
+{
+    unsigned long long x = 0;
+    for (int k = 0; k < t->size; k++) x |= (unsigned long long)u[big ? t->size - 1 - k : k] << (8 * k);
+    if (t->sign && (x >> (8 * t->size - 1)) & 1) return (long long)x - (1LL << (8 * t->size));
+    return (long long)x;
+}
+} // namespace
+
 static int ply_check(const std::string &b, const char *path)
 {
-    static const char *const types[] = {"char", "uchar", "short", "ushort", "int", "uint", "float",
-                                        "double", "int8", "uint8", "int16", "uint16", "int32",
-                                        "uint32", "float32", "float64", NULL};
-    static const int tsize[] = {1, 1, 2, 2, 4, 4, 4, 8, 1, 1, 2, 2, 4, 4, 4, 8};
-    auto type_size = [&](const std::string &t) {
-        for (int i = 0; types[i]; i++)
-            if (t == types[i]) return tsize[i];
-        return 0;
-    };
-    struct elem { std::string name; long count; long minsize; int nprops; bool x, y, z, list; };
-    std::vector<elem> E;
+    std::vector<PlyElem> E;
     size_t at = 0;
     long no = 0;
-    bool ascii = false, ended = false;
+    bool ascii = false, big = false, ended = false;
     std::string why;
     while (!ended && at < b.size()) {
         size_t nl = b.find('\n', at);
@@ -507,6 +583,7 @@ static int ply_check(const std::string &b, const char *path)
                 break;
             }
             ascii = fmt == "ascii";
+            big = fmt == "binary_big_endian";
             continue;
         }
         if (key == "comment" || key == "obj_info") continue;
@@ -518,26 +595,28 @@ static int ply_check(const std::string &b, const char *path)
                 why = "bad element line";
                 break;
             }
-            E.push_back({name, n, 0, 0, false, false, false, false});
+            E.push_back({name, n, 0, false, false, false, false, {}});
             continue;
         }
         if (key == "property") {
             if (E.empty()) { why = "a property before any element"; break; }
             std::string t, name, it, extra;
             if (!(ls >> t)) { why = "bad property line"; break; }
-            elem &e = E.back();
+            PlyElem &e = E.back();
             if (t == "list") {
-                if (!(ls >> t >> it >> name) || !type_size(t) || !type_size(it) || (ls >> extra)) {
+                if (!(ls >> t >> it >> name) || !ply_type(t) || !ply_type(it) || !ply_type(t)->integer ||
+                    (ls >> extra)) {
                     why = "bad list property";
                     break;
                 }
-                e.minsize += type_size(t);
+                e.minsize += ply_type(t)->size;
                 e.list = true;
+                e.P.push_back({ply_type(it), ply_type(t)});
             } else {
-                if (!(ls >> name) || !type_size(t) || (ls >> extra)) { why = "bad property line"; break; }
-                e.minsize += type_size(t);
+                if (!(ls >> name) || !ply_type(t) || (ls >> extra)) { why = "bad property line"; break; }
+                e.minsize += ply_type(t)->size;
+                e.P.push_back({ply_type(t), NULL});
             }
-            e.nprops++;
             if (name == "x") e.x = true;
             if (name == "y") e.y = true;
             if (name == "z") e.z = true;
@@ -551,8 +630,8 @@ static int ply_check(const std::string &b, const char *path)
         return cm_seterr("cannot read '%s': not a valid PLY file (header line %ld: %s)", path, no, why.c_str());
     double need = 0;
     bool vertex = false;
-    for (const elem &e : E) {
-        if (e.nprops == 0)
+    for (const PlyElem &e : E) {
+        if (e.P.empty())
             return cm_seterr("cannot read '%s': not a valid PLY file (element '%s' has no property)", path,
                              e.name.c_str());
         if (e.name == "vertex") {
@@ -562,30 +641,83 @@ static int ply_check(const std::string &b, const char *path)
         }
         if (e.name == "face" && e.count > 0 && !e.list)
             return cm_seterr("cannot read '%s': not a valid PLY file (face element without a list)", path);
-        need += (double)e.count * (ascii ? 2.0 * e.nprops : (double)e.minsize);
+        need += (double)e.count * (ascii ? 2.0 * (double)e.P.size() : (double)e.minsize);
     }
     if (!vertex)
         return cm_seterr("cannot read '%s': not a valid PLY file (no vertex element)", path);
     if (need > (double)(b.size() - at))
         return cm_seterr("cannot read '%s': truncated: the PLY header announces at least %.0f bytes of data, "
                          "the file has %zu", path, need, b.size() - at);
-    /* ascii: OpenMesh's reader never stops (and grows without bound) at a
-     * token that is not a number, so every token of the body must be one */
-    long line = no + 1;
-    for (size_t i = at; ascii && i < b.size();) {
-        unsigned char c = (unsigned char)b[i];
-        if (c == '\n') line++;
-        if (c == ' ' || (c >= '\t' && c <= '\r')) { i++; continue; }
-        size_t j = i;
-        while (j < b.size() && b[j] != ' ' && !(b[j] >= '\t' && b[j] <= '\r')) j++;
-        std::string tok = b.substr(i, j - i);
-        char *end;
-        strtod(tok.c_str(), &end);
-        if (end != tok.c_str() + tok.size())
-            return cm_seterr("cannot read '%s': not a valid PLY file (line %ld: a value that is not a number)",
-                             path, line);
-        i = j;
+    if (ascii) {
+        PlyTokens tk{b, at, no + 1};
+        size_t s, e;
+        for (const PlyElem &el : E)
+            for (long k = 0; k < el.count; k++)
+                for (const PlyProp &p : el.P) {
+                    long long n = 1, v;
+                    const char *bad;
+                    if (p.count) {
+                        if (!tk.next(&s, &e)) goto short_ascii;
+                        if ((bad = ply_ascii_value(b, s, e, p.count, &v)))
+                            return cm_seterr("cannot read '%s': not a valid PLY file (line %ld: %s %ld: "
+                                             "list count of type %s: %s)", path, tk.line, el.name.c_str(), k,
+                                             p.count->name, bad);
+                        if (v < 0)
+                            return cm_seterr("cannot read '%s': not a valid PLY file (line %ld: %s %ld: "
+                                             "negative list count %lld)", path, tk.line, el.name.c_str(), k, v);
+                        n = v;
+                    }
+                    for (long long j = 0; j < n; j++) {
+                        if (!tk.next(&s, &e)) goto short_ascii;
+                        if ((bad = ply_ascii_value(b, s, e, p.type, &v)))
+                            return cm_seterr("cannot read '%s': not a valid PLY file (line %ld: %s)", path,
+                                             tk.line, bad);
+                    }
+                    continue;
+                short_ascii:
+                    return cm_seterr("cannot read '%s': truncated: the PLY file ends at line %ld inside %s %ld "
+                                     "of %ld", path, tk.line, el.name.c_str(), k, el.count);
+                }
+        if (tk.next(&s, &e))
+            return cm_seterr("cannot read '%s': not a valid PLY file (line %ld: data after the last element)",
+                             path, tk.line);
+        return 0;
     }
+    const unsigned char *u = (const unsigned char *)b.data();
+    size_t o = at, len = b.size();
+    for (const PlyElem &el : E) {
+        if (!el.list) {  /* fixed size: the whole element at once */
+            if ((double)el.count * (double)el.minsize > (double)(len - o)) goto short_binary;
+            o += (size_t)el.count * (size_t)el.minsize;
+            continue;
+        }
+        for (long k = 0; k < el.count; k++)
+            for (const PlyProp &p : el.P) {
+                if (!p.count) {
+                    if ((size_t)p.type->size > len - o) goto short_binary;
+                    o += p.type->size;
+                    continue;
+                }
+                if ((size_t)p.count->size > len - o) goto short_binary;
+                long long n = ply_binary_count(u + o, p.count, big);
+                if (n < 0)
+                    return cm_seterr("cannot read '%s': not a valid PLY file (byte %zu: %s %ld: negative list "
+                                     "count %lld)", path, o, el.name.c_str(), k, n);
+                o += p.count->size;
+                if ((double)n * p.type->size > (double)(len - o))
+                    return cm_seterr("cannot read '%s': truncated: the PLY list at byte %zu (%s %ld) announces "
+                                     "%lld values, the file has %zu bytes left", path, o - p.count->size,
+                                     el.name.c_str(), k, n, len - o);
+                o += (size_t)n * p.type->size;
+            }
+        continue;
+    short_binary:
+        return cm_seterr("cannot read '%s': truncated: the PLY file ends inside element '%s' (byte %zu)", path,
+                         el.name.c_str(), len);
+    }
+    if (o != len)
+        return cm_seterr("cannot read '%s': not a valid PLY file (%zu bytes after the last element, at byte %zu)",
+                         path, len - o, o);
     return 0;
 }
 

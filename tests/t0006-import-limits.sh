@@ -47,6 +47,30 @@ test_expect_success 'PLY: a value that is not a number in an ascii body (OpenMes
 	test_fails_cleanly timeout 60 mesh-import p9.ply 2>err &&
 	grep "p9.ply.: not a valid PLY file (line 13: a value that is not a number)" err
 '
+test_expect_success 'PLY: ascii list counts must fit their type and be followed by their values (OpenMesh read past EOF)' '
+	h="ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n" &&
+	printf "${h}365080832 0 1 2\n" >l1.ply &&
+	test_fails_cleanly timeout 60 mesh-import l1.ply 2>err &&
+	grep "l1.ply.: not a valid PLY file (line 13: face 0: list count of type uchar: an integer out of the range of its type)" err &&
+	printf "${h}-3 0 1 2\n" >l2.ply &&
+	test_fails_cleanly mesh-import l2.ply 2>err && grep "line 13: face 0: list count of type uchar" err &&
+	printf "${h}4 0 1 2\n" >l3.ply &&
+	test_fails_cleanly mesh-import l3.ply 2>err && grep "l3.ply.: truncated: the PLY file ends at line 14 inside face 0 of 1" err &&
+	printf "${h}3 0 1.5 2\n" >l4.ply &&
+	test_fails_cleanly mesh-import l4.ply 2>err && grep "line 13: a value of an integer type that is not an integer" err &&
+	printf "${h}3 0 1 2\n7\n" >l5.ply &&
+	test_fails_cleanly mesh-import l5.ply 2>err && grep "line 14: data after the last element" err &&
+	printf "${h}3 0 1 2\n" >l6.ply && mesh-import l6.ply | mesh-info | grep "^faces 1$"
+'
+test_expect_success 'PLY: binary list counts checked against the bytes that follow' '
+	printf "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n" >b.ply &&
+	head -c 36 /dev/zero >>b.ply && cp b.ply b2.ply &&
+	printf "\000\000\000\100\000\000\000\000\001\000\000\000\002\000\000\000" >>b.ply &&
+	test_fails_cleanly timeout 60 mesh-import b.ply 2>err &&
+	grep "b.ply.: truncated: the PLY list at byte [0-9]* (face 0) announces 1073741824 values, the file has 12 bytes left" err &&
+	printf "\375\377\377\377\000\000\000\000\001\000\000\000\002\000\000\000" >>b2.ply &&
+	test_fails_cleanly mesh-import b2.ply 2>err && grep "b2.ply.: not a valid PLY file (byte [0-9]*: face 0: negative list count -3)" err
+'
 test_expect_success 'PLY: a valid file still imports (binary and ascii round trip)' '
 	mesh-gen -s 1 icosphere >ico.mesh &&
 	mesh-export -o ico.ply ico.mesh && mesh-import ico.ply | mesh-info | grep "^faces 80$" &&
