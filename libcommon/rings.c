@@ -201,12 +201,21 @@ double rings_area(const struct rings *r, int k)
     return 0.5 * a;
 }
 
+int rings_orientation(const struct rings *r, int k)
+{
+    const double *P = rings_ring(r, k);
+    int n = rings_count(r, k), v = 0;
+    for (int i = 1; i < n; i++)
+        if (P[2 * i] < P[2 * v] || (P[2 * i] == P[2 * v] && P[2 * i + 1] < P[2 * v + 1])) v = i;
+    return orient2_sign(P + 2 * ((v + n - 1) % n), P + 2 * v, P + 2 * ((v + 1) % n));
+}
+
 int rings_orient(struct rings *r)
 {
     int flipped = 0;
     for (int k = 0; k < r->nrings; k++) {
-        double a = rings_area(r, k);
-        if ((k == 0 && a < 0) || (k > 0 && a > 0)) {
+        int o = rings_orientation(r, k);
+        if ((k == 0 && o < 0) || (k > 0 && o > 0)) {
             double *P = rings_ring(r, k);
             long *L = r->line + r->start[k];
             int n = rings_count(r, k);

@@ -42,8 +42,20 @@ void rings_free(struct rings *r);
 static inline int rings_count(const struct rings *r, int k) { return r->start[k + 1] - r->start[k]; }
 static inline double *rings_ring(const struct rings *r, int k) { return r->P + 2 * (size_t)r->start[k]; }
 
-/* Signed area of ring k (> 0: counter-clockwise). */
+/* Signed area of ring k (> 0: counter-clockwise), summed in double: its
+ * sign can be wrong by cancellation (coordinates far from the origin
+ * relative to the ring's size); decide orientation with rings_orientation. */
 double rings_area(const struct rings *r, int k);
+
+/* Exact orientation of ring k: the sign of orient2_sign(prev, v, next) at
+ * its lexicographically lowest vertex v (least x, then least y; the first
+ * such if v repeats).  +1 counter-clockwise, -1 clockwise, 0 when the ring
+ * turns back on itself at v (prev, v, next collinear).  For a simple ring
+ * (rings_check_simple) this is the sign of its area and never 0.  For a
+ * self-intersecting ring it is, by definition, the direction in which the
+ * ring passes its extreme vertex (a corner of its convex hull); the signed
+ * area can then disagree (a figure eight has area 0 and an orientation). */
+int rings_orientation(const struct rings *r, int k);
 
 /* Is ring k degenerate: all its points on one line (exact), or its area
  * below 1e-12 of its bounding-box diagonal squared? */
@@ -54,8 +66,9 @@ int rings_degenerate(const struct rings *r, int k);
  * onto its neighbour.  Error names both edges by file line. */
 int rings_check_simple(const struct rings *r);
 
-/* Make the first ring counter-clockwise and all others clockwise
- * (reverses rings as needed; returns the number of rings reversed). */
+/* Make the first ring counter-clockwise and all others clockwise by
+ * rings_orientation (exact; reverses rings as needed, leaves a ring of
+ * orientation 0 as it is; returns the number of rings reversed). */
 int rings_orient(struct rings *r);
 
 /* Segment predicates shared by the 2D tools.

@@ -1,6 +1,7 @@
 /* fuzz_rings.c -- 2D outline files (rings.h).  Oracle: rings that read
- * are written and read back bit-exact; the simplicity check and the
- * orientation run on them. */
+ * are written and read back bit-exact; simple rings have an exact
+ * orientation (rings_orientation), and after rings_orient the outer ring is
+ * counter-clockwise and every other clockwise. */
 #include "fuzz_common.h"
 #include "rings.h"
 
@@ -26,8 +27,14 @@ FUZZ_TARGET(rings)(const uint8_t *data, size_t size)
         fuzz_file_done(p2);
         free(buf);
         if (r.start[r.nrings] <= 4096 && rings_check_simple(&r) == 0) {
+            /* simple rings: the exact orientation is never 0, the outer
+             * ring comes out counter-clockwise and the holes clockwise */
+            for (int k = 0; k < r.nrings; k++)
+                if (rings_orientation(&r, k) == 0) fuzz_fail("rings: a simple ring without orientation");
             rings_orient(&r);
-            if (rings_area(&r, 0) < 0) fuzz_fail("rings: outer ring clockwise after rings_orient");
+            if (rings_orientation(&r, 0) != 1) fuzz_fail("rings: outer ring clockwise after rings_orient");
+            for (int k = 1; k < r.nrings; k++)
+                if (rings_orientation(&r, k) != -1) fuzz_fail("rings: a hole counter-clockwise after rings_orient");
         }
         rings_free(&r);
     }
