@@ -86,6 +86,20 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
     set -- $(hf "$T/c03.mesh" "$T/a3.mesh"); ha=$1 fa=$2
     set -- $(hf "$T/c03.mesh" "$T/n3.mesh"); hn=$1 fn=$2
     echo "nricp automatic landmarks camel 01->03: $ha % ($fa flipped) | baseline --no-auto $hn % ($fn flipped) | ratio $(ratio "$ha" "$hn") (goal < 1 %, 0 flipped)"
+    # a chain of keys without landmark files: nricp --chain (each key's fit
+    # relative to scan 01) against --chain-rest previous (each key a plain
+    # run from the previous one, the earlier recipe): the last key, and its
+    # error over the first key's (goal: within 1.2x)
+    nricp --chain "$T/c01.mesh" "$T/c02.mesh" "$T/c03.mesh" "$T/c04.mesh" "$T/c05.mesh" >"$T/cf.mesh" &&
+    nricp --chain --chain-rest previous "$T/c01.mesh" "$T/c02.mesh" "$T/c03.mesh" "$T/c04.mesh" "$T/c05.mesh" >"$T/cp.mesh" || exit 1
+    for v in cf cp; do
+        anim-slice -f 1 "$T/$v.mesh" >"$T/${v}1.mesh" && anim-slice -f 4 "$T/$v.mesh" >"$T/${v}4.mesh" || exit 1
+    done
+    set -- $(hf "$T/c02.mesh" "$T/cf1.mesh"); hf1=$1
+    set -- $(hf "$T/c05.mesh" "$T/cf4.mesh"); hf4=$1 ff4=$2
+    set -- $(hf "$T/c02.mesh" "$T/cp1.mesh"); hp1=$1
+    set -- $(hf "$T/c05.mesh" "$T/cp4.mesh"); hp4=$1 fp4=$2
+    echo "nricp --chain camel 01-05, last key: $hf4 % ($ff4 flipped), $(ratio "$hf4" "$hf1") x the first key | baseline --chain-rest previous $hp4 % ($fp4 flipped), $(ratio "$hp4" "$hp1") x | ratio $(ratio "$hf4" "$hp4") (goal: within 1.2x of the first key)"
     # mesh-metrics on 21 ARAP in-betweens of 01 -> 02 against scan 01 (the
     # examples/clay interp-metrics case): one process for all frames (tree,
     # samples and topology of the reference once, each frame's closest

@@ -31,6 +31,11 @@ test_expect_success 'nricp --rest SOURCE: key 2 of the chain is a run from key 1
 	nricp --no-auto -k 3 --fit 6 k1.mesh g2.mesh >prev.mesh &&
 	! test_near "$(anim-diff -s prev.mesh k2.mesh | awk "/^max/ { print \$2 }")" 0 1e-6
 '
+test_expect_success 'nricp --chain --chain-rest previous: each key a plain run from the previous one' '
+	nricp --no-auto -k 3 --fit 6 --chain --chain-rest previous src.mesh g1.mesh g2.mesh >keysp.mesh &&
+	anim-slice -f 2 keysp.mesh >kp2.mesh &&
+	test_near "$(anim-diff -s prev.mesh kp2.mesh | awk "/^max/ { print \$2 }")" 0 1e-9
+'
 test_expect_success 'nricp -v --chain reports every key by name' '
 	nricp -v --no-auto -k 2 --fit 2 --chain src.mesh g1.mesh g2.mesh >/dev/null 2>err &&
 	grep "g1.mesh: registered in" err && grep "g2.mesh: registered in" err
@@ -48,6 +53,8 @@ test_expect_success 'usage: --chain with -l, --rest, --steps-out; --chain withou
 	test_must_fail_usage nricp --chain --rest src.mesh src.mesh g1.mesh &&
 	test_must_fail_usage nricp --chain --steps-out s.mesh src.mesh g1.mesh &&
 	test_must_fail_usage nricp --chain src.mesh &&
+	test_must_fail_usage nricp --chain-rest previous src.mesh g1.mesh &&
+	test_must_fail_usage nricp --chain --chain-rest last src.mesh g1.mesh &&
 	test_must_fail_usage nricp src.mesh g1.mesh g2.mesh
 '
 test_done

@@ -36,6 +36,8 @@ static const char help[] =
 "      --chain           a chain of keys: each key starts from the previous key's\n"
 "                        result, but the ARAP fit keeps SOURCE's shape (--rest\n"
 "                        SOURCE), so the error does not build up along the chain\n"
+"      --chain-rest R    first (default) or previous: the rest shape of each key's\n"
+"                        fit is SOURCE, or the previous key (the one-key-at-a-time recipe)\n"
 "      --rest FILE       rest shape of the ARAP fit (SOURCE's connectivity), when\n"
 "                        SOURCE is a warm start: the first key of a chain\n"
 "  -l, --landmarks FILE  rows 'src_vertex dst_vertex' or 'src_vertex x y z'\n"
@@ -84,7 +86,7 @@ struct options {
     const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness, *lm_mesh;
     const char *lm_out, *rest;
     const char **targets;
-    int ntargets, chain;
+    int ntargets, chain, chain_prev;
     int raw, init_deform, init_shell, no_auto, no_init;
     struct nricp_params p;
 };
@@ -93,13 +95,13 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
-           O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST };
+           O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
-        {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST},
+        {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, O_VERSION},
@@ -125,6 +127,10 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_NOAUTO: o->no_auto = 1; break;
         case O_CHAIN: o->chain = 1; break;
         case O_REST: o->rest = optarg; break;
+        case O_CREST:
+            if (!strcmp(optarg, "previous")) o->chain_prev = 1;
+            else if (strcmp(optarg, "first")) usage_error("--chain-rest must be first or previous");
+            break;
         case O_LMOUT: o->lm_out = optarg; break;
         case O_NOINIT: o->no_init = 1; break;
         case O_LMESH: o->lm_mesh = optarg; break;
@@ -155,6 +161,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->dst = argv[optind + 1];
     o->targets = (const char **)argv + optind + 1;
     o->ntargets = argc - optind - 1;
+    if (o->chain_prev && !o->chain) usage_error("--chain-rest needs --chain");
     if (o->chain && o->rest) usage_error("--chain keeps SOURCE as the rest shape: no --rest");
     if (o->chain && (o->landmarks || o->lm_out || o->steps_out))
         usage_error("--chain takes no -l, --landmarks-out or --steps-out (one key per run does)");
@@ -407,7 +414,7 @@ int main(int argc, char **argv)
             landmarks_free(&L);
             auto_landmarks(start, &S, &T[k], &L);
         }
-        register_key(&o, &S, start, o.chain && k > 0 ? S.V : o.rest ? R.V : NULL, &T[k],
+        register_key(&o, &S, start, o.chain && k > 0 && !o.chain_prev ? S.V : o.rest ? R.V : NULL, &T[k],
                      o.targets[k], &L, &st, X);
     }
     double *X = K + (size_t)o.ntargets * S.nv * 3;
