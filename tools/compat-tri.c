@@ -3,6 +3,7 @@
  * one MESH animation of N frames sharing one face list.
  */
 #include "compat_tri.h"
+#include "compat_refine.h"
 #include "columns.h"
 #include "mesh.h"
 #include "rings.h"
@@ -26,9 +27,23 @@ static const char help[] =
 "                        the simplified to the input outline, as a fraction\n"
 "                        of each pose's bounding-box diagonal (default 0.005;\n"
 "                        0: keep every input point)\n"
-"  -l, --edge-length L   refine interior edges to L times the mean boundary\n"
-"                        edge length (default 3; 0: no refinement)\n"
-"  -s, --smooth N        smoothing + flip rounds (default 10; 0: none)\n"
+"  -l, --edge-length L   --refine none: refine interior edges to L times the\n"
+"                        mean boundary edge length (default 3; 0: none)\n"
+"  -s, --smooth N        --refine none: smoothing + flip rounds (default 10)\n"
+"      --refine MODE     'remesh' (default: pose 0's outline meshed alone to\n"
+"                        --min-angle, carried to the other poses by ARAP with\n"
+"                        the outline fixed, then refined as 'refine'; if a\n"
+"                        triangle stays inverted from every reference pose,\n"
+"                        says so and does 'refine'), 'refine' (compatible\n"
+"                        splits, flips and smoothing of the compatible\n"
+"                        triangulation, Surazhsky-Gotsman) or 'none' (only\n"
+"                        the edge-length refinement of -l and -s)\n"
+"  -a, --min-angle DEG   goal of --refine (default 20)\n"
+"      --size H          --refine remesh: no edge of the reference mesh longer\n"
+"                        than H times the bounding-box diagonal (default\n"
+"                        0.05; 0: angle goal only)\n"
+"      --max-vertices K  --refine stops splitting at K vertices\n"
+"                        (default 10 times the boundary vertex count)\n"
 "      --split MODE      pieces that no common diagonal or single Steiner point\n"
 "                        splits: 'overlay' (default: overlay of the shapes'\n"
 "                        triangulations, always succeeds) or 'linkpath' (the\n"
@@ -40,10 +55,13 @@ static const char help[] =
 "\n"
 "Example: compat-tri -v -c corr.txt pose1.rings pose2.rings | mesh2svg -g >t.svg\n";
 
+enum { REFINE_NONE, REFINE_REFINE, REFINE_REMESH };
+
 struct options {
     const char *corr, *output;
     double err, edge;
-    int smooth, raw, split;
+    int smooth, raw, split, refine, max_nv;
+    double min_angle, size;
     int nshapes;
     char **shapes;
 };
@@ -52,12 +70,13 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"corr", 1, 0, 'c'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
-        {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
+        {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'},
+        {"max-vertices", 1, 0, 'K'}, {"size", 1, 0, 'z'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
-    o->err = 0.005; o->edge = 3; o->smooth = 10;
+    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = REFINE_REFINE; o->min_angle = 20; o->size = 0.05;
     int c;
-    while ((c = getopt_long(argc, argv, "c:e:l:s:o:vh", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "c:e:l:s:a:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'c': o->corr = optarg; break;
         case 'e': o->err = arg_double(optarg, "--error"); break;
@@ -68,6 +87,15 @@ static void parse_args(int argc, char **argv, struct options *o)
             else if (!strcmp(optarg, "linkpath")) o->split = COMPAT_LINKPATH;
             else usage_error("--split must be 'overlay' or 'linkpath'");
             break;
+        case 'Q':
+            if (!strcmp(optarg, "remesh")) o->refine = REFINE_REFINE;
+            else if (!strcmp(optarg, "refine")) o->refine = REFINE_REFINE;
+            else if (!strcmp(optarg, "none")) o->refine = REFINE_NONE;
+            else usage_error("--refine must be 'remesh', 'refine' or 'none'");
+            break;
+        case 'a': o->min_angle = arg_double(optarg, "--min-angle"); break;
+        case 'z': o->size = arg_double(optarg, "--size"); break;
+        case 'K': o->max_nv = arg_int(optarg, "--max-vertices"); break;
         case 'R': o->raw = 1; break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;
@@ -80,6 +108,9 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->err >= 0 && o->err < 1)) usage_error("--error must be in [0, 1)");
     if (!(o->edge >= 0 && o->edge < 1e6)) usage_error("--edge-length must be >= 0");
     if (o->smooth < 0 || o->smooth > 10000) usage_error("--smooth must be in 0..10000");
+    if (!(o->min_angle > 0 && o->min_angle <= 60)) usage_error("--min-angle must be in (0, 60] degrees");
+    if (o->max_nv < 0) usage_error("--max-vertices must be >= 0");
+    if (!(o->size >= 0 && o->size <= 1)) usage_error("--size must be in [0, 1]");
     o->nshapes = argc - optind;
     o->shapes = argv + optind;
     if (o->nshapes < 1) usage_error("expected at least one SHAPE file");
@@ -163,26 +194,59 @@ int main(int argc, char **argv)
     }
     info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
             "largest two-sided Hausdorff distance %.3g, in %s)", M, cp.nb, o.err, hmax, o.shapes[hs]);
-    if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
-    double ma0, q0 = compat_min_angle(&cp, &ma0);
-    info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
-            "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
-         cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
-    /* target edge length: mean boundary edge, relative to each shape's diagonal */
-    double target = 0;
-    if (o.edge > 0) {
-        for (int s = 0; s < N; s++) {
-            double L = 0, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-            for (int i = 0; i < cp.nb; i++) {
-                int j = (i + 1) % cp.nb;
-                L += hypot(cp.X[s][2 * j] - cp.X[s][2 * i], cp.X[s][2 * j + 1] - cp.X[s][2 * i + 1]);
-                for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], cp.X[s][2 * i + d]); hi[d] = fmax(hi[d], cp.X[s][2 * i + d]); }
-            }
-            target += L / cp.nb / hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    struct compat_refine_params pa = {o.min_angle * M_PI / 180, o.size, o.max_nv ? o.max_nv : 10 * cp.nb, 200};
+    int remeshed = 0;
+    struct compat_refine_stats rs;
+    if (o.refine == REFINE_REMESH) {
+        for (int r = 0; r < N && !remeshed; r++) {
+            remeshed = compat_remesh(&cp, r, &pa, &rs);
+            if (remeshed < 0) die("%s", cm_errmsg());
+            if (remeshed)
+                info(1, "remeshed by transfer from %s: %d rounds, %d interior and %d boundary splits, %d flips, "
+                        "%d moves", o.shapes[r], rs.rounds, rs.splits, rs.bsplits, rs.flips, rs.moves);
         }
-        target = o.edge * target / N;
+        if (!remeshed)
+            info(1, "remeshing by transfer left inverted triangles from every reference pose: "
+                    "refining the compatible triangulation instead (--refine refine)");
     }
-    if (compat_improve(&cp, target, o.smooth) < 0) die("%s", cm_errmsg());
+    if (!remeshed) {
+        if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
+        double ma0, q0 = compat_min_angle(&cp, &ma0);
+        info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
+                "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
+             cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
+    }
+    if (!remeshed && o.refine == REFINE_NONE) {
+        /* target edge length: mean boundary edge, relative to each shape's diagonal */
+        double target = 0;
+        if (o.edge > 0) {
+            for (int s = 0; s < N; s++) {
+                double L = 0, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+                for (int i = 0; i < cp.nb; i++) {
+                    int j = (i + 1) % cp.nb;
+                    L += hypot(cp.X[s][2 * j] - cp.X[s][2 * i], cp.X[s][2 * j + 1] - cp.X[s][2 * i + 1]);
+                    for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], cp.X[s][2 * i + d]); hi[d] = fmax(hi[d], cp.X[s][2 * i + d]); }
+                }
+                target += L / cp.nb / hypot(hi[0] - lo[0], hi[1] - lo[1]);
+            }
+            target = o.edge * target / N;
+        }
+        if (compat_improve(&cp, target, o.smooth) < 0) die("%s", cm_errmsg());
+    } else if (!remeshed) {
+        double q1 = compat_min_angle(&cp, NULL);
+        if (compat_refine(&cp, &pa, &rs) < 0) die("%s", cm_errmsg());
+        info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d flips, %d moves; "
+                "min angle %.2f -> %.2f deg%s", rs.rounds, rs.splits, rs.bsplits, rs.flips, rs.moves,
+             q1 * 180 / M_PI, compat_min_angle(&cp, NULL) * 180 / M_PI, rs.kept_input ? " (worse: input kept)" : "");
+    }
+    if (o.refine != REFINE_NONE)
+        info(1, "sharpest outline corner %.2f deg", compat_sharpest_corner(&cp) * 180 / M_PI);
+    for (int s = 0; verbose && s < N; s++) {
+        double mn, u10, u20;
+        compat_pose_quality(&cp, s, &mn, &u10, &u20);
+        info(1, "pose %d (%s): worst angle %.2f deg, %.1f%% of triangles under 10 deg, %.1f%% under 20, "
+                "%d vertices, %d triangles", s, o.shapes[s], mn * 180 / M_PI, 100 * u10, 100 * u20, cp.nv, cp.nf);
+    }
     double minarea, q = compat_min_angle(&cp, &minarea);
     if (!(minarea > 0))
         die("compatible triangulation failed: a triangle is inverted or degenerate in some shape");

@@ -1,0 +1,890 @@
+/* compat_refine.c -- see compat_refine.h */
+#include "compat_refine.h"
+#include "cm_error.h"
+#include "predicates2.h"
+#include "topology.h"
+#include "arap_deform2d.h"
+#include "rings.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <stdio.h>
+
+/* ------------------------------------------------------------------ */
+/* per-triangle measures */
+
+/* sine of the smallest angle of (a, b, d) (the smallest angle is at most
+ * 60 degrees, so its sine orders triangles the same way); <= 0 when the
+ * floating-point area is not positive */
+static double sin_min(const double *a, const double *b, const double *d)
+{
+    double e0x = b[0] - a[0], e0y = b[1] - a[1];
+    double e1x = d[0] - b[0], e1y = d[1] - b[1];
+    double e2x = a[0] - d[0], e2y = a[1] - d[1];
+    double l0 = e0x * e0x + e0y * e0y, l1 = e1x * e1x + e1y * e1y, l2 = e2x * e2x + e2y * e2y;
+    double area2 = e0x * (d[1] - a[1]) - e0y * (d[0] - a[0]);
+    if (!(area2 > 0)) return area2 > 0 ? 0 : -1;
+    /* the two longer edges meet at the smallest angle */
+    double p;
+    if (l0 <= l1 && l0 <= l2) p = l1 * l2;
+    else if (l1 <= l2) p = l0 * l2;
+    else p = l0 * l1;
+    return area2 / sqrt(p);
+}
+
+/* angle at corner o of the triangle (o, u, v) */
+static double corner_angle(const double *o, const double *u, const double *v)
+{
+    double ux = u[0] - o[0], uy = u[1] - o[1], vx = v[0] - o[0], vy = v[1] - o[1];
+    return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
+static int positive(const struct compat *c, int a, int b, int d)
+{
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        if (orient2_sign(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return 0;
+    }
+    return 1;
+}
+
+static double face_sin_min(const struct compat *c, int a, int b, int d)
+{
+    double q = INFINITY;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        q = fmin(q, sin_min(X + 2 * a, X + 2 * b, X + 2 * d));
+    }
+    return q;
+}
+
+void compat_pose_quality(const struct compat *c, int s, double *min_angle, double *under10, double *under20)
+{
+    double mn = INFINITY;
+    int n10 = 0, n20 = 0;
+    const double *X = c->X[s];
+    for (int f = 0; f < c->nf; f++) {
+        const int *F = c->F + 3 * f;
+        double q = INFINITY;
+        for (int k = 0; k < 3; k++)
+            q = fmin(q, corner_angle(X + 2 * F[k], X + 2 * F[(k + 1) % 3], X + 2 * F[(k + 2) % 3]));
+        if (orient2_sign(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) <= 0) q = 0;
+        mn = fmin(mn, q);
+        n10 += q < 10 * M_PI / 180;
+        n20 += q < 20 * M_PI / 180;
+    }
+    if (min_angle) *min_angle = mn;
+    if (under10) *under10 = c->nf ? (double)n10 / c->nf : 0;
+    if (under20) *under20 = c->nf ? (double)n20 / c->nf : 0;
+}
+
+/* opening of every boundary corner in every shape: open[s*nv+v] (2 pi for
+ * interior vertices) and the number of triangles at v: cnt[v] */
+static void corner_openings(const struct compat *c, const unsigned char *bnd, double *open, int *cnt)
+{
+    int nv = c->nv;
+    memset(cnt, 0, nv * sizeof *cnt);
+    for (int s = 0; s < c->N; s++)
+        for (int v = 0; v < nv; v++) open[(size_t)s * nv + v] = bnd[v] ? 0 : 2 * M_PI;
+    for (int f = 0; f < c->nf; f++) {
+        const int *F = c->F + 3 * f;
+        for (int k = 0; k < 3; k++) {
+            int v = F[k];
+            cnt[v]++;
+            if (!bnd[v]) continue;
+            for (int s = 0; s < c->N; s++) {
+                const double *X = c->X[s];
+                open[(size_t)s * nv + v] += corner_angle(X + 2 * v, X + 2 * F[(k + 1) % 3], X + 2 * F[(k + 2) % 3]);
+            }
+        }
+    }
+}
+
+double compat_sharpest_corner(const struct compat *c)
+{
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return 0;
+    unsigned char *bnd = calloc(c->nv, 1);
+    double *open = malloc((size_t)c->N * c->nv * sizeof *open);
+    int *cnt = malloc(c->nv * sizeof *cnt);
+    double mn = M_PI;
+    if (bnd && open && cnt) {
+        for (int e = 0; e < t.ne; e++)
+            if (t.EFn[e] == 1) bnd[t.E[2 * e]] = bnd[t.E[2 * e + 1]] = 1;
+        corner_openings(c, bnd, open, cnt);
+        for (int s = 0; s < c->N; s++)
+            for (int v = 0; v < c->nv; v++)
+                if (bnd[v]) mn = fmin(mn, open[(size_t)s * c->nv + v]);
+    } else mn = 0;
+    free(bnd); free(open); free(cnt);
+    topology_free(&t);
+    return mn;
+}
+
+/* ------------------------------------------------------------------ */
+/* storage */
+
+struct work {
+    struct compat *c;
+    double *diag;         /* N bounding-box diagonals of the boundary */
+    unsigned char *bnd;   /* cap: 1 for boundary (fixed) vertices */
+    int *bsucc;           /* cap: next boundary vertex along the outline */
+    int vcap;
+};
+
+static int grow_v(struct work *w, int nv)
+{
+    struct compat *c = w->c;
+    if (nv > c->cap) {
+        int cap = c->cap ? c->cap : 64;
+        while (cap < nv) cap *= 2;
+        for (int s = 0; s < c->N; s++) {
+            double *x = realloc(c->X[s], 2 * (size_t)cap * sizeof *x);
+            if (!x) return cm_seterr("out of memory");
+            c->X[s] = x;
+        }
+        c->cap = cap;
+    }
+    if (nv > w->vcap) {
+        int cap = w->vcap ? w->vcap : 64;
+        while (cap < nv) cap *= 2;
+        unsigned char *b = realloc(w->bnd, cap);
+        if (!b) return cm_seterr("out of memory");
+        w->bnd = b;
+        int *n = realloc(w->bsucc, cap * sizeof *n);
+        if (!n) return cm_seterr("out of memory");
+        w->bsucc = n;
+        w->vcap = cap;
+    }
+    return 0;
+}
+
+static int grow_f(struct compat *c, int nf)
+{
+    if (nf <= c->fcap) return 0;
+    int cap = c->fcap ? c->fcap : 256;
+    while (cap < nf) cap *= 2;
+    int *F = realloc(c->F, 3 * (size_t)cap * sizeof *F);
+    if (!F) return cm_seterr("out of memory");
+    c->F = F; c->fcap = cap;
+    return 0;
+}
+
+static void set_face(struct compat *c, int f, int a, int b, int d)
+{
+    c->F[3 * f] = a; c->F[3 * f + 1] = b; c->F[3 * f + 2] = d;
+}
+
+static int third(const int *F, int f, int a, int b)
+{
+    for (int k = 0; k < 3; k++)
+        if (F[3 * f + k] != a && F[3 * f + k] != b) return F[3 * f + k];
+    return -1;
+}
+
+/* does face f run a -> b? */
+static int runs(const int *F, int f, int a, int b)
+{
+    for (int k = 0; k < 3; k++)
+        if (F[3 * f + k] == a && F[3 * f + (k + 1) % 3] == b) return 1;
+    return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* flips */
+
+static int flip_pass(struct compat *c)
+{
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    unsigned char *touched = calloc(c->nf, 1);
+    if (!touched) { topology_free(&t); return cm_seterr("out of memory"); }
+    int flips = 0;
+    for (int e = 0; e < t.ne; e++) {
+        if (t.EFn[e] != 2) continue;
+        int f1 = t.EF[2 * e], f2 = t.EF[2 * e + 1];
+        if (touched[f1] || touched[f2]) continue;
+        int a = t.E[2 * e], b = t.E[2 * e + 1];
+        if (!runs(c->F, f1, a, b)) { int x = f1; f1 = f2; f2 = x; }
+        int p = third(c->F, f1, a, b), q = third(c->F, f2, a, b);
+        if (p == q || topology_edge(&t, p, q) >= 0) continue;
+        double old = fmin(face_sin_min(c, a, b, p), face_sin_min(c, b, a, q));
+        double nw = fmin(face_sin_min(c, a, q, p), face_sin_min(c, b, p, q));
+        if (!(nw > old * (1 + 1e-9) + 1e-15)) continue;
+        if (!positive(c, a, q, p) || !positive(c, b, p, q)) continue;
+        set_face(c, f1, a, q, p);
+        set_face(c, f2, b, p, q);
+        touched[f1] = touched[f2] = 1;
+        flips++;
+    }
+    free(touched);
+    topology_free(&t);
+    return flips;
+}
+
+/* ------------------------------------------------------------------ */
+/* smoothing */
+
+/* smallest sin_min of v's star in shape s with v at p; -1 if a triangle is
+ * not positive (exact) */
+static double star_quality(const struct compat *c, const struct topology *t, int s, int v, const double *p)
+{
+    const double *X = c->X[s];
+    double q = INFINITY;
+    for (int k = t->VFs[v]; k < t->VFs[v + 1]; k++) {
+        const int *F = c->F + 3 * t->VF[k];
+        const double *P[3];
+        for (int j = 0; j < 3; j++) P[j] = F[j] == v ? p : X + 2 * F[j];
+        double x = sin_min(P[0], P[1], P[2]);
+        /* a sine above 1e-9 cannot come from a wrongly signed area */
+        if (x <= 0 || (x < 1e-9 && orient2_sign(P[0], P[1], P[2]) <= 0)) return -1;
+        q = fmin(q, x);
+    }
+    return q;
+}
+
+static int smooth_pass(struct compat *c, const struct topology *t, const unsigned char *bnd)
+{
+    int moves = 0;
+    for (int s = 0; s < c->N; s++) {
+        double *X = c->X[s];
+        for (int v = 0; v < c->nv; v++) {
+            if (bnd[v] || t->VFs[v + 1] == t->VFs[v]) continue;
+            double old = star_quality(c, t, s, v, X + 2 * v);
+            /* candidates: mean of the equilateral apexes, neighbour centroid */
+            double cand[6][2], ix = 0, iy = 0, gx = 0, gy = 0;
+            int nfv = t->VFs[v + 1] - t->VFs[v];
+            for (int k = t->VFs[v]; k < t->VFs[v + 1]; k++) {
+                const int *F = c->F + 3 * t->VF[k];
+                int j = F[0] == v ? 0 : F[1] == v ? 1 : 2;
+                const double *a = X + 2 * F[(j + 1) % 3], *b = X + 2 * F[(j + 2) % 3];
+                double dx = b[0] - a[0], dy = b[1] - a[1];
+                ix += 0.5 * (a[0] + b[0]) - dy * 0.8660254037844386;
+                iy += 0.5 * (a[1] + b[1]) + dx * 0.8660254037844386;
+            }
+            int nn = t->VVs[v + 1] - t->VVs[v];
+            for (int k = t->VVs[v]; k < t->VVs[v + 1]; k++) { gx += X[2 * t->VV[k]]; gy += X[2 * t->VV[k] + 1]; }
+            ix /= nfv; iy /= nfv; gx /= nn; gy /= nn;
+            double ox = X[2 * v], oy = X[2 * v + 1];
+            cand[0][0] = ix; cand[0][1] = iy;
+            cand[1][0] = gx; cand[1][1] = gy;
+            cand[2][0] = 0.5 * (ix + ox); cand[2][1] = 0.5 * (iy + oy);
+            cand[3][0] = 0.5 * (gx + ox); cand[3][1] = 0.5 * (gy + oy);
+            cand[4][0] = 0.8 * ox + 0.2 * ix; cand[4][1] = 0.8 * oy + 0.2 * iy;
+            cand[5][0] = 0.5 * (ix + gx); cand[5][1] = 0.5 * (iy + gy);
+            int best = -1;
+            double bq = old;
+            for (int k = 0; k < 6; k++) {
+                double q = star_quality(c, t, s, v, cand[k]);
+                if (q > bq * (1 + 1e-9) + 1e-15) { bq = q; best = k; }
+            }
+            if (best >= 0) { X[2 * v] = cand[best][0]; X[2 * v + 1] = cand[best][1]; moves++; }
+        }
+    }
+    return moves;
+}
+
+/* ------------------------------------------------------------------ */
+/* splits */
+
+/* worst ratio (angle / what the corner allows) of face f over the shapes;
+ * *ws gets the shape where it is worst */
+static double face_ratio(const struct compat *c, int f, double goal, const double *open, const int *cnt,
+                         int *ws)
+{
+    const int *F = c->F + 3 * f;
+    double r = INFINITY;
+    int nv = c->nv;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        for (int k = 0; k < 3; k++) {
+            int v = F[k];
+            double an = corner_angle(X + 2 * v, X + 2 * F[(k + 1) % 3], X + 2 * F[(k + 2) % 3]);
+            double o = open[(size_t)s * nv + v], req = goal;
+            if (o < 2 * goal) req = fmin(goal, o / cnt[v]);
+            double x = an / req;
+            if (x < r) { r = x; *ws = s; }
+        }
+    }
+    return r;
+}
+
+struct bad { double r; int f, s; };
+
+static int cmp_bad(const void *x, const void *y)
+{
+    const struct bad *a = x, *b = y;
+    if (a->r != b->r) return a->r < b->r ? -1 : 1;
+    return a->f - b->f;
+}
+
+/* bisect edge a-b (faces f1 = (a, b, p) and, if f2 >= 0, f2 = (b, a, q));
+ * returns 1 if done, 0 if a new triangle would not be positive, -1 on
+ * out of memory */
+static int bisect(struct work *w, int f1, int f2, int a, int b)
+{
+    struct compat *c = w->c;
+    if (grow_v(w, c->nv + 1) < 0 || grow_f(c, c->nf + 2) < 0) return -1;
+    int m = c->nv;
+    for (int s = 0; s < c->N; s++) {
+        double *X = c->X[s];
+        X[2 * m] = 0.5 * (X[2 * a] + X[2 * b]);
+        X[2 * m + 1] = 0.5 * (X[2 * a + 1] + X[2 * b + 1]);
+    }
+    int p = third(c->F, f1, a, b), q = f2 >= 0 ? third(c->F, f2, a, b) : -1;
+    if (!positive(c, a, m, p) || !positive(c, m, b, p)) return 0;
+    if (f2 >= 0 && (!positive(c, b, m, q) || !positive(c, m, a, q))) return 0;
+    c->nv++;
+    w->bnd[m] = f2 < 0;
+    w->bsucc[m] = -1;
+    if (f2 < 0) { w->bsucc[m] = b; w->bsucc[a] = m; }
+    set_face(c, f1, a, m, p);
+    set_face(c, c->nf++, m, b, p);
+    if (f2 >= 0) {
+        set_face(c, f2, b, m, q);
+        set_face(c, c->nf++, m, a, q);
+    }
+    return 1;
+}
+
+static int split_pass(struct work *w, const struct compat_refine_params *pa, int *nsplit, int *nbsplit)
+{
+    double goal = pa->goal;
+    int max_nv = pa->max_nv;
+    struct compat *c = w->c;
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    int nf0 = c->nf, rc = 0;
+    double *open = malloc((size_t)c->N * c->nv * sizeof *open);
+    int *cnt = malloc(c->nv * sizeof *cnt);
+    struct bad *B = malloc(nf0 * sizeof *B);
+    unsigned char *touched = calloc(nf0, 1);
+    if (!open || !cnt || !B || !touched) { rc = cm_seterr("out of memory"); goto done; }
+    corner_openings(c, w->bnd, open, cnt);
+    int nb = 0;
+    for (int f = 0; f < nf0; f++) {
+        int s = 0;
+        double r = face_ratio(c, f, goal, open, cnt, &s);
+        if (r < 1 - 1e-9) { B[nb].r = r; B[nb].f = f; B[nb].s = s; nb++; continue; }
+        if (pa->size <= 0) continue;
+        /* too large: after every triangle below the goal, largest first */
+        const int *F = c->F + 3 * f;
+        double big = 0;
+        for (int t2 = 0; t2 < c->N; t2++)
+            for (int k = 0; k < 3; k++) {
+                const double *u = c->X[t2] + 2 * F[k], *v = c->X[t2] + 2 * F[(k + 1) % 3];
+                double l = hypot(v[0] - u[0], v[1] - u[1]) / (pa->size * w->diag[t2]);
+                if (l > big) { big = l; s = t2; }
+            }
+        if (big > 1) { B[nb].r = 1 + 1 / big; B[nb].f = f; B[nb].s = s; nb++; }
+    }
+    qsort(B, nb, sizeof *B, cmp_bad);
+    for (int i = 0; i < nb && c->nv < max_nv; i++) {
+        int f = B[i].f, s = B[i].s;
+        if (touched[f]) continue;
+        /* longest edge of f in shape s */
+        const int *F = c->F + 3 * f;
+        const double *X = c->X[s];
+        int kbest = 0;
+        double lbest = -1;
+        for (int k = 0; k < 3; k++) {
+            const double *u = X + 2 * F[k], *v = X + 2 * F[(k + 1) % 3];
+            double l = (v[0] - u[0]) * (v[0] - u[0]) + (v[1] - u[1]) * (v[1] - u[1]);
+            if (l > lbest) { lbest = l; kbest = k; }
+        }
+        int e = t.FE[3 * f + kbest];
+        int a = F[kbest], b = F[(kbest + 1) % 3];
+        int f2 = -1;
+        if (t.EFn[e] == 2) {
+            f2 = t.EF[2 * e] == f ? t.EF[2 * e + 1] : t.EF[2 * e];
+            if (touched[f2]) continue;
+        } else if (t.EFn[e] != 1) continue;
+        int x = bisect(w, f, f2, a, b);
+        if (x < 0) { rc = -1; goto done; }
+        if (x == 0) continue;
+        touched[f] = 1;
+        if (f2 >= 0) { touched[f2] = 1; (*nsplit)++; } else (*nbsplit)++;
+        rc++;
+    }
+done:
+    free(open); free(cnt); free(B); free(touched);
+    topology_free(&t);
+    return rc;
+}
+
+/* boundary first (the old boundary order with the new boundary vertices
+ * after the vertex that precedes them), then the interior */
+static int renumber(struct work *w, int nb0, int nv0)
+{
+    struct compat *c = w->c;
+    int nv = c->nv;
+    int *map = malloc(nv * sizeof *map);
+    double *tmp = malloc(2 * (size_t)nv * sizeof *tmp);
+    if (!map || !tmp) { free(map); free(tmp); return cm_seterr("out of memory"); }
+    for (int v = 0; v < nv; v++) map[v] = -1;
+    int k = 0;
+    for (int i = 0; i < nb0; i++) {
+        map[i] = k++;
+        for (int v = w->bsucc[i]; v >= nv0 && map[v] < 0; v = w->bsucc[v]) map[v] = k++;
+    }
+    int nb = k;
+    for (int v = 0; v < nv; v++)
+        if (map[v] < 0) map[v] = k++;
+    for (int s = 0; s < c->N; s++) {
+        double *X = c->X[s];
+        for (int v = 0; v < nv; v++) { tmp[2 * map[v]] = X[2 * v]; tmp[2 * map[v] + 1] = X[2 * v + 1]; }
+        memcpy(X, tmp, 2 * (size_t)nv * sizeof *X);
+    }
+    for (int f = 0; f < 3 * c->nf; f++) c->F[f] = map[c->F[f]];
+    c->nrefine += (nv - nv0) - (nb - nb0);
+    c->nb = nb;
+    free(map); free(tmp);
+    return 0;
+}
+
+/* ------------------------------------------------------------------ */
+
+struct snapshot { int nv, nf, nb, nrefine; double **X; int *F; };
+
+static int snap_take(const struct compat *c, struct snapshot *p)
+{
+    p->nv = c->nv; p->nf = c->nf; p->nb = c->nb; p->nrefine = c->nrefine;
+    p->X = calloc(c->N, sizeof *p->X);
+    p->F = malloc(3 * (size_t)c->nf * sizeof *p->F);
+    if (!p->X || !p->F) return cm_seterr("out of memory");
+    memcpy(p->F, c->F, 3 * (size_t)c->nf * sizeof *p->F);
+    for (int s = 0; s < c->N; s++) {
+        p->X[s] = malloc(2 * (size_t)c->nv * sizeof **p->X);
+        if (!p->X[s]) return cm_seterr("out of memory");
+        memcpy(p->X[s], c->X[s], 2 * (size_t)c->nv * sizeof **p->X);
+    }
+    return 0;
+}
+
+static void snap_restore(struct compat *c, struct snapshot *p)
+{
+    c->nv = p->nv; c->nf = p->nf; c->nb = p->nb; c->nrefine = p->nrefine;
+    memcpy(c->F, p->F, 3 * (size_t)c->nf * sizeof *p->F);
+    for (int s = 0; s < c->N; s++) memcpy(c->X[s], p->X[s], 2 * (size_t)c->nv * sizeof **p->X);
+}
+
+static void snap_free(int N, struct snapshot *p)
+{
+    if (p->X) for (int s = 0; s < N; s++) free(p->X[s]);
+    free(p->X); free(p->F);
+}
+
+static int smooth_sweeps(struct compat *c, const unsigned char *bnd, int sweeps)
+{
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    int moves = 0;
+    for (int k = 0; k < sweeps; k++) {
+        int m = smooth_pass(c, &t, bnd);
+        moves += m;
+        if (!m) break;
+    }
+    topology_free(&t);
+    return moves;
+}
+
+/* quality of shape s for acceptance: smallest sin_min and the number of
+ * triangles whose smallest angle is below the goal */
+static void shape_score(const struct compat *c, int s, double sgoal, double *mn, int *nbad)
+{
+    const double *X = c->X[s];
+    *mn = INFINITY; *nbad = 0;
+    for (int f = 0; f < c->nf; f++) {
+        const int *F = c->F + 3 * f;
+        double q = sin_min(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]);
+        *mn = fmin(*mn, q);
+        *nbad += q < sgoal;
+    }
+}
+
+/* Transfer: the shape whose triangles are best (reference r) is carried to
+ * every other shape s by as-rigid-as-possible deformation with all
+ * boundary vertices as handles at their places in s (arap_deform2d); the
+ * interior vertices of s then walk to those targets in sweeps, a vertex
+ * moving (fully, or half-way) only where its star stays positive (exact).
+ * Shape s keeps the result if its smallest angle grows or fewer triangles
+ * stay below the goal.  Returns the number of shapes changed, -1 on error. */
+static int transfer(struct compat *c, const unsigned char *bnd, double goal, int *moves)
+{
+    int N = c->N, nv = c->nv, changed = 0;
+    if (N < 2) return 0;
+    double sg = sin(goal), best = -INFINITY;
+    int r = 0;
+    for (int s = 0; s < N; s++) {
+        double mn; int nbad;
+        shape_score(c, s, sg, &mn, &nbad);
+        double score = mn - nbad;   /* fewest bad triangles, then the best worst one */
+        if (score > best) { best = score; r = s; }
+    }
+    int nh = 0;
+    int *H = malloc(nv * sizeof *H);
+    double *V = malloc(3 * (size_t)nv * sizeof *V), *Y = malloc(3 * (size_t)nv * sizeof *Y);
+    double *P = malloc(2 * (size_t)nv * sizeof *P), *keep = malloc(2 * (size_t)nv * sizeof *keep);
+    struct topology t;
+    int rc = -1, topo = 0;
+    struct arap_deform2d *D = NULL;
+    if (!H || !V || !Y || !P || !keep) { cm_seterr("out of memory"); goto out; }
+    for (int v = 0; v < nv; v++) {
+        if (bnd[v]) H[nh++] = v;
+        V[3 * v] = c->X[r][2 * v]; V[3 * v + 1] = c->X[r][2 * v + 1]; V[3 * v + 2] = 0;
+    }
+    if (nh == nv) { rc = 0; goto out; }
+    D = arap_deform2d_new(V, nv, c->F, c->nf, H, nh);
+    if (!D) goto out;
+    if (topology_build(c->F, c->nf, nv, &t) < 0) goto out;
+    topo = 1;
+    for (int s = 0; s < N; s++) {
+        if (s == r) continue;
+        double *X = c->X[s];
+        for (int h = 0; h < nh; h++) { P[2 * h] = X[2 * H[h]]; P[2 * h + 1] = X[2 * H[h] + 1]; }
+        if (arap_deform2d_solve(D, P, Y) < 0) goto out;
+        double mn0, mn1; int nb0, nb1;
+        shape_score(c, s, sg, &mn0, &nb0);
+        memcpy(keep, X, 2 * (size_t)nv * sizeof *X);
+        int mv = 0;
+        for (int sweep = 0; sweep < 12; sweep++) {
+            int m = 0;
+            for (int v = 0; v < nv; v++) {
+                if (bnd[v] || t.VFs[v + 1] == t.VFs[v]) continue;
+                double *x = X + 2 * v, *y = Y + 3 * v;
+                if (x[0] == y[0] && x[1] == y[1]) continue;
+                double p[2] = {y[0], y[1]};
+                for (int k = 0; k < 3; k++) {
+                    if (star_quality(c, &t, s, v, p) > 0) { x[0] = p[0]; x[1] = p[1]; m++; break; }
+                    p[0] = 0.5 * (p[0] + x[0]); p[1] = 0.5 * (p[1] + x[1]);
+                }
+            }
+            mv += m;
+            if (!m) break;
+        }
+        shape_score(c, s, sg, &mn1, &nb1);
+        if (mn1 > mn0 || nb1 < nb0) { changed++; *moves += mv; }
+        else memcpy(X, keep, 2 * (size_t)nv * sizeof *X);
+    }
+    rc = changed;
+out:
+    arap_deform2d_free(D);
+    if (topo) topology_free(&t);
+    free(H); free(V); free(Y); free(P); free(keep);
+    return rc;
+}
+
+static int flips_until_done(struct compat *c, int *nflips)
+{
+    for (int k = 0; k < 50; k++) {
+        int x = flip_pass(c);
+        if (x < 0) return -1;
+        *nflips += x;
+        if (!x) break;
+    }
+    return 0;
+}
+
+int compat_refine(struct compat *c, const struct compat_refine_params *pa, struct compat_refine_stats *st)
+{
+    double goal = pa->goal;
+    int rounds = pa->rounds, max_nv = pa->max_nv;
+    struct compat_refine_stats z;
+    if (!st) st = &z;
+    memset(st, 0, sizeof *st);
+    struct snapshot snap;
+    memset(&snap, 0, sizeof snap);
+    double q0 = compat_min_angle(c, NULL);
+    struct work w = {c, NULL, NULL, NULL, 0};
+    int nb0 = c->nb, nv0 = c->nv, rc = -1;
+    w.diag = malloc(c->N * sizeof *w.diag);
+    if (!w.diag) { cm_seterr("out of memory"); goto out; }
+    for (int s = 0; s < c->N; s++) {
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (int v = 0; v < c->nb; v++)
+            for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], c->X[s][2 * v + d]); hi[d] = fmax(hi[d], c->X[s][2 * v + d]); }
+        w.diag[s] = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    }
+    if (snap_take(c, &snap) < 0 || grow_v(&w, c->nv) < 0) goto out;
+    /* boundary flags and successors from the faces */
+    memset(w.bnd, 0, c->nv);
+    for (int v = 0; v < c->nv; v++) w.bsucc[v] = -1;
+    {
+        struct topology t;
+        if (topology_build(c->F, c->nf, c->nv, &t) < 0) goto out;
+        for (int e = 0; e < t.ne; e++) {
+            if (t.EFn[e] != 1) continue;
+            int a = t.E[2 * e], b = t.E[2 * e + 1], f = t.EF[2 * e];
+            if (!runs(c->F, f, a, b)) { int x = a; a = b; b = x; }
+            w.bnd[a] = w.bnd[b] = 1;
+            w.bsucc[a] = b;
+        }
+        topology_free(&t);
+    }
+    for (int r = 0; r < rounds; r++) {
+        st->rounds++;
+        if (flips_until_done(c, &st->flips) < 0) goto out;
+        int m = smooth_sweeps(c, w.bnd, 8);
+        if (m < 0) goto out;
+        st->moves += m;
+        if (transfer(c, w.bnd, goal, &st->moves) < 0) goto out;
+        m = smooth_sweeps(c, w.bnd, 8);
+        if (m < 0) goto out;
+        st->moves += m;
+        if (flips_until_done(c, &st->flips) < 0) goto out;
+        if (c->nv >= max_nv) break;
+        int n = split_pass(&w, pa, &st->splits, &st->bsplits);
+        if (n < 0) goto out;
+        if (n == 0) break;
+    }
+    /* final polish */
+    for (int k = 0; k < 4; k++) {
+        int m = smooth_sweeps(c, w.bnd, 8);
+        if (m < 0) goto out;
+        st->moves += m;
+        int f0 = st->flips;
+        if (flips_until_done(c, &st->flips) < 0) goto out;
+        if (st->flips == f0 && m == 0) break;
+    }
+    if (renumber(&w, nb0, nv0) < 0) goto out;
+    double minarea, q1 = compat_min_angle(c, &minarea);
+    if (!(minarea > 0) || q1 < q0) {
+        snap_restore(c, &snap);
+        st->kept_input = 1;
+    }
+    rc = 0;
+out:
+    snap_free(c->N, &snap);
+    free(w.bnd); free(w.bsucc); free(w.diag);
+    return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* remeshing by transfer */
+
+/* smallest normalized signed area of v's star in shape s with v at p */
+static double star_signed(const struct compat *c, const struct topology *t, int s, int v, const double *p)
+{
+    const double *X = c->X[s];
+    double q = INFINITY;
+    for (int k = t->VFs[v]; k < t->VFs[v + 1]; k++) {
+        const int *F = c->F + 3 * t->VF[k];
+        const double *P[3];
+        for (int j = 0; j < 3; j++) P[j] = F[j] == v ? p : X + 2 * F[j];
+        double l = 0;
+        for (int j = 0; j < 3; j++) {
+            double dx = P[(j + 1) % 3][0] - P[j][0], dy = P[(j + 1) % 3][1] - P[j][1];
+            l += dx * dx + dy * dy;
+        }
+        double a = orient2_sign(P[0], P[1], P[2]) > 0
+                   ? fmax(orient2(P[0], P[1], P[2]), 1e-300) : fmin(orient2(P[0], P[1], P[2]), 0);
+        q = fmin(q, a / l);
+    }
+    return q;
+}
+
+/* Move interior vertices of shape s until no triangle is inverted: a vertex
+ * of an inverted or degenerate triangle goes to the best of a few
+ * candidates (neighbour centroid, equilateral apexes, a pattern search)
+ * by the smallest normalized signed area of its star.  Returns the number
+ * of triangles still not positive (exact). */
+static int untangle(struct compat *c, const struct topology *t, int s, const unsigned char *bnd)
+{
+    double *X = c->X[s];
+    int bad = 0;
+    for (int sweep = 0; sweep < 60; sweep++) {
+        bad = 0;
+        for (int f = 0; f < c->nf; f++) {
+            const int *F = c->F + 3 * f;
+            if (orient2_sign(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) > 0) continue;
+            bad++;
+            for (int j = 0; j < 3; j++) {
+                int v = F[j];
+                if (bnd[v]) continue;
+                double old = star_signed(c, t, s, v, X + 2 * v);
+                double gx = 0, gy = 0, ix = 0, iy = 0, L = 0;
+                int nn = t->VVs[v + 1] - t->VVs[v], nfv = t->VFs[v + 1] - t->VFs[v];
+                for (int k = t->VVs[v]; k < t->VVs[v + 1]; k++) {
+                    const double *u = X + 2 * t->VV[k];
+                    gx += u[0]; gy += u[1];
+                    L += hypot(u[0] - X[2 * v], u[1] - X[2 * v + 1]);
+                }
+                for (int k = t->VFs[v]; k < t->VFs[v + 1]; k++) {
+                    const int *G = c->F + 3 * t->VF[k];
+                    int i = G[0] == v ? 0 : G[1] == v ? 1 : 2;
+                    const double *a = X + 2 * G[(i + 1) % 3], *b = X + 2 * G[(i + 2) % 3];
+                    ix += 0.5 * (a[0] + b[0]) - (b[1] - a[1]) * 0.8660254037844386;
+                    iy += 0.5 * (a[1] + b[1]) + (b[0] - a[0]) * 0.8660254037844386;
+                }
+                double best[2] = {X[2 * v], X[2 * v + 1]}, bq = old;
+                double cand[2][2] = {{gx / nn, gy / nn}, {ix / nfv, iy / nfv}};
+                for (int k = 0; k < 2; k++) {
+                    double q = star_signed(c, t, s, v, cand[k]);
+                    if (q > bq) { bq = q; best[0] = cand[k][0]; best[1] = cand[k][1]; }
+                }
+                int it = 0;
+                for (double h = 0.25 * L / nn; h > 1e-6 * L / nn && it < 60; h *= 0.5, it++) {
+                    int improved = 0;
+                    for (int d = 0; d < 8; d++) {
+                        double p[2] = {best[0] + h * cos(d * M_PI / 4), best[1] + h * sin(d * M_PI / 4)};
+                        double q = star_signed(c, t, s, v, p);
+                        if (q > bq) { bq = q; best[0] = p[0]; best[1] = p[1]; improved = 1; }
+                    }
+                    if (improved) h *= 2;
+                }
+                X[2 * v] = best[0]; X[2 * v + 1] = best[1];
+            }
+        }
+        if (!bad) break;
+    }
+    return bad;
+}
+
+int compat_remesh(struct compat *c, int ref, const struct compat_refine_params *pa,
+                  struct compat_refine_stats *st)
+{
+    int N = c->N, nb = c->nb, rc = -1;
+    struct compat c1, M;
+    memset(&c1, 0, sizeof c1);
+    memset(&M, 0, sizeof M);
+    struct topology t;
+    int topo = 0;
+    struct arap_deform2d *D = NULL;
+    double *V = NULL, *Y = NULL, *P = NULL, *tpar = NULL;
+    int *H = NULL, *seg = NULL;
+    unsigned char *bnd = NULL;
+    /* 1. the reference shape alone: triangulated and refined */
+    c1.N = 1;
+    c1.X = calloc(1, sizeof *c1.X);
+    if (!c1.X) { cm_seterr("out of memory"); goto out; }
+    c1.X[0] = malloc(2 * (size_t)nb * sizeof **c1.X);
+    if (!c1.X[0]) { cm_seterr("out of memory"); goto out; }
+    memcpy(c1.X[0], c->X[ref], 2 * (size_t)nb * sizeof **c1.X);
+    c1.nv = c1.nb = c1.cap = nb;
+    if (compat_triangulate(&c1) < 0) goto out;
+    if (compat_refine(&c1, pa, st) < 0) goto out;
+    int nb1 = c1.nb;
+    /* 2. the new boundary vertices: parameter along their input segment */
+    seg = malloc(nb1 * sizeof *seg);
+    tpar = malloc(nb1 * sizeof *tpar);
+    if (!seg || !tpar) { cm_seterr("out of memory"); goto out; }
+    const double *R = c->X[ref];
+    for (int k = 0, cur = -1; k < nb1; k++) {
+        const double *x = c1.X[0] + 2 * k;
+        if (cur + 1 < nb && x[0] == R[2 * (cur + 1)] && x[1] == R[2 * (cur + 1) + 1]) {
+            cur++; seg[k] = cur; tpar[k] = 0;
+            continue;
+        }
+        if (cur < 0) { cm_seterr("internal: boundary order lost in remeshing"); goto out; }
+        const double *a = R + 2 * cur, *b = R + 2 * ((cur + 1) % nb);
+        seg[k] = cur;
+        tpar[k] = hypot(x[0] - a[0], x[1] - a[1]) / hypot(b[0] - a[0], b[1] - a[1]);
+    }
+    /* 3. a triangle of three boundary vertices that is not positive in
+     * every shape (a corner that is convex in ref and reflex elsewhere)
+     * cannot be fixed by moving interior vertices: its diagonals are
+     * bisected, giving interior vertices that can be placed per shape */
+    {
+        double *BP = malloc(2 * (size_t)N * nb1 * sizeof *BP);
+        struct work w1 = {&c1, NULL, NULL, NULL, 0};
+        if (!BP || grow_v(&w1, c1.nv) < 0) { free(BP); free(w1.bnd); free(w1.bsucc); cm_seterr("out of memory"); goto out; }
+        for (int s = 0; s < N; s++)
+            for (int k = 0; k < nb1; k++) {
+                const double *S = c->X[s], *a = S + 2 * seg[k], *b = S + 2 * ((seg[k] + 1) % nb);
+                BP[2 * ((size_t)s * nb1 + k)] = tpar[k] == 0 ? a[0] : a[0] + tpar[k] * (b[0] - a[0]);
+                BP[2 * ((size_t)s * nb1 + k) + 1] = tpar[k] == 0 ? a[1] : a[1] + tpar[k] * (b[1] - a[1]);
+            }
+        for (int v = 0; v < c1.nv; v++) { w1.bnd[v] = v < nb1; w1.bsucc[v] = -1; }
+        int err = 0;
+        for (int guard = 0; guard < 4 * nb1 && !err; guard++) {
+            int fa = -1, ea = -1, eb = -1;
+            for (int f = 0; f < c1.nf && fa < 0; f++) {
+                const int *F = c1.F + 3 * f;
+                if (F[0] >= nb1 || F[1] >= nb1 || F[2] >= nb1) continue;
+                int ok = 1;
+                for (int s = 0; s < N && ok; s++) {
+                    const double *B = BP + 2 * (size_t)s * nb1;
+                    ok = orient2_sign(B + 2 * F[0], B + 2 * F[1], B + 2 * F[2]) > 0;
+                }
+                if (ok) continue;
+                for (int k = 0; k < 3 && fa < 0; k++) {
+                    int a = F[k], b = F[(k + 1) % 3];
+                    if ((a + 1) % nb1 != b) { fa = f; ea = a; eb = b; }
+                }
+            }
+            if (fa < 0) break;
+            struct topology t1;
+            if (topology_build(c1.F, c1.nf, c1.nv, &t1) < 0) { err = 1; break; }
+            int e = topology_edge(&t1, ea, eb);
+            int f2 = e >= 0 && t1.EFn[e] == 2 ? (t1.EF[2 * e] == fa ? t1.EF[2 * e + 1] : t1.EF[2 * e]) : -1;
+            topology_free(&t1);
+            if (f2 < 0 || bisect(&w1, fa, f2, ea, eb) <= 0) err = 1;
+        }
+        free(BP); free(w1.bnd); free(w1.bsucc);
+        if (err) { rc = 0; goto out; }
+    }
+    int nv = c1.nv;
+    /* 4. every shape: boundary on its own outline, interior by ARAP */
+    M.N = N; M.nv = nv; M.nb = nb1; M.nf = c1.nf; M.cap = nv; M.fcap = c1.nf;
+    M.X = calloc(N, sizeof *M.X);
+    M.F = malloc(3 * (size_t)c1.nf * sizeof *M.F);
+    H = malloc(nb1 * sizeof *H);
+    V = malloc(3 * (size_t)nv * sizeof *V);
+    Y = malloc(3 * (size_t)nv * sizeof *Y);
+    P = malloc(2 * (size_t)nb1 * sizeof *P);
+    bnd = calloc(nv, 1);
+    if (!M.X || !M.F || !H || !V || !Y || !P || !bnd) { cm_seterr("out of memory"); goto out; }
+    memcpy(M.F, c1.F, 3 * (size_t)c1.nf * sizeof *M.F);
+    for (int v = 0; v < nv; v++) {
+        V[3 * v] = c1.X[0][2 * v]; V[3 * v + 1] = c1.X[0][2 * v + 1]; V[3 * v + 2] = 0;
+    }
+    for (int k = 0; k < nb1; k++) { H[k] = k; bnd[k] = 1; }
+    D = arap_deform2d_new(V, nv, c1.F, c1.nf, H, nb1);
+    if (!D) goto out;
+    if (topology_build(M.F, M.nf, nv, &t) < 0) goto out;
+    topo = 1;
+    int left = 0;
+    for (int s = 0; s < N; s++) {
+        M.X[s] = malloc(2 * (size_t)nv * sizeof **M.X);
+        if (!M.X[s]) { cm_seterr("out of memory"); goto out; }
+        if (s == ref) { memcpy(M.X[s], c1.X[0], 2 * (size_t)nv * sizeof **M.X); continue; }
+        const double *S = c->X[s];
+        for (int k = 0; k < nb1; k++) {
+            const double *a = S + 2 * seg[k], *b = S + 2 * ((seg[k] + 1) % nb);
+            double x = tpar[k] == 0 ? a[0] : a[0] + tpar[k] * (b[0] - a[0]);
+            double y = tpar[k] == 0 ? a[1] : a[1] + tpar[k] * (b[1] - a[1]);
+            P[2 * k] = x; P[2 * k + 1] = y;
+        }
+        if (arap_deform2d_solve(D, P, Y) < 0) goto out;
+        for (int v = 0; v < nv; v++) {
+            M.X[s][2 * v] = v < nb1 ? P[2 * v] : Y[3 * v];
+            M.X[s][2 * v + 1] = v < nb1 ? P[2 * v + 1] : Y[3 * v + 1];
+        }
+        int l = untangle(&M, &t, s, bnd);
+        if (getenv("CQ_DBG")) fprintf(stderr, "  ref %d pose %d: %d left inverted\n", ref, s, l);
+        left += l;
+    }
+    if (left) { rc = 0; goto out; }
+    /* 5. all shapes: compatible refinement */
+    if (getenv("CQ_DBG")) { for (int s = 0; s < N; s++) { double mn, u10, u20; compat_pose_quality(&M, s, &mn, &u10, &u20); fprintf(stderr, "  transfer ref %d pose %d: %.2f %.3f %.3f nv %d\n", ref, s, mn * 180 / M_PI, u10, u20, M.nv); } }
+    struct compat_refine_params p2 = *pa;
+    if (getenv("CQ_R2")) p2.rounds = atoi(getenv("CQ_R2"));
+    p2.size = 0;
+    if (compat_refine(&M, &p2, st) < 0) goto out;
+    M.nsteiner = 0;
+    M.nrefine = M.nv - M.nb;
+    M.nm = c->nm; M.B = c->B; M.split_mode = c->split_mode;
+    memcpy(M.stage_count, c->stage_count, sizeof M.stage_count);
+    c->B = NULL;
+    compat_free(c);
+    *c = M;
+    memset(&M, 0, sizeof M);
+    rc = 1;
+out:
+    if (topo) topology_free(&t);
+    arap_deform2d_free(D);
+    compat_free(&c1);
+    if (M.X) compat_free(&M);
+    free(V); free(Y); free(P); free(H); free(seg); free(tpar); free(bnd);
+    return rc;
+}

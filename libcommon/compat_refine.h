@@ -1,0 +1,105 @@
+/* compat_refine.h -- quality refinement of an N-way compatible
+ * triangulation (Surazhsky and Gotsman, "High quality compatible
+ * triangulations", Engineering with Computers 20, 2004): Steiner points
+ * inserted at corresponding positions in all N shapes, compatible edge
+ * flips and per-shape smoothing, until every angle of every triangle in
+ * every shape reaches a goal (or nothing helps any more).
+ *
+ * One round:
+ *   flips      an interior edge is flipped if the flipped pair is
+ *              positively oriented in all N shapes (exact orientation
+ *              predicate) and its smallest angle over the shapes is larger.
+ *   smoothing  each interior vertex is moved, shape by shape, to the best
+ *              of a few candidate positions (mean of the points that make
+ *              each incident triangle equilateral on its opposite edge,
+ *              the centroid of the neighbours, halfway steps): kept only if
+ *              every incident triangle stays positive (exact) and the
+ *              smallest angle of the vertex's star grows.  A shape's
+ *              positions never depend on another shape's, so each shape is
+ *              smoothed on its own.
+ *   splits     each triangle below the goal, worst first, has its longest
+ *              edge (in the shape where the triangle is worst) bisected in
+ *              all N shapes (Rivara); the split is kept only if the new
+ *              triangles are positive in every shape.  Boundary edges are
+ *              split too: the new vertex lies on the outline segment in
+ *              every shape, so the outline is unchanged.
+ * Boundary vertices never move.  Angles at a boundary corner whose
+ * opening is below twice the goal count as good when they are all the
+ * corner can give (its opening divided by its triangle count).
+ * Deterministic: no randomness, fixed visiting order.
+ */
+#ifndef CM_COMPAT_REFINE_H
+#define CM_COMPAT_REFINE_H
+#include "compat_tri.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct compat_refine_stats {
+    int rounds;        /* rounds run */
+    int splits;        /* interior edges bisected */
+    int bsplits;       /* boundary edges bisected */
+    int flips;         /* compatible flips */
+    int moves;         /* accepted smoothing moves (vertex x shape) */
+    int kept_input;    /* 1 if the refined mesh was worse than the input and
+                          the input was kept */
+};
+
+struct compat_refine_params {
+    double goal;       /* target smallest angle, radians (e.g. 20 degrees) */
+    double size;       /* also split triangles with an edge longer than size
+                          times the shape's bounding-box diagonal (<= 0: no
+                          size bound) */
+    int max_nv;        /* stop splitting once the mesh has this many vertices */
+    int rounds;        /* at most this many rounds (flips + smoothing + splits) */
+};
+
+/* Refine c in place.
+ * c          compatible triangulation (every triangle positive in every
+ *            shape); boundary vertices 0..c->nb-1 in order; on return the
+ *            boundary vertices added by splits are inserted into that order
+ *            (vertex indices are renumbered: boundary first, then interior)
+ * pa         goal, size bound and limits
+ * st         out (may be NULL): counts
+ * The result's smallest angle over all shapes is never below the input's
+ * (if refinement made it worse, the input is kept: st->kept_input).
+ * Returns 0, -1 on out of memory (cm_errmsg). */
+int compat_refine(struct compat *c, const struct compat_refine_params *pa,
+                  struct compat_refine_stats *st);
+
+/* Remeshing by transfer: the outline of shape ref alone is triangulated
+ * and refined (compat_refine with N = 1), every other shape gets the same
+ * triangles with its boundary vertices on its own outline (new boundary
+ * vertices at the same fraction of the same input segment) and its
+ * interior vertices placed by as-rigid-as-possible deformation of the
+ * reference mesh with all boundary vertices as handles (arap_deform2d);
+ * triangles left inverted are untangled by moving interior vertices.  If
+ * every shape is then positive, the result is refined compatibly
+ * (compat_refine) and replaces c (interior vertices of c, e.g. the
+ * Steiner points of compat_triangulate, are dropped: c->nsteiner = 0).
+ * c        compatible boundary (and triangulation) of N shapes; only the
+ *          boundary vertices 0..c->nb-1 are used
+ * ref      reference shape, 0..N-1
+ * pa, st   as for compat_refine (the size bound applies to the
+ *          reference mesh only)
+ * Returns 1 (c replaced), 0 (some shape keeps an inverted triangle; c is
+ * unchanged), -1 on error (cm_errmsg). */
+int compat_remesh(struct compat *c, int ref, const struct compat_refine_params *pa,
+                  struct compat_refine_stats *st);
+
+/* Quality of shape s: smallest angle (radians) of any triangle, and the
+ * share of triangles (0..1) whose smallest angle is below 10 and below 20
+ * degrees.  Any output pointer may be NULL. */
+void compat_pose_quality(const struct compat *c, int s, double *min_angle,
+                         double *under10, double *under20);
+
+/* Sharpest outline corner over all shapes: the smallest interior angle
+ * (radians) of the boundary polygon at a boundary vertex, measured as the
+ * sum of the incident triangles' angles there.  No triangle can have a
+ * larger smallest angle than this where that corner is. */
+double compat_sharpest_corner(const struct compat *c);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
