@@ -210,3 +210,58 @@ extern "C" int cdt2_overlay(int m, int N, const double *const *X, double **Sout,
         return cm_seterr("overlay triangulation failed: %s", e.what());
     }
 }
+
+// ---------------------------------------------------------------------
+// quality mesh of one simple polygon (see cdt2.h)
+
+extern "C" int cdt2_mesh_polygon(const double *P, int n, double shape, double size,
+                                 double **Vout, int *nvout, int **Fout, int *nfout)
+{
+    try {
+        CDT cdt;
+        std::vector<VH> vh(n);
+        for (int i = 0; i < n; i++) vh[i] = cdt.insert(Point(P[2 * i], P[2 * i + 1]));
+        for (int i = 0; i < n; i++) cdt.insert_constraint(vh[i], vh[(i + 1) % n]);
+        // one seed inside the polygon: the centroid of a face of the
+        // constrained triangulation that lies inside (crossing number)
+        std::vector<Point> seeds;
+        for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && seeds.empty(); ++f) {
+            double x = 0, y = 0;
+            for (int k = 0; k < 3; k++) { x += f->vertex(k)->point().x() / 3; y += f->vertex(k)->point().y() / 3; }
+            int in = 0;
+            for (int i = 0, j = n - 1; i < n; j = i++)
+                if ((P[2 * i + 1] > y) != (P[2 * j + 1] > y) &&
+                    x < (P[2 * j] - P[2 * i]) * (y - P[2 * i + 1]) / (P[2 * j + 1] - P[2 * i + 1]) + P[2 * i])
+                    in = !in;
+            if (in) seeds.push_back(Point(x, y));
+        }
+        if (seeds.empty()) return cm_seterr("2D meshing failed: no triangle inside the polygon");
+        CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(), Criteria(shape, size), true);
+        std::map<VH, int> index;
+        std::vector<double> V;
+        std::vector<int> F;
+        for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+            if (!f->is_in_domain()) continue;
+            for (int k = 0; k < 3; k++) {
+                VH v = f->vertex(k);
+                auto it = index.find(v);
+                if (it == index.end()) {
+                    it = index.emplace(v, (int)(V.size() / 2)).first;
+                    V.push_back(v->point().x());
+                    V.push_back(v->point().y());
+                }
+                F.push_back(it->second);
+            }
+        }
+        *nvout = (int)(V.size() / 2);
+        *nfout = (int)(F.size() / 3);
+        *Vout = (double *)malloc(V.size() * sizeof(double) + 1);
+        *Fout = (int *)malloc(F.size() * sizeof(int) + 1);
+        if (!*Vout || !*Fout) { free(*Vout); free(*Fout); return cm_seterr("out of memory"); }
+        std::copy(V.begin(), V.end(), *Vout);
+        std::copy(F.begin(), F.end(), *Fout);
+        return 0;
+    } catch (const std::exception &e) {
+        return cm_seterr("2D meshing failed: %s", e.what());
+    }
+}

@@ -44,6 +44,18 @@ int cdt2_mesh_box(const double lo[2], const double hi[2], const double *P, int n
  * Returns -1 on failure (cm_errmsg set). */
 int cdt2_overlay(int m, int N, const double *const *X, double **S, int *k, int **F, int *nf);
 
+/* Quality mesh of one simple polygon (CGAL Delaunay_mesher_2, the
+ * baseline compat-tri's refinement is measured against in bench/).
+ * P        n by 2 corners, simple (either orientation)
+ * shape    CGAL's shape bound B = sin^2 of the smallest angle (0.125:
+ *          about 20.7 degrees)
+ * size     upper bound on edge length (0: none)
+ * V, nv    out: #V by 2 positions (the corners among them; malloc'd)
+ * F, nf    out: #F by 3 counter-clockwise triangles (malloc'd)
+ * Returns -1 on failure (cm_errmsg set). */
+int cdt2_mesh_polygon(const double *P, int n, double shape, double size,
+                      double **V, int *nv, int **F, int *nf);
+
 #ifdef __cplusplus
 }
 #endif

@@ -39,7 +39,7 @@ all_subsets() {  # all_subsets CORR RING...
 		case $cols in ,*,*)
 			tot=$((tot + 1))
 			grep -v '^#' "$corr" | cut -d' ' -f"${cols#,}" >sub.corr
-			if compat-tri -l 0 -s 0 -c sub.corr $files >sub.mesh 2>sub.err &&
+			if compat-tri --refine none -l 0 -s 0 -c sub.corr $files >sub.mesh 2>sub.err &&
 			   check_mesh sub.mesh sub.corr $files >sub.check; then ok=$((ok + 1))
 			else echo "subset $cols: $(cat sub.err sub.check | head -2)" >&2; fi ;;
 		esac

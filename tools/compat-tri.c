@@ -30,14 +30,16 @@ static const char help[] =
 "  -l, --edge-length L   --refine none: refine interior edges to L times the\n"
 "                        mean boundary edge length (default 3; 0: none)\n"
 "  -s, --smooth N        --refine none: smoothing + flip rounds (default 10)\n"
-"      --refine MODE     'remesh' (default: pose 0's outline meshed alone to\n"
-"                        --min-angle, carried to the other poses by ARAP with\n"
-"                        the outline fixed, then refined as 'refine'; if a\n"
-"                        triangle stays inverted from every reference pose,\n"
-"                        says so and does 'refine'), 'refine' (compatible\n"
-"                        splits, flips and smoothing of the compatible\n"
-"                        triangulation, Surazhsky-Gotsman) or 'none' (only\n"
-"                        the edge-length refinement of -l and -s)\n"
+"      --refine MODE     'refine' (default: compatible refinement of the\n"
+"                        compatible triangulation, Surazhsky-Gotsman: edge\n"
+"                        splits in all poses, compatible flips, per-pose\n"
+"                        smoothing, until every angle of every pose reaches\n"
+"                        --min-angle or --max-vertices is reached), 'remesh'\n"
+"                        (a pose's outline meshed alone, carried to the other\n"
+"                        poses by ARAP with the outline fixed, then 'refine';\n"
+"                        if a triangle stays inverted from every reference\n"
+"                        pose, says so and does 'refine') or 'none' (the\n"
+"                        edge-length refinement of -l and -s)\n"
 "  -a, --min-angle DEG   goal of --refine (default 20)\n"
 "      --size H          --refine remesh: no edge of the reference mesh longer\n"
 "                        than H times the bounding-box diagonal (default\n"
@@ -88,7 +90,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             else usage_error("--split must be 'overlay' or 'linkpath'");
             break;
         case 'Q':
-            if (!strcmp(optarg, "remesh")) o->refine = REFINE_REFINE;
+            if (!strcmp(optarg, "remesh")) o->refine = REFINE_REMESH;
             else if (!strcmp(optarg, "refine")) o->refine = REFINE_REFINE;
             else if (!strcmp(optarg, "none")) o->refine = REFINE_NONE;
             else usage_error("--refine must be 'remesh', 'refine' or 'none'");
@@ -196,6 +198,7 @@ int main(int argc, char **argv)
             "largest two-sided Hausdorff distance %.3g, in %s)", M, cp.nb, o.err, hmax, o.shapes[hs]);
     struct compat_refine_params pa = {o.min_angle * M_PI / 180, o.size, o.max_nv ? o.max_nv : 10 * cp.nb, 200};
     int remeshed = 0;
+    if (o.refine != REFINE_REMESH) pa.size = 0;   /* the size bound is for the reference mesh */
     struct compat_refine_stats rs;
     if (o.refine == REFINE_REMESH) {
         for (int r = 0; r < N && !remeshed; r++) {
