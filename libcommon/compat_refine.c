@@ -8,7 +8,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <stdio.h>
 
 /* ------------------------------------------------------------------ */
 /* per-triangle measures */
@@ -860,15 +859,11 @@ int compat_remesh(struct compat *c, int ref, const struct compat_refine_params *
             M.X[s][2 * v] = v < nb1 ? P[2 * v] : Y[3 * v];
             M.X[s][2 * v + 1] = v < nb1 ? P[2 * v + 1] : Y[3 * v + 1];
         }
-        int l = untangle(&M, &t, s, bnd);
-        if (getenv("CQ_DBG")) fprintf(stderr, "  ref %d pose %d: %d left inverted\n", ref, s, l);
-        left += l;
+        left += untangle(&M, &t, s, bnd);
     }
     if (left) { rc = 0; goto out; }
     /* 5. all shapes: compatible refinement */
-    if (getenv("CQ_DBG")) { for (int s = 0; s < N; s++) { double mn, u10, u20; compat_pose_quality(&M, s, &mn, &u10, &u20); fprintf(stderr, "  transfer ref %d pose %d: %.2f %.3f %.3f nv %d\n", ref, s, mn * 180 / M_PI, u10, u20, M.nv); } }
     struct compat_refine_params p2 = *pa;
-    if (getenv("CQ_R2")) p2.rounds = atoi(getenv("CQ_R2"));
     p2.size = 0;
     if (compat_refine(&M, &p2, st) < 0) goto out;
     M.nsteiner = 0;

@@ -1,0 +1,87 @@
+#!/bin/sh
+# b-compat-quality.sh -- compat-tri's triangle quality and speed.
+#
+# 1. Each single pose (the shared elephant poses and the made-up creature of
+#    tests/t0511-creature.awk): compat-tri --refine refine -e 0 (every input
+#    point kept, so both mesh the same polygon) against CGAL's 2D Delaunay
+#    mesher (refine_Delaunay_mesh_2, shape bound 0.125 = about 20.7 degrees,
+#    build/bench/poly-mesh) in the same run: worst angle and vertex count as
+#    ratios to CGAL's.
+# 2. N poses: worst angle over every triangle of every pose for --refine
+#    refine and --refine remesh against --refine none (the old output).
+# 3. Time for six poses (elephant: 120-138 input points per pose; creature:
+#    ~280), CPU seconds, against the goal of 1 s.
+set -u
+ROOT=${ROOT:-$(cd "$(dirname "$0")/.." && pwd)}
+PATH="$ROOT/bin:$ROOT/build/bench:$PATH"
+T=${BENCH_TMP:-$ROOT/build/bench-tmp}/compat-quality
+mkdir -p "$T"
+DATA=${STOPMO_SHARED_DATA:-$ROOT/../shared/data}
+
+for k in 0 1 2 3 4 5; do
+	awk -v pose=$k -v tips="$T/tips$k" -f "$ROOT/tests/t0511-creature.awk" >"$T/creature$k.rings" || exit 1
+done
+cat "$T"/tips0 "$T"/tips1 "$T"/tips2 "$T"/tips3 "$T"/tips4 "$T"/tips5 |
+	awk '{ for (i = 1; i <= NF; i++) r[i] = r[i] " " $i } END { for (i = 1; i <= 5; i++) print substr(r[i], 2) }' >"$T/creature.corr"
+
+# ct LOG -> "worst vertices" from compat-tri -v
+ct_stats() { sed -n 's/.*result: \([0-9]*\) vertices.*min angle \([0-9.]*\) deg.*/\2 \1/p' "$1"; }
+cpu() { # LOG command... -> CPU seconds (user + sys) of the command (stderr to LOG)
+	log=$1; shift
+	/usr/bin/time -f "%U %S" -o "$T/time" "$@" >/dev/null 2>"$log" || return 1
+	awk '{ printf "%.3f", $1 + $2 }' "$T/time"
+}
+
+one_pose() { # NAME RING COL CORR
+	name=$1 ring=$2 col=$3 corr=$4
+	set -- $(poly-mesh "$ring") || return 1
+	cv=$2 ca=$6
+	grep -v '^#' "$corr" | cut -d' ' -f"$col" >"$T/one.corr"
+	compat-tri -v -e 0 -c "$T/one.corr" "$ring" >/dev/null 2>"$T/one.log" || return 1
+	set -- $(ct_stats "$T/one.log")
+	echo "compat-tri worst angle, $name alone: $1 deg | baseline CGAL mesher 0.125: $ca deg | ratio $(awk -v a="$1" -v b="$ca" 'BEGIN { printf "%.2f", a / b }')"
+	echo "compat-tri vertices, $name alone: $2 | baseline CGAL mesher 0.125: $cv | ratio $(awk -v a="$2" -v b="$cv" 'BEGIN { printf "%.2f", a / b }')"
+}
+
+P="$DATA/shapes2d/poses"
+have_elephant=0
+[ -e "$P/elephant-pose6.rings.txt" ] && have_elephant=1
+C6="$ROOT/examples/morph2d/corr6.txt"
+for k in 1 2 3 4 5 6; do
+	if [ $have_elephant = 1 ]; then one_pose "elephant pose $k" "$P/elephant-pose$k.rings.txt" $k "$C6" || exit 1; fi
+done
+[ $have_elephant = 1 ] || echo "compat-tri elephant: skipped (no $P)"
+for k in 0 1 2; do
+	one_pose "creature pose $k" "$T/creature$k.rings" $((k + 1)) "$T/creature.corr" || exit 1
+done
+
+multi() { # NAME CORR RING... : worst angle of refine and remesh vs none, CPU time
+	name=$1 corr=$2; shift 2
+	tn=$(cpu "$T/n.log" compat-tri -v --refine none -c "$corr" "$@") || return 1
+	tr=$(cpu "$T/r.log" compat-tri -v --refine refine -c "$corr" "$@") || return 1
+	tm=$(cpu "$T/m.log" compat-tri -v --refine remesh -c "$corr" "$@") || return 1
+	set -- $(ct_stats "$T/n.log"); an=$1 vn=$2
+	set -- $(ct_stats "$T/r.log"); ar=$1 vr=$2
+	set -- $(ct_stats "$T/m.log"); am=$1 vm=$2
+	ur=$(sed -n 's/.*pose [0-9]* .*, \([0-9.]*\)% under 20.*/\1/p' "$T/r.log" | sort -n | tail -1)
+	um=$(sed -n 's/.*pose [0-9]* .*, \([0-9.]*\)% under 20.*/\1/p' "$T/m.log" | sort -n | tail -1)
+	grep -q "remeshed by transfer" "$T/m.log" && how="transfer" || how="transfer failed, refined"
+	echo "compat-tri --refine refine, $name: worst $ar deg ($vr vertices, up to $ur% of a pose's triangles under 20 deg, $tr s CPU) | baseline --refine none: $an deg ($vn vertices, $tn s CPU) | ratio $(awk -v a="$ar" -v b="$an" 'BEGIN { printf "%.1f", a / (b > 0 ? b : 0.01) }')"
+	echo "compat-tri --refine remesh, $name: worst $am deg ($vm vertices, up to $um% under 20 deg, $tm s CPU; $how) | baseline --refine none: $an deg | ratio $(awk -v a="$am" -v b="$an" 'BEGIN { printf "%.1f", a / (b > 0 ? b : 0.01) }')"
+	echo "compat-tri --refine refine time, $name: $tr s CPU | baseline goal: 1 s | ratio $(awk -v a="$tr" 'BEGIN { printf "%.2f", a }')"
+}
+
+if [ $have_elephant = 1 ]; then
+	for cols in 1,2 3,5,6 1,2,3,4,5,6; do
+		grep -v '^#' "$C6" | cut -d' ' -f$cols >"$T/e.corr"
+		files=
+		for k in $(echo $cols | tr , ' '); do files="$files $P/elephant-pose$k.rings.txt"; done
+		multi "elephant poses $cols" "$T/e.corr" $files || exit 1
+	done
+fi
+for cols in 1,2 1,2,3 1,2,3,4,5,6; do
+	cut -d' ' -f$cols "$T/creature.corr" >"$T/c.corr"
+	files=
+	for k in $(echo $cols | tr , ' '); do files="$files $T/creature$((k - 1)).rings"; done
+	multi "creature poses $cols" "$T/c.corr" $files || exit 1
+done
