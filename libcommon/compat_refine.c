@@ -690,8 +690,11 @@ static double star_signed(const struct compat *c, const struct topology *t, int 
 static int untangle(struct compat *c, const struct topology *t, int s, const unsigned char *bnd)
 {
     double *X = c->X[s];
-    int bad = 0;
+    int bad = 0, fewest = c->nf + 1, stale = 0;
     for (int sweep = 0; sweep < 60; sweep++) {
+        /* give up after 4 sweeps without fewer inverted triangles */
+        if (bad && bad < fewest) { fewest = bad; stale = 0; }
+        else if (bad && ++stale >= 4) break;
         bad = 0;
         for (int f = 0; f < c->nf; f++) {
             const int *F = c->F + 3 * f;
@@ -882,4 +885,32 @@ out:
     if (M.X) compat_free(&M);
     free(V); free(Y); free(P); free(H); free(seg); free(tpar); free(bnd);
     return rc;
+}
+
+int compat_copy(const struct compat *src, struct compat *dst)
+{
+    memset(dst, 0, sizeof *dst);
+    *dst = *src;
+    dst->X = calloc(src->N, sizeof *dst->X);
+    dst->B = src->B ? calloc(src->N, sizeof *dst->B) : NULL;
+    dst->F = src->nf ? malloc(3 * (size_t)src->nf * sizeof *dst->F) : NULL;
+    dst->cap = src->nv;
+    dst->fcap = src->nf;
+    if (!dst->X || (src->B && !dst->B) || (src->nf && !dst->F)) goto oom;
+    if (src->nf) memcpy(dst->F, src->F, 3 * (size_t)src->nf * sizeof *dst->F);
+    for (int s = 0; s < src->N; s++) {
+        dst->X[s] = malloc(2 * (size_t)(src->nv ? src->nv : 1) * sizeof **dst->X);
+        if (!dst->X[s]) goto oom;
+        memcpy(dst->X[s], src->X[s], 2 * (size_t)src->nv * sizeof **dst->X);
+        if (src->B) {
+            dst->B[s] = malloc(2 * (size_t)(src->nm ? src->nm : 1) * sizeof **dst->B);
+            if (!dst->B[s]) goto oom;
+            memcpy(dst->B[s], src->B[s], 2 * (size_t)src->nm * sizeof **dst->B);
+        }
+    }
+    return 0;
+oom:
+    if (!dst->X) { free(dst->B); free(dst->F); memset(dst, 0, sizeof *dst); }
+    else compat_free(dst);
+    return cm_seterr("out of memory");
 }

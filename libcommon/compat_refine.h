@@ -87,6 +87,10 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa,
 int compat_remesh(struct compat *c, int ref, const struct compat_refine_params *pa,
                   struct compat_refine_stats *st);
 
+/* Deep copy of c (positions, faces, the matched boundary); dst is
+ * overwritten.  Returns -1 on out of memory. */
+int compat_copy(const struct compat *src, struct compat *dst);
+
 /* Quality of shape s: smallest angle (radians) of any triangle, and the
  * share of triangles (0..1) whose smallest angle is below 10 and below 20
  * degrees.  Any output pointer may be NULL. */

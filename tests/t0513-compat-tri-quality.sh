@@ -49,6 +49,13 @@ test_expect_success 'creature, 2, 3 and 6 poses: positive everywhere, worst angl
 		test_le $(worst n.mesh.log) $(worst r.mesh.log) || { echo "poses $cols" >&2; return 1; }
 	done
 '
+test_expect_success 'default (--refine auto): creature poses 0,1 remeshed by transfer, every angle >= 20 degrees (measured 21.4)' '
+	run auto 1,2 corr.txt a.mesh p0.rings p1.rings && test_le 1e-12 $(min_area a.mesh) &&
+	grep -q "kept the remeshed mesh" a.mesh.log && test_le 20 $(worst a.mesh.log) &&
+	run auto 1,2,3 corr.txt a3.mesh p0.rings p1.rings p2.rings &&
+	run refine 1,2,3 corr.txt r3.mesh p0.rings p1.rings p2.rings &&
+	test_le $(worst r3.mesh.log) $(worst a3.mesh.log)
+'
 test_expect_success '-v reports worst angle and shares under 10 and 20 degrees per pose' '
 	run refine 1,2,3 corr.txt r3.mesh p0.rings p1.rings p2.rings &&
 	test $(grep -c "pose [0-2] (p[0-2].rings): worst angle [0-9.]* deg, [0-9.]*% of triangles under 10 deg, [0-9.]*% under 20, [0-9]* vertices" r3.mesh.log) = 3

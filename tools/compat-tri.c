@@ -30,9 +30,10 @@ static const char help[] =
 "  -l, --edge-length L   --refine none: refine interior edges to L times the\n"
 "                        mean boundary edge length (default 3; 0: none)\n"
 "  -s, --smooth N        --refine none: smoothing + flip rounds (default 10)\n"
-"      --refine MODE     'refine' (default: compatible refinement of the\n"
-"                        compatible triangulation, Surazhsky-Gotsman: edge\n"
-"                        splits in all poses, compatible flips, per-pose\n"
+"      --refine MODE     'auto' (default: both of the next two, keeps the\n"
+"                        better worst angle), 'refine' (compatible refinement\n"
+"                        of the compatible triangulation, Surazhsky-Gotsman:\n"
+"                        edge splits in all poses, compatible flips, per-pose\n"
 "                        smoothing, until every angle of every pose reaches\n"
 "                        --min-angle or --max-vertices is reached), 'remesh'\n"
 "                        (a pose's outline meshed alone, carried to the other\n"
@@ -40,6 +41,7 @@ static const char help[] =
 "                        if a triangle stays inverted from every reference\n"
 "                        pose, says so and does 'refine') or 'none' (the\n"
 "                        edge-length refinement of -l and -s)\n"
+"                        (auto tries poses 0 and 1 as the reference)\n"
 "  -a, --min-angle DEG   goal of --refine (default 20)\n"
 "      --size H          --refine remesh: no edge of the reference mesh longer\n"
 "                        than H times the bounding-box diagonal (default\n"
@@ -57,7 +59,7 @@ static const char help[] =
 "\n"
 "Example: compat-tri -v -c corr.txt pose1.rings pose2.rings | mesh2svg -g >t.svg\n";
 
-enum { REFINE_NONE, REFINE_REFINE, REFINE_REMESH };
+enum { REFINE_NONE, REFINE_REFINE, REFINE_REMESH, REFINE_AUTO };
 
 struct options {
     const char *corr, *output;
@@ -76,7 +78,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"max-vertices", 1, 0, 'K'}, {"size", 1, 0, 'z'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
-    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = REFINE_REFINE; o->min_angle = 20; o->size = 0.05;
+    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = REFINE_AUTO; o->min_angle = 20; o->size = 0.05;
     int c;
     while ((c = getopt_long(argc, argv, "c:e:l:s:a:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -93,7 +95,8 @@ static void parse_args(int argc, char **argv, struct options *o)
             if (!strcmp(optarg, "remesh")) o->refine = REFINE_REMESH;
             else if (!strcmp(optarg, "refine")) o->refine = REFINE_REFINE;
             else if (!strcmp(optarg, "none")) o->refine = REFINE_NONE;
-            else usage_error("--refine must be 'remesh', 'refine' or 'none'");
+            else if (!strcmp(optarg, "auto")) o->refine = REFINE_AUTO;
+            else usage_error("--refine must be 'auto', 'remesh', 'refine' or 'none'");
             break;
         case 'a': o->min_angle = arg_double(optarg, "--min-angle"); break;
         case 'z': o->size = arg_double(optarg, "--size"); break;
@@ -198,20 +201,29 @@ int main(int argc, char **argv)
             "largest two-sided Hausdorff distance %.3g, in %s)", M, cp.nb, o.err, hmax, o.shapes[hs]);
     struct compat_refine_params pa = {o.min_angle * M_PI / 180, o.size, o.max_nv ? o.max_nv : 10 * cp.nb, 200};
     int remeshed = 0;
-    if (o.refine != REFINE_REMESH) pa.size = 0;   /* the size bound is for the reference mesh */
     struct compat_refine_stats rs;
-    if (o.refine == REFINE_REMESH) {
-        for (int r = 0; r < N && !remeshed; r++) {
-            remeshed = compat_remesh(&cp, r, &pa, &rs);
+    struct compat rm;   /* the remeshed result (--refine remesh, auto) */
+    memset(&rm, 0, sizeof rm);
+    if (o.refine == REFINE_REMESH || o.refine == REFINE_AUTO) {
+        /* auto tries the first two poses as the reference, remesh every pose */
+        int nref = o.refine == REFINE_AUTO && N > 2 ? 2 : N;
+        for (int r = 0; r < nref && !remeshed; r++) {
+            if (compat_copy(&cp, &rm) < 0) die("%s", cm_errmsg());
+            remeshed = compat_remesh(&rm, r, &pa, &rs);
             if (remeshed < 0) die("%s", cm_errmsg());
             if (remeshed)
                 info(1, "remeshed by transfer from %s: %d rounds, %d interior and %d boundary splits, %d flips, "
-                        "%d moves", o.shapes[r], rs.rounds, rs.splits, rs.bsplits, rs.flips, rs.moves);
+                        "%d moves; min angle %.2f deg", o.shapes[r], rs.rounds, rs.splits, rs.bsplits, rs.flips,
+                     rs.moves, compat_min_angle(&rm, NULL) * 180 / M_PI);
+            else compat_free(&rm);
         }
         if (!remeshed)
-            info(1, "remeshing by transfer left inverted triangles from every reference pose: "
-                    "refining the compatible triangulation instead (--refine refine)");
+            info(1, "remeshing by transfer left inverted triangles from %s: "
+                    "refining the compatible triangulation instead", nref < N ? "poses 0 and 1 as the reference" : "every reference pose");
     }
+    pa.size = 0;   /* the size bound is for the reference mesh only */
+    if (remeshed && o.refine == REFINE_REMESH) { compat_free(&cp); cp = rm; memset(&rm, 0, sizeof rm); }
+    else remeshed = 0;
     if (!remeshed) {
         if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
         double ma0, q0 = compat_min_angle(&cp, &ma0);
@@ -241,6 +253,13 @@ int main(int argc, char **argv)
         info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d flips, %d moves; "
                 "min angle %.2f -> %.2f deg%s", rs.rounds, rs.splits, rs.bsplits, rs.flips, rs.moves,
              q1 * 180 / M_PI, compat_min_angle(&cp, NULL) * 180 / M_PI, rs.kept_input ? " (worse: input kept)" : "");
+    }
+    if (rm.N) {   /* auto: the better of remeshing and refinement */
+        double qr = compat_min_angle(&rm, NULL), qc = compat_min_angle(&cp, NULL);
+        info(1, "kept the %s (min angle %.2f deg; the other %.2f deg)", qr > qc ? "remeshed mesh" : "refined mesh",
+             fmax(qr, qc) * 180 / M_PI, fmin(qr, qc) * 180 / M_PI);
+        if (qr > qc) { struct compat x = cp; cp = rm; rm = x; }
+        compat_free(&rm);
     }
     if (o.refine != REFINE_NONE)
         info(1, "sharpest outline corner %.2f deg", compat_sharpest_corner(&cp) * 180 / M_PI);
