@@ -47,16 +47,6 @@ static int positive(const struct compat *c, int a, int b, int d)
     return 1;
 }
 
-static double face_sin_min(const struct compat *c, int a, int b, int d)
-{
-    double q = INFINITY;
-    for (int s = 0; s < c->N; s++) {
-        const double *X = c->X[s];
-        q = fmin(q, sin_min(X + 2 * a, X + 2 * b, X + 2 * d));
-    }
-    return q;
-}
-
 void compat_pose_quality(const struct compat *c, int s, double *min_angle, double *under10, double *under20)
 {
     double mn = INFINITY;
@@ -174,59 +164,33 @@ static void set_face(struct compat *c, int f, int a, int b, int d)
     c->F[3 * f] = a; c->F[3 * f + 1] = b; c->F[3 * f + 2] = d;
 }
 
+/* corner (0..2) of vertex v in face f (v must be in f) */
+static int corner(const int *F, int f, int v)
+{
+    return F[3 * f] == v ? 0 : F[3 * f + 1] == v ? 1 : 2;
+}
+
+/* the vertex of face f other than a and b */
 static int third(const int *F, int f, int a, int b)
 {
-    for (int k = 0; k < 3; k++)
-        if (F[3 * f + k] != a && F[3 * f + k] != b) return F[3 * f + k];
-    return -1;
+    return F[3 * f + 3 - corner(F, f, a) - corner(F, f, b)];
 }
 
 /* does face f run a -> b? */
 static int runs(const int *F, int f, int a, int b)
 {
-    for (int k = 0; k < 3; k++)
-        if (F[3 * f + k] == a && F[3 * f + (k + 1) % 3] == b) return 1;
-    return 0;
-}
-
-/* ------------------------------------------------------------------ */
-/* flips */
-
-static int flip_pass(struct compat *c)
-{
-    struct topology t;
-    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    unsigned char *touched = calloc(c->nf, 1);
-    if (!touched) { topology_free(&t); return cm_seterr("out of memory"); }
-    int flips = 0;
-    for (int e = 0; e < t.ne; e++) {
-        if (t.EFn[e] != 2) continue;
-        int f1 = t.EF[2 * e], f2 = t.EF[2 * e + 1];
-        if (touched[f1] || touched[f2]) continue;
-        int a = t.E[2 * e], b = t.E[2 * e + 1];
-        if (!runs(c->F, f1, a, b)) { int x = f1; f1 = f2; f2 = x; }
-        int p = third(c->F, f1, a, b), q = third(c->F, f2, a, b);
-        if (p == q || topology_edge(&t, p, q) >= 0) continue;
-        double old = fmin(face_sin_min(c, a, b, p), face_sin_min(c, b, a, q));
-        double nw = fmin(face_sin_min(c, a, q, p), face_sin_min(c, b, p, q));
-        if (!(nw > old * (1 + 1e-9) + 1e-15)) continue;
-        if (!positive(c, a, q, p) || !positive(c, b, p, q)) continue;
-        set_face(c, f1, a, q, p);
-        set_face(c, f2, b, p, q);
-        touched[f1] = touched[f2] = 1;
-        flips++;
-    }
-    free(touched);
-    topology_free(&t);
-    return flips;
+    return corner(F, f, b) == (corner(F, f, a) + 1) % 3;
 }
 
 /* ------------------------------------------------------------------ */
 /* smoothing */
 
-/* smallest sin_min of v's star in shape s with v at p; -1 if a triangle is
- * not positive (exact) */
-static double star_quality(const struct compat *c, const struct topology *t, int s, int v, const double *p)
+/* measures of one triangle for a vertex's star */
+typedef double (*tri_measure)(const double *a, const double *b, const double *d);
+
+/* smallest measure over v's star in shape s with v at p */
+static double star_min(const struct compat *c, const struct topology *t, int s, int v, const double *p,
+                       tri_measure fn)
 {
     const double *X = c->X[s];
     double q = INFINITY;
@@ -234,12 +198,25 @@ static double star_quality(const struct compat *c, const struct topology *t, int
         const int *F = c->F + 3 * t->VF[k];
         const double *P[3];
         for (int j = 0; j < 3; j++) P[j] = F[j] == v ? p : X + 2 * F[j];
-        double x = sin_min(P[0], P[1], P[2]);
-        /* a sine above 1e-9 cannot come from a wrongly signed area */
-        if (x <= 0 || (x < 1e-9 && orient2_sign(P[0], P[1], P[2]) <= 0)) return -1;
-        q = fmin(q, x);
+        q = fmin(q, fn(P[0], P[1], P[2]));
     }
     return q;
+}
+
+/* sin_min, -1 if the triangle is not positive (exact) */
+static double sin_min_valid(const double *a, const double *b, const double *d)
+{
+    double x = sin_min(a, b, d);
+    /* a sine above 1e-9 cannot come from a wrongly signed area */
+    if (x <= 0 || (x < 1e-9 && orient2_sign(a, b, d) <= 0)) return -1;
+    return x;
+}
+
+/* smallest sin_min of v's star in shape s with v at p; -1 if a triangle is
+ * not positive (exact) */
+static double star_quality(const struct compat *c, const struct topology *t, int s, int v, const double *p)
+{
+    return star_min(c, t, s, v, p, sin_min_valid);
 }
 
 static int smooth_pass(struct compat *c, const struct topology *t, const unsigned char *bnd)
@@ -576,7 +553,7 @@ out:
 static int flips_until_done(struct compat *c, int *nflips)
 {
     for (int k = 0; k < 50; k++) {
-        int x = flip_pass(c);
+        int x = compat_flip_pass(c);
         if (x < 0) return -1;
         *nflips += x;
         if (!x) break;
@@ -661,25 +638,24 @@ out:
 /* ------------------------------------------------------------------ */
 /* remeshing by transfer */
 
+/* signed area over the sum of squared edge lengths, its sign exact */
+static double normalized_area(const double *a, const double *b, const double *d)
+{
+    const double *P[3] = {a, b, d};
+    double l = 0;
+    for (int j = 0; j < 3; j++) {
+        double dx = P[(j + 1) % 3][0] - P[j][0], dy = P[(j + 1) % 3][1] - P[j][1];
+        l += dx * dx + dy * dy;
+    }
+    double ar = orient2(a, b, d);
+    ar = orient2_sign(a, b, d) > 0 ? fmax(ar, 1e-300) : fmin(ar, 0);
+    return ar / l;
+}
+
 /* smallest normalized signed area of v's star in shape s with v at p */
 static double star_signed(const struct compat *c, const struct topology *t, int s, int v, const double *p)
 {
-    const double *X = c->X[s];
-    double q = INFINITY;
-    for (int k = t->VFs[v]; k < t->VFs[v + 1]; k++) {
-        const int *F = c->F + 3 * t->VF[k];
-        const double *P[3];
-        for (int j = 0; j < 3; j++) P[j] = F[j] == v ? p : X + 2 * F[j];
-        double l = 0;
-        for (int j = 0; j < 3; j++) {
-            double dx = P[(j + 1) % 3][0] - P[j][0], dy = P[(j + 1) % 3][1] - P[j][1];
-            l += dx * dx + dy * dy;
-        }
-        double a = orient2_sign(P[0], P[1], P[2]) > 0
-                   ? fmax(orient2(P[0], P[1], P[2]), 1e-300) : fmin(orient2(P[0], P[1], P[2]), 0);
-        q = fmin(q, a / l);
-    }
-    return q;
+    return star_min(c, t, s, v, p, normalized_area);
 }
 
 /* Move interior vertices of shape s until no triangle is inverted: a vertex

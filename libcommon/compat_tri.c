@@ -919,7 +919,7 @@ static int oriented_edge(const int *F, int f, int a, int b)
     return 0;
 }
 
-static int flip_pass(struct compat *c)
+int compat_flip_pass(struct compat *c)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
@@ -1052,7 +1052,7 @@ int compat_improve(struct compat *c, double target, int iters)
         for (int r = 0; r < 30; r++) {
             /* flips and a little smoothing before every split round, so new
              * vertices spread out instead of piling up along slivers */
-            for (int k = 0; k < 20; k++) if (flip_pass(c) <= 0) break;
+            for (int k = 0; k < 20; k++) if (compat_flip_pass(c) <= 0) break;
             struct topology t;
             if (topology_build(c->F, c->nf, c->nv, &t) < 0) { free(dg); return -1; }
             for (int k = 0; k < 3; k++) smooth_pass(c, &t, 1);
@@ -1067,7 +1067,7 @@ int compat_improve(struct compat *c, double target, int iters)
         for (int k = 0; k < 5; k++) smooth_pass(c, &t, it < iters / 2);
         topology_free(&t);
         int nfl = 0;
-        for (int k = 0; k < 20; k++) { int x = flip_pass(c); if (x < 0) { free(dg); return -1; } nfl += x; if (!x) break; }
+        for (int k = 0; k < 20; k++) { int x = compat_flip_pass(c); if (x < 0) { free(dg); return -1; } nfl += x; if (!x) break; }
         if (nfl == 0 && it > 2) break;
     }
     free(dg);

@@ -97,6 +97,12 @@ int compat_triangulate(struct compat *c);
  * diagonal, <= 0: none), flips and smoothing (iters rounds). */
 int compat_improve(struct compat *c, double target, int iters);
 
+/* One pass of compatible edge flips: an interior edge is flipped when the
+ * new pair is positive in all shapes (exact) and its smallest angle over the
+ * shapes is larger (by 1e-9 rad); each triangle flips at most once per pass.
+ * Returns the number of flips, -1 on out of memory. */
+int compat_flip_pass(struct compat *c);
+
 /* Minimum angle (radians) over all triangles of all shapes; *minarea gets
  * the smallest signed area divided by the shape's squared diagonal
  * (> 0 iff every triangle is positively oriented in every shape). */
