@@ -3,6 +3,7 @@
  * one MESH animation of N frames sharing one face list.
  */
 #include "compat_tri.h"
+#include "compat_holes.h"
 #include "columns.h"
 #include "mesh.h"
 #include "rings.h"
@@ -16,12 +17,20 @@
 
 static const char help[] =
 "Usage: compat-tri -c CORR [options] SHAPE0 SHAPE1 ...\n"
-"Compatible triangulation of N outlines (ring files, one outer ring each):\n"
-"one MESH stream of N frames with one face list, frame i = shape i.\n"
+"Compatible triangulation of N outlines (ring files): one MESH stream of N\n"
+"frames with one face list, frame i = shape i.  Outlines may have holes and\n"
+"several pieces, matched ring by ring (same rings in the same order).\n"
 "\n"
 "  -c, --corr FILE       correspondence points: one row per point, N columns,\n"
-"                        column i = vertex index (0-based) in SHAPEi's ring;\n"
-"                        at least 3 rows, in the same order along every outline\n"
+"                        column i = vertex index (0-based) in SHAPEi's file\n"
+"                        (points of all rings counted in file order); one\n"
+"                        outer ring: at least 3 rows, in the same order along\n"
+"                        every outline; several rings: each row on one ring,\n"
+"                        a ring without rows is matched from its first vertex\n"
+"  -i, --interior FILE   interior correspondence points: one row per point,\n"
+"                        2N columns x0 y0 x1 y1 ... (the point in SHAPE0,\n"
+"                        SHAPE1, ...); each becomes one vertex at exactly\n"
+"                        those positions\n"
 "  -e, --error E         outline tolerance: two-sided Hausdorff distance of\n"
 "                        the simplified to the input outline, as a fraction\n"
 "                        of each pose's bounding-box diagonal (default 0.005;\n"
@@ -41,7 +50,7 @@ static const char help[] =
 "Example: compat-tri -v -c corr.txt pose1.rings pose2.rings | mesh2svg -g >t.svg\n";
 
 struct options {
-    const char *corr, *output;
+    const char *corr, *output, *interior;
     double err, edge;
     int smooth, raw, split;
     int nshapes;
@@ -51,15 +60,16 @@ struct options {
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
-        {"corr", 1, 0, 'c'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
+        {"corr", 1, 0, 'c'}, {"interior", 1, 0, 'i'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
         {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10;
     int c;
-    while ((c = getopt_long(argc, argv, "c:e:l:s:o:vh", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "c:i:e:l:s:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'c': o->corr = optarg; break;
+        case 'i': o->interior = optarg; break;
         case 'e': o->err = arg_double(optarg, "--error"); break;
         case 'l': o->edge = arg_double(optarg, "--edge-length"); break;
         case 's': o->smooth = arg_int(optarg, "--smooth"); break;
@@ -88,6 +98,86 @@ static void parse_args(int argc, char **argv, struct options *o)
             usage_error("stdin can be only the single shape");
 }
 
+/* file line of data row k (1-based) of a column file, for messages;
+ * 0 if the file cannot be read again (stdin) */
+static long data_line(const char *path, int k)
+{
+    FILE *f = path && strcmp(path, "-") ? fopen(path, "r") : NULL;
+    if (!f) return 0;
+    char buf[4096];
+    long line = 0, ans = 0;
+    int row = 0, fresh = 1;
+    while (fgets(buf, sizeof buf, f)) {
+        if (fresh) {
+            line++;
+            const char *p = buf + strspn(buf, " \t\r");
+            if (*p && *p != '\n' && *p != '#' && ++row == k) { ans = line; break; }
+        }
+        fresh = strchr(buf, '\n') != NULL;
+    }
+    fclose(f);
+    return ans;
+}
+
+/* "row K: ..." from libcommon -> die naming the file and line */
+static void die_row(const char *path)
+{
+    const char *m = cm_errmsg();
+    int k;
+    long line;
+    if (sscanf(m, "row %d:", &k) == 1 && (line = data_line(path, k)) > 0)
+        die("cannot read '%s': line %ld:%s", path, line, strchr(m, ':') + 1);
+    die("cannot read '%s': %s", path, m);
+}
+
+/* several rings or interior points: compat_holes.h */
+static void build_multi(const struct options *o, struct rings *R, struct compat *cp)
+{
+    int N = o->nshapes, nr = R[0].nrings;
+    for (int s = 1; s < N; s++)
+        if (R[s].nrings != nr)
+            die("cannot read '%s': %d ring%s, but '%s' has %d (rings are matched by order)", R[s].name,
+                R[s].nrings, R[s].nrings == 1 ? "" : "s", R[0].name, nr);
+    int *parent = malloc(nr * sizeof *parent);
+    unsigned char *flipped = malloc((size_t)N * nr);
+    if (compat_nest(N, R, parent, flipped) < 0) die("rings do not match: %s", cm_errmsg());
+    int nholes = 0, nflip = 0;
+    for (int k = 0; k < nr; k++) nholes += compat_is_hole(parent, k);
+    for (size_t k = 0; k < (size_t)N * nr; k++) nflip += flipped[k];
+    info(1, "%d ring%s per shape: %d piece%s, %d hole%s; %d ring%s reversed (indices refer to the file order)",
+         nr, nr == 1 ? "" : "s", nr - nholes, nr - nholes == 1 ? "" : "s", nholes, nholes == 1 ? "" : "s",
+         nflip, nflip == 1 ? "" : "s");
+    struct columns C, I = {0};
+    if (columns_read(o->corr, N, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    int *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
+    for (size_t k = 0; k < (size_t)C.rows * N; k++) {
+        double x = C.x[k];
+        if (x != floor(x) || x < 0 || x > 1e9)
+            die("cannot read '%s': line %ld: '%g' is not a vertex index", o->corr,
+                data_line(o->corr, (int)(k / N) + 1), x);
+        corr[k] = (int)x;
+    }
+    if (o->interior && columns_read(o->interior, 2 * N, -1, NULL, &I) < 0) die("%s", cm_errmsg());
+    double st[4];
+    if (compat_multi(N, R, parent, flipped, corr, C.rows, I.x, I.rows, o->err, cp, st) < 0) {
+        const char *m = cm_errmsg();
+        /* point rows come after every correspondence check */
+        die_row(o->interior && (strstr(m, "point") || strstr(m, "same as")) ? o->interior : o->corr);
+    }
+    if (st[3] > 0) info(1, "%g ring%s without a correspondence row: matched from the first vertex", st[3],
+                        st[3] == 1 ? "" : "s");
+    if (st[0] < o->err) info(1, "tolerance halved to %g so that no two rings touch and every point stays "
+                                "inside its piece", st[0]);
+    info(1, "boundary: %d points on %d rings and %d interior points (tolerance %g of the diagonal; largest "
+            "two-sided Hausdorff distance %.3g, in %s)", cp->ring_start[nr], nr, cp->npts, st[0], st[1],
+         o->shapes[(int)st[2]]);
+    cp->split_mode = o->split;
+    if (compat_multi_triangulate(cp) < 0) die("%s", cm_errmsg());
+    free(parent); free(flipped); free(corr);
+    columns_free(&C);
+    if (o->interior) columns_free(&I);
+}
+
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -99,8 +189,7 @@ int main(int argc, char **argv)
 
     /* read and check every outline */
     struct rings *R = calloc(N, sizeof *R);
-    double **P = malloc(N * sizeof *P);
-    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
+    int multi = o.interior != NULL;
     for (int s = 0; s < N; s++) {
         if (rings_read(o.shapes[s], &R[s]) < 0) die("%s", cm_errmsg());
         for (int k = 0; k < R[s].nrings; k++)
@@ -108,9 +197,14 @@ int main(int argc, char **argv)
                 die("cannot read '%s': line %ld: degenerate outline (ring %d encloses no area)", R[s].name,
                     R[s].line[R[s].start[k]] - 1, k + 1);
         if (rings_check_simple(&R[s]) < 0) die("%s", cm_errmsg());
-        if (R[s].nrings != 1)
-            die("cannot read '%s': line %ld: %d rings; compat-tri needs one simple outer outline "
-                "(holes and pieces are not supported)", R[s].name, R[s].line[R[s].start[1]], R[s].nrings);
+        if (R[s].nrings != 1) multi = 1;
+    }
+    struct compat cp;
+    if (multi) build_multi(&o, R, &cp);
+    else {
+    double **P = malloc(N * sizeof *P);
+    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
+    for (int s = 0; s < N; s++) {
         flipped[s] = rings_orient(&R[s]);
         P[s] = R[s].P;
         n[s] = rings_count(&R[s], 0);
@@ -144,7 +238,6 @@ int main(int argc, char **argv)
             }
     }
 
-    struct compat cp;
     unsigned char *keep = NULL;
     int rev = compat_corr_order(N, n, corr, C.rows);
     if (rev < 0) die("cannot read '%s': %s", o.corr, cm_errmsg());
@@ -164,6 +257,9 @@ int main(int argc, char **argv)
     info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
             "largest two-sided Hausdorff distance %.3g, in %s)", M, cp.nb, o.err, hmax, o.shapes[hs]);
     if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
+    free(keep); free(corr); columns_free(&C);
+    free(P); free(n); free(flipped);
+    }
     double ma0, q0 = compat_min_angle(&cp, &ma0);
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
@@ -173,12 +269,15 @@ int main(int argc, char **argv)
     if (o.edge > 0) {
         for (int s = 0; s < N; s++) {
             double L = 0, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+            int ne = 0;
             for (int i = 0; i < cp.nb; i++) {
-                int j = (i + 1) % cp.nb;
+                int j = compat_boundary_next(&cp, i);   /* along the vertex's ring */
+                if (j < 0) continue;
                 L += hypot(cp.X[s][2 * j] - cp.X[s][2 * i], cp.X[s][2 * j + 1] - cp.X[s][2 * i + 1]);
+                ne++;
                 for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], cp.X[s][2 * i + d]); hi[d] = fmax(hi[d], cp.X[s][2 * i + d]); }
             }
-            target += L / cp.nb / hypot(hi[0] - lo[0], hi[1] - lo[1]);
+            target += L / ne / hypot(hi[0] - lo[0], hi[1] - lo[1]);
         }
         target = o.edge * target / N;
     }
@@ -204,8 +303,7 @@ int main(int argc, char **argv)
     out_close(out);
     mesh_free(&m);
     compat_free(&cp);
-    free(keep); free(corr); columns_free(&C);
     for (int s = 0; s < N; s++) rings_free(&R[s]);
-    free(R); free(P); free(n); free(flipped);
+    free(R);
     return 0;
 }
