@@ -94,7 +94,7 @@ int compat_nest(int N, struct rings *R, int *parent, unsigned char *flipped)
             }
         }
         for (int k = 0; k < nr; k++) {
-            double a = rings_area(r, k);
+            int a = rings_orientation(r, k);   /* exact */
             int hole = compat_is_hole(parent, k);
             flipped[(size_t)s * nr + k] = 0;
             if ((!hole && a < 0) || (hole && a > 0)) {
