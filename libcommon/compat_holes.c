@@ -588,3 +588,128 @@ int compat_multi_triangulate(struct compat *c)
     }
     return 0;
 }
+
+/* ------------------------------------------------------------------ */
+/* ring order */
+
+/* mean vertex of ring k, relative to the shape's bounding box */
+static void ring_center(const struct rings *r, int k, double out[2])
+{
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    int np = r->start[r->nrings];
+    for (int i = 0; i < np; i++)
+        for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], r->P[2 * i + d]); hi[d] = fmax(hi[d], r->P[2 * i + d]); }
+    double dg = hypot(hi[0] - lo[0], hi[1] - lo[1]), sx = 0, sy = 0;
+    int n = rings_count(r, k);
+    const double *P = rings_ring(r, k);
+    for (int i = 0; i < n; i++) { sx += P[2 * i]; sy += P[2 * i + 1]; }
+    out[0] = (sx / n - lo[0]) / dg;
+    out[1] = (sy / n - lo[1]) / dg;
+}
+
+struct assign {
+    int k;
+    const double *D;  /* k by k costs */
+    int *cur, *best;
+    unsigned char *used;
+    double bestc;
+};
+
+static void assign_rec(struct assign *a, int i, double c)
+{
+    if (c >= a->bestc) return;
+    if (i == a->k) { a->bestc = c; memcpy(a->best, a->cur, a->k * sizeof *a->cur); return; }
+    for (int j = 0; j < a->k; j++)
+        if (!a->used[j]) {
+            a->used[j] = 1; a->cur[i] = j;
+            assign_rec(a, i + 1, c + a->D[i * a->k + j]);
+            a->used[j] = 0;
+        }
+}
+
+/* match the children of ring p0 in shape 0 to those of ring ps in shape s
+ * (-1: top level); perm[k0] = matched ring of shape s */
+static int match_children(const int *par0, const int *pars, int nr, int p0, int ps, double (*C0)[2],
+                          double (*Cs)[2], int s, int *perm)
+{
+    int *a = malloc(nr * sizeof *a), *b = malloc(nr * sizeof *b), na = 0, nb = 0, rc = 0;
+    for (int k = 0; k < nr; k++) {
+        if (par0[k] == p0) a[na++] = k;
+        if (pars[k] == ps) b[nb++] = k;
+    }
+    if (na != nb) {
+        char where[32] = "at the top level";
+        if (p0 >= 0) snprintf(where, sizeof where, "inside ring %d", p0 + 1);
+        rc = cm_seterr("shape %d has %d ring%s %s, but shape 0 has %d", s, nb, nb == 1 ? "" : "s", where, na);
+    } else if (na > 0) {
+        double *D = malloc((size_t)na * na * sizeof *D);
+        for (int i = 0; i < na; i++)
+            for (int j = 0; j < na; j++)
+                D[i * na + j] = hypot(C0[a[i]][0] - Cs[b[j]][0], C0[a[i]][1] - Cs[b[j]][1]);
+        struct assign as = {na, D, malloc(na * sizeof(int)), malloc(na * sizeof(int)), calloc(na, 1), INFINITY};
+        if (na <= 8) assign_rec(&as, 0, 0);
+        else   /* greedy: nearest free ring */
+            for (int i = 0; i < na; i++) {
+                int bj = -1;
+                for (int j = 0; j < na; j++)
+                    if (!as.used[j] && (bj < 0 || D[i * na + j] < D[i * na + bj])) bj = j;
+                as.used[bj] = 1; as.best[i] = bj;
+            }
+        for (int i = 0; i < na && rc == 0; i++) {
+            perm[a[i]] = b[as.best[i]];
+            rc = match_children(par0, pars, nr, a[i], b[as.best[i]], C0, Cs, s, perm);
+        }
+        free(D); free(as.cur); free(as.best); free(as.used);
+    }
+    free(a); free(b);
+    return rc;
+}
+
+int compat_order_rings(int N, struct rings *R, int *corr, int ncorr, int *moved)
+{
+    int nr = R[0].nrings;
+    *moved = 0;
+    for (int s = 1; s < N; s++)
+        if (R[s].nrings != nr)
+            return cm_seterr("shape %d has %d ring%s, but shape 0 has %d", s, R[s].nrings,
+                             R[s].nrings == 1 ? "" : "s", nr);
+    int *par0 = malloc(nr * sizeof *par0), *pars = malloc(nr * sizeof *pars), *perm = malloc(nr * sizeof *perm);
+    double (*C0)[2] = malloc(nr * sizeof *C0), (*Cs)[2] = malloc(nr * sizeof *Cs);
+    int rc = 0;
+    for (int k = 0; k < nr; k++) { par0[k] = innermost(&R[0], k, rings_ring(&R[0], k)); ring_center(&R[0], k, C0[k]); }
+    for (int s = 1; s < N && rc == 0; s++) {
+        struct rings *r = &R[s];
+        for (int k = 0; k < nr; k++) { pars[k] = innermost(r, k, rings_ring(r, k)); ring_center(r, k, Cs[k]); }
+        if ((rc = match_children(par0, pars, nr, -1, -1, C0, Cs, s, perm)) < 0) break;
+        int same = 1;
+        for (int k = 0; k < nr; k++) same &= perm[k] == k;
+        if (same) continue;
+        (*moved)++;
+        /* rebuild the rings in shape 0's order; remap the indices */
+        int np = r->start[nr];
+        double *P = malloc(2 * (size_t)np * sizeof *P);
+        long *L = malloc((size_t)np * sizeof *L);
+        int *start = malloc((nr + 1) * sizeof *start), *newstart = malloc(nr * sizeof *newstart);
+        int v = 0;
+        for (int k = 0; k < nr; k++) {
+            int o = perm[k], n = rings_count(r, o);
+            start[k] = v;
+            newstart[o] = v;
+            memcpy(P + 2 * v, rings_ring(r, o), 2 * (size_t)n * sizeof *P);
+            memcpy(L + v, r->line + r->start[o], (size_t)n * sizeof *L);
+            v += n;
+        }
+        start[nr] = v;
+        for (int k = 0; k < ncorr; k++) {
+            int g = corr[(size_t)k * N + s], o = 0;
+            if (g < 0 || g >= np) continue;   /* compat_multi names it */
+            while (g >= r->start[o + 1]) o++;
+            corr[(size_t)k * N + s] = newstart[o] + g - r->start[o];
+        }
+        free(r->P); free(r->line); free(r->start);
+        r->P = P; r->line = L; r->start = start;
+        free(newstart);
+    }
+    free(par0); free(pars); free(perm); free(C0); free(Cs);
+    return rc;
+}

@@ -45,6 +45,18 @@ extern "C" {
  * (cm_errmsg names the shape and ring). */
 int compat_nest(int N, struct rings *R, int *parent, unsigned char *flipped);
 
+/* Put every shape's rings in shape 0's order (for traced frames, whose
+ * rings come in an order of their own, e.g. img2rings: by area): the
+ * top-level rings, then recursively the rings inside matched rings, are
+ * paired with shape 0's by the smallest sum of distances between their
+ * mean vertices, taken relative to each shape's bounding box (exhaustive
+ * up to 8 rings per level, greedy above).
+ * R        N ring sets (rings of shapes 1.. reordered in place)
+ * corr     ncorr by N global vertex indices (remapped in place)
+ * moved    out: number of shapes whose order changed
+ * Returns -1 if the shapes have different ring counts at some level. */
+int compat_order_rings(int N, struct rings *R, int *corr, int ncorr, int *moved);
+
 /* Is ring k of a nesting a hole (inside an odd number of rings)? */
 int compat_is_hole(const int *parent, int k);
 

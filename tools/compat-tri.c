@@ -31,6 +31,10 @@ static const char help[] =
 "                        2N columns x0 y0 x1 y1 ... (the point in SHAPE0,\n"
 "                        SHAPE1, ...); each becomes one vertex at exactly\n"
 "                        those positions\n"
+"      --match-rings M   how rings are paired across shapes: 'order' (default:\n"
+"                        ring k with ring k) or 'nearest' (each shape's rings\n"
+"                        reordered to SHAPE0's by nesting and nearest mean\n"
+"                        vertex, e.g. for frames traced by img2rings)\n"
 "  -e, --error E         outline tolerance: two-sided Hausdorff distance of\n"
 "                        the simplified to the input outline, as a fraction\n"
 "                        of each pose's bounding-box diagonal (default 0.005;\n"
@@ -52,7 +56,7 @@ static const char help[] =
 struct options {
     const char *corr, *output, *interior;
     double err, edge;
-    int smooth, raw, split;
+    int smooth, raw, split, nearest;
     int nshapes;
     char **shapes;
 };
@@ -61,7 +65,7 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"corr", 1, 0, 'c'}, {"interior", 1, 0, 'i'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
-        {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
+        {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"match-rings", 1, 0, 'M'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10;
@@ -77,6 +81,11 @@ static void parse_args(int argc, char **argv, struct options *o)
             if (!strcmp(optarg, "overlay")) o->split = COMPAT_OVERLAY;
             else if (!strcmp(optarg, "linkpath")) o->split = COMPAT_LINKPATH;
             else usage_error("--split must be 'overlay' or 'linkpath'");
+            break;
+        case 'M':
+            if (!strcmp(optarg, "order")) o->nearest = 0;
+            else if (!strcmp(optarg, "nearest")) o->nearest = 1;
+            else usage_error("--match-rings must be 'order' or 'nearest'");
             break;
         case 'R': o->raw = 1; break;
         case 'o': o->output = optarg; break;
@@ -138,15 +147,6 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
         if (R[s].nrings != nr)
             die("cannot read '%s': %d ring%s, but '%s' has %d (rings are matched by order)", R[s].name,
                 R[s].nrings, R[s].nrings == 1 ? "" : "s", R[0].name, nr);
-    int *parent = malloc(nr * sizeof *parent);
-    unsigned char *flipped = malloc((size_t)N * nr);
-    if (compat_nest(N, R, parent, flipped) < 0) die("rings do not match: %s", cm_errmsg());
-    int nholes = 0, nflip = 0;
-    for (int k = 0; k < nr; k++) nholes += compat_is_hole(parent, k);
-    for (size_t k = 0; k < (size_t)N * nr; k++) nflip += flipped[k];
-    info(1, "%d ring%s per shape: %d piece%s, %d hole%s; %d ring%s reversed (indices refer to the file order)",
-         nr, nr == 1 ? "" : "s", nr - nholes, nr - nholes == 1 ? "" : "s", nholes, nholes == 1 ? "" : "s",
-         nflip, nflip == 1 ? "" : "s");
     struct columns C, I = {0};
     if (columns_read(o->corr, N, -1, NULL, &C) < 0) die("%s", cm_errmsg());
     int *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
@@ -157,6 +157,19 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
                 data_line(o->corr, (int)(k / N) + 1), x);
         corr[k] = (int)x;
     }
+    int moved = 0;
+    if (o->nearest && compat_order_rings(N, R, corr, C.rows, &moved) < 0)
+        die("rings do not match: %s", cm_errmsg());
+    if (o->nearest) info(1, "--match-rings nearest: rings of %d shape%s reordered", moved, moved == 1 ? "" : "s");
+    int *parent = malloc(nr * sizeof *parent);
+    unsigned char *flipped = malloc((size_t)N * nr);
+    if (compat_nest(N, R, parent, flipped) < 0) die("rings do not match: %s", cm_errmsg());
+    int nholes = 0, nflip = 0;
+    for (int k = 0; k < nr; k++) nholes += compat_is_hole(parent, k);
+    for (size_t k = 0; k < (size_t)N * nr; k++) nflip += flipped[k];
+    info(1, "%d ring%s per shape: %d piece%s, %d hole%s; %d ring%s reversed (indices refer to the file order)",
+         nr, nr == 1 ? "" : "s", nr - nholes, nr - nholes == 1 ? "" : "s", nholes, nholes == 1 ? "" : "s",
+         nflip, nflip == 1 ? "" : "s");
     if (o->interior && columns_read(o->interior, 2 * N, -1, NULL, &I) < 0) die("%s", cm_errmsg());
     double st[4];
     if (compat_multi(N, R, parent, flipped, corr, C.rows, I.x, I.rows, o->err, cp, st) < 0) {
