@@ -8,7 +8,7 @@
 #    build/bench/poly-mesh) in the same run: worst angle and vertex count as
 #    ratios to CGAL's.
 # 2. N poses: worst angle over every triangle of every pose for --refine
-#    refine and --refine remesh against --refine none (the old output).
+#    refine against --refine none (the old output).
 # 3. Time for six poses (elephant: 120-138 input points per pose; creature:
 #    ~280), CPU seconds, against the goal of 1 s.
 set -u
@@ -59,15 +59,10 @@ multi() { # NAME CORR RING... : worst angle of refine and remesh vs none, CPU ti
 	name=$1 corr=$2; shift 2
 	tn=$(cpu "$T/n.log" compat-tri -v --refine none -c "$corr" "$@") || return 1
 	tr=$(cpu "$T/r.log" compat-tri -v --refine refine -c "$corr" "$@") || return 1
-	tm=$(cpu "$T/m.log" compat-tri -v --refine remesh -c "$corr" "$@") || return 1
 	set -- $(ct_stats "$T/n.log"); an=$1 vn=$2
 	set -- $(ct_stats "$T/r.log"); ar=$1 vr=$2
-	set -- $(ct_stats "$T/m.log"); am=$1 vm=$2
 	ur=$(sed -n 's/.*pose [0-9]* .*, \([0-9.]*\)% under 20.*/\1/p' "$T/r.log" | sort -n | tail -1)
-	um=$(sed -n 's/.*pose [0-9]* .*, \([0-9.]*\)% under 20.*/\1/p' "$T/m.log" | sort -n | tail -1)
-	grep -q "remeshed by transfer" "$T/m.log" && how="transfer" || how="transfer failed, refined"
 	echo "compat-tri --refine refine, $name: worst $ar deg ($vr vertices, up to $ur% of a pose's triangles under 20 deg, $tr s CPU) | baseline --refine none: $an deg ($vn vertices, $tn s CPU) | ratio $(awk -v a="$ar" -v b="$an" 'BEGIN { printf "%.1f", a / (b > 0 ? b : 0.01) }')"
-	echo "compat-tri --refine remesh, $name: worst $am deg ($vm vertices, up to $um% under 20 deg, $tm s CPU; $how) | baseline --refine none: $an deg | ratio $(awk -v a="$am" -v b="$an" 'BEGIN { printf "%.1f", a / (b > 0 ? b : 0.01) }')"
 	echo "compat-tri --refine refine time, $name: $tr s CPU | baseline goal: 1 s | ratio $(awk -v a="$tr" 'BEGIN { printf "%.2f", a }')"
 }
 

@@ -46,6 +46,7 @@ void compat_free(struct compat *c)
         if (c->B) free(c->B[s]);
     }
     free(c->X); free(c->B); free(c->F);
+    free(c->ring_start); free(c->ring_parent); free(c->pt_ring);
     memset(c, 0, sizeof *c);
 }
 
@@ -154,6 +155,17 @@ int compat_match(int N, double *const *P, const int *n, const int *corr, int nco
                     }
                     for (int i = 0; i < u; i++)
                         polyline_at(P[s], n[s], a, len + 1, cum, T[i], c->X[s] + 2 * (size_t)(M + i));
+                    /* the shape's own vertices exactly (a parameter merged
+                     * within 1e-6 with another shape's, or rounded) */
+                    for (int i = 0, x = 0; i < len; i++) {
+                        double ti = cum[i] / cum[len];
+                        while (x + 1 < u && fabs(T[x + 1] - ti) < fabs(T[x] - ti)) x++;
+                        if (fabs(T[x] - ti) <= 1e-6) {
+                            const double *p = P[s] + 2 * ((a + i) % n[s]);
+                            c->X[s][2 * (size_t)(M + x)] = p[0];
+                            c->X[s][2 * (size_t)(M + x) + 1] = p[1];
+                        }
+                    }
                 }
                 for (int i = 0; i < u; i++) kp[M + i] = i == 0;
             }
@@ -843,6 +855,11 @@ static int triangulate_rec(struct compat *c, int *poly, int m, int depth)
     if (rc == 0) rc = triangulate_rec(c, p2, m2, depth + 1);
     free(p1); free(p2);
     return rc;
+}
+
+int compat_triangulate_poly(struct compat *c, int *poly, int m)
+{
+    return triangulate_rec(c, poly, m, 0);
 }
 
 int compat_triangulate(struct compat *c)

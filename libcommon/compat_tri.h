@@ -51,6 +51,14 @@ struct compat {
     /* private: the matched boundary before simplification (for errors) */
     int nm;           /* M merged boundary points */
     double **B;       /* N arrays, M by 2 */
+    /* several rings (compat_holes.h; 0 / NULL for one outer ring 0..nb-1):
+     * ring r is vertices ring_start[r] .. ring_start[r+1]-1 (pieces CCW,
+     * holes CW), then npts interior correspondence points; all nb fixed */
+    int nrings;
+    int *ring_start;  /* nrings + 1 */
+    int *ring_parent; /* nrings: enclosing ring, -1 for a piece */
+    int npts;
+    int *pt_ring;     /* npts: the piece (outer ring) holding each point */
 };
 
 /* Boundary matching.
@@ -92,6 +100,11 @@ enum { COMPAT_OVERLAY = 0, COMPAT_LINKPATH = 1 };
 /* Compatible triangulation of the boundary polygons (interior Steiner
  * points appended after the boundary).  Returns -1 if it fails. */
 int compat_triangulate(struct compat *c);
+
+/* Compatible triangulation of one simple sub-polygon: poly lists m vertex
+ * ids, counter-clockwise in every shape.  Faces and Steiner points are
+ * appended (c->nf is not reset).  Returns -1 if it fails. */
+int compat_triangulate_poly(struct compat *c, int *poly, int m);
 
 /* Refinement to a target edge length (fraction of the bounding-box
  * diagonal, <= 0: none), flips and smoothing (iters rounds). */

@@ -9,6 +9,8 @@
  *   ...
  *
  * The first ring is the outer boundary, counter-clockwise; holes clockwise.
+ * A ring inside an odd number of rings is a hole, any other ring a separate
+ * piece (counter-clockwise); see compat_nest() in compat_holes.h.
  * '#' comments and blank lines are allowed.  The reader keeps the line of
  * every point so later checks (self-intersection) can name it.
  */

@@ -3,6 +3,7 @@
  * one MESH animation of N frames sharing one face list.
  */
 #include "compat_tri.h"
+#include "compat_holes.h"
 #include "compat_refine.h"
 #include "columns.h"
 #include "mesh.h"
@@ -17,37 +18,40 @@
 
 static const char help[] =
 "Usage: compat-tri -c CORR [options] SHAPE0 SHAPE1 ...\n"
-"Compatible triangulation of N outlines (ring files, one outer ring each):\n"
-"one MESH stream of N frames with one face list, frame i = shape i.\n"
+"Compatible triangulation of N outlines (ring files): one MESH stream of N\n"
+"frames with one face list, frame i = shape i.  Outlines may have holes and\n"
+"several pieces, matched ring by ring (same rings in the same order).\n"
 "\n"
 "  -c, --corr FILE       correspondence points: one row per point, N columns,\n"
-"                        column i = vertex index (0-based) in SHAPEi's ring;\n"
-"                        at least 3 rows, in the same order along every outline\n"
+"                        column i = vertex index (0-based) in SHAPEi's file\n"
+"                        (points of all rings counted in file order); one\n"
+"                        outer ring: at least 3 rows, in the same order along\n"
+"                        every outline; several rings: each row on one ring,\n"
+"                        a ring without rows is matched from its first vertex\n"
+"  -i, --interior FILE   interior correspondence points: one row per point,\n"
+"                        2N columns x0 y0 x1 y1 ... (the point in SHAPE0,\n"
+"                        SHAPE1, ...); each becomes one vertex at exactly\n"
+"                        those positions\n"
+"      --match-rings M   how rings are paired across shapes: 'order' (default:\n"
+"                        ring k with ring k) or 'nearest' (each shape's rings\n"
+"                        reordered to SHAPE0's by nesting and nearest mean\n"
+"                        vertex, e.g. for frames traced by img2rings)\n"
 "  -e, --error E         outline tolerance: two-sided Hausdorff distance of\n"
 "                        the simplified to the input outline, as a fraction\n"
 "                        of each pose's bounding-box diagonal (default 0.005;\n"
 "                        0: keep every input point)\n"
-"  -l, --edge-length L   --refine none: refine interior edges to L times the\n"
-"                        mean boundary edge length (default 3; 0: none)\n"
-"  -s, --smooth N        --refine none: smoothing + flip rounds (default 10)\n"
-"      --refine MODE     'auto' (default: both of the next two, keeps the\n"
-"                        better worst angle), 'refine' (compatible refinement\n"
-"                        of the compatible triangulation, Surazhsky-Gotsman:\n"
-"                        edge splits in all poses, compatible flips, per-pose\n"
-"                        smoothing, until every angle of every pose reaches\n"
-"                        --min-angle or --max-vertices is reached), 'remesh'\n"
-"                        (a pose's outline meshed alone, carried to the other\n"
-"                        poses by ARAP with the outline fixed, then 'refine';\n"
-"                        if a triangle stays inverted from every reference\n"
-"                        pose, says so and does 'refine') or 'none' (the\n"
-"                        edge-length refinement of -l and -s)\n"
-"                        (auto tries poses 0 and 1 as the reference)\n"
+"  -l, --edge-length L   refine interior edges to L times the mean boundary\n"
+"                        edge length (default 3; 0: no refinement)\n"
+"  -s, --smooth N        smoothing + flip rounds (default 10; 0: none)\n"
+"                        (-l and -s: --refine none, and holes/pieces)\n"
+"      --refine MODE     'refine' (default: compatible refinement, Surazhsky-\n"
+"                        Gotsman: edge splits in all poses, compatible flips,\n"
+"                        per-pose smoothing, until every angle of every pose\n"
+"                        reaches --min-angle or --max-vertices is reached;\n"
+"                        one outer ring only) or 'none' (-l and -s)\n"
 "  -a, --min-angle DEG   goal of --refine (default 20)\n"
-"      --size H          --refine remesh: no edge of the reference mesh longer\n"
-"                        than H times the bounding-box diagonal (default\n"
-"                        0.05; 0: angle goal only)\n"
-"      --max-vertices K  --refine stops splitting at K vertices\n"
-"                        (default 10 times the boundary vertex count)\n"
+"      --max-vertices K  --refine stops splitting at K vertices (default 10\n"
+"                        times the simplified outline's vertex count)\n"
 "      --split MODE      pieces that no common diagonal or single Steiner point\n"
 "                        splits: 'overlay' (default: overlay of the shapes'\n"
 "                        triangulations, always succeeds) or 'linkpath' (the\n"
@@ -59,13 +63,11 @@ static const char help[] =
 "\n"
 "Example: compat-tri -v -c corr.txt pose1.rings pose2.rings | mesh2svg -g >t.svg\n";
 
-enum { REFINE_NONE, REFINE_REFINE, REFINE_REMESH, REFINE_AUTO };
-
 struct options {
-    const char *corr, *output;
+    const char *corr, *output, *interior;
     double err, edge;
-    int smooth, raw, split, refine, max_nv;
-    double min_angle, size;
+    int smooth, raw, split, nearest, refine, max_nv;
+    double min_angle;
     int nshapes;
     char **shapes;
 };
@@ -73,16 +75,17 @@ struct options {
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
-        {"corr", 1, 0, 'c'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
-        {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'},
-        {"max-vertices", 1, 0, 'K'}, {"size", 1, 0, 'z'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
+        {"corr", 1, 0, 'c'}, {"interior", 1, 0, 'i'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
+        {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"match-rings", 1, 0, 'M'},
+        {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'K'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
-    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = REFINE_AUTO; o->min_angle = 20; o->size = 0.05;
+    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20;
     int c;
-    while ((c = getopt_long(argc, argv, "c:e:l:s:a:o:vh", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'c': o->corr = optarg; break;
+        case 'i': o->interior = optarg; break;
         case 'e': o->err = arg_double(optarg, "--error"); break;
         case 'l': o->edge = arg_double(optarg, "--edge-length"); break;
         case 's': o->smooth = arg_int(optarg, "--smooth"); break;
@@ -91,15 +94,17 @@ static void parse_args(int argc, char **argv, struct options *o)
             else if (!strcmp(optarg, "linkpath")) o->split = COMPAT_LINKPATH;
             else usage_error("--split must be 'overlay' or 'linkpath'");
             break;
+        case 'M':
+            if (!strcmp(optarg, "order")) o->nearest = 0;
+            else if (!strcmp(optarg, "nearest")) o->nearest = 1;
+            else usage_error("--match-rings must be 'order' or 'nearest'");
+            break;
         case 'Q':
-            if (!strcmp(optarg, "remesh")) o->refine = REFINE_REMESH;
-            else if (!strcmp(optarg, "refine")) o->refine = REFINE_REFINE;
-            else if (!strcmp(optarg, "none")) o->refine = REFINE_NONE;
-            else if (!strcmp(optarg, "auto")) o->refine = REFINE_AUTO;
-            else usage_error("--refine must be 'auto', 'remesh', 'refine' or 'none'");
+            if (!strcmp(optarg, "refine")) o->refine = 1;
+            else if (!strcmp(optarg, "none")) o->refine = 0;
+            else usage_error("--refine must be 'refine' or 'none'");
             break;
         case 'a': o->min_angle = arg_double(optarg, "--min-angle"); break;
-        case 'z': o->size = arg_double(optarg, "--size"); break;
         case 'K': o->max_nv = arg_int(optarg, "--max-vertices"); break;
         case 'R': o->raw = 1; break;
         case 'o': o->output = optarg; break;
@@ -115,13 +120,96 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->smooth < 0 || o->smooth > 10000) usage_error("--smooth must be in 0..10000");
     if (!(o->min_angle > 0 && o->min_angle <= 60)) usage_error("--min-angle must be in (0, 60] degrees");
     if (o->max_nv < 0) usage_error("--max-vertices must be >= 0");
-    if (!(o->size >= 0 && o->size <= 1)) usage_error("--size must be in [0, 1]");
     o->nshapes = argc - optind;
     o->shapes = argv + optind;
     if (o->nshapes < 1) usage_error("expected at least one SHAPE file");
     for (int i = 0; i < o->nshapes; i++)
         if (!strcmp(o->shapes[i], "-") && o->nshapes > 1)
             usage_error("stdin can be only the single shape");
+}
+
+/* file line of data row k (1-based) of a column file, for messages;
+ * 0 if the file cannot be read again (stdin) */
+static long data_line(const char *path, int k)
+{
+    FILE *f = path && strcmp(path, "-") ? fopen(path, "r") : NULL;
+    if (!f) return 0;
+    char buf[4096];
+    long line = 0, ans = 0;
+    int row = 0, fresh = 1;
+    while (fgets(buf, sizeof buf, f)) {
+        if (fresh) {
+            line++;
+            const char *p = buf + strspn(buf, " \t\r");
+            if (*p && *p != '\n' && *p != '#' && ++row == k) { ans = line; break; }
+        }
+        fresh = strchr(buf, '\n') != NULL;
+    }
+    fclose(f);
+    return ans;
+}
+
+/* "row K: ..." from libcommon -> die naming the file and line */
+static void die_row(const char *path)
+{
+    const char *m = cm_errmsg();
+    int k;
+    long line;
+    if (sscanf(m, "row %d:", &k) == 1 && (line = data_line(path, k)) > 0)
+        die("cannot read '%s': line %ld:%s", path, line, strchr(m, ':') + 1);
+    die("cannot read '%s': %s", path, m);
+}
+
+/* several rings or interior points: compat_holes.h */
+static void build_multi(const struct options *o, struct rings *R, struct compat *cp)
+{
+    int N = o->nshapes, nr = R[0].nrings;
+    for (int s = 1; s < N; s++)
+        if (R[s].nrings != nr)
+            die("cannot read '%s': %d ring%s, but '%s' has %d (rings are matched by order)", R[s].name,
+                R[s].nrings, R[s].nrings == 1 ? "" : "s", R[0].name, nr);
+    struct columns C, I = {0};
+    if (columns_read(o->corr, N, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    int *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
+    for (size_t k = 0; k < (size_t)C.rows * N; k++) {
+        double x = C.x[k];
+        if (x != floor(x) || x < 0 || x > 1e9)
+            die("cannot read '%s': line %ld: '%g' is not a vertex index", o->corr,
+                data_line(o->corr, (int)(k / N) + 1), x);
+        corr[k] = (int)x;
+    }
+    int moved = 0;
+    if (o->nearest && compat_order_rings(N, R, corr, C.rows, &moved) < 0)
+        die("rings do not match: %s", cm_errmsg());
+    if (o->nearest) info(1, "--match-rings nearest: rings of %d shape%s reordered", moved, moved == 1 ? "" : "s");
+    int *parent = malloc(nr * sizeof *parent);
+    unsigned char *flipped = malloc((size_t)N * nr);
+    if (compat_nest(N, R, parent, flipped) < 0) die("rings do not match: %s", cm_errmsg());
+    int nholes = 0, nflip = 0;
+    for (int k = 0; k < nr; k++) nholes += compat_is_hole(parent, k);
+    for (size_t k = 0; k < (size_t)N * nr; k++) nflip += flipped[k];
+    info(1, "%d ring%s per shape: %d piece%s, %d hole%s; %d ring%s reversed (indices refer to the file order)",
+         nr, nr == 1 ? "" : "s", nr - nholes, nr - nholes == 1 ? "" : "s", nholes, nholes == 1 ? "" : "s",
+         nflip, nflip == 1 ? "" : "s");
+    if (o->interior && columns_read(o->interior, 2 * N, -1, NULL, &I) < 0) die("%s", cm_errmsg());
+    double st[4];
+    if (compat_multi(N, R, parent, flipped, corr, C.rows, I.x, I.rows, o->err, cp, st) < 0) {
+        const char *m = cm_errmsg();
+        /* point rows come after every correspondence check */
+        die_row(o->interior && (strstr(m, "point") || strstr(m, "same as")) ? o->interior : o->corr);
+    }
+    if (st[3] > 0) info(1, "%g ring%s without a correspondence row: matched from the first vertex", st[3],
+                        st[3] == 1 ? "" : "s");
+    if (st[0] < o->err) info(1, "tolerance halved to %g so that no two rings touch and every point stays "
+                                "inside its piece", st[0]);
+    info(1, "boundary: %d points on %d rings and %d interior points (tolerance %g of the diagonal; largest "
+            "two-sided Hausdorff distance %.3g, in %s)", cp->ring_start[nr], nr, cp->npts, st[0], st[1],
+         o->shapes[(int)st[2]]);
+    cp->split_mode = o->split;
+    if (compat_multi_triangulate(cp) < 0) die("%s", cm_errmsg());
+    free(parent); free(flipped); free(corr);
+    columns_free(&C);
+    if (o->interior) columns_free(&I);
 }
 
 int main(int argc, char **argv)
@@ -135,8 +223,7 @@ int main(int argc, char **argv)
 
     /* read and check every outline */
     struct rings *R = calloc(N, sizeof *R);
-    double **P = malloc(N * sizeof *P);
-    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
+    int multi = o.interior != NULL;
     for (int s = 0; s < N; s++) {
         if (rings_read(o.shapes[s], &R[s]) < 0) die("%s", cm_errmsg());
         for (int k = 0; k < R[s].nrings; k++)
@@ -144,9 +231,14 @@ int main(int argc, char **argv)
                 die("cannot read '%s': line %ld: degenerate outline (ring %d encloses no area)", R[s].name,
                     R[s].line[R[s].start[k]] - 1, k + 1);
         if (rings_check_simple(&R[s]) < 0) die("%s", cm_errmsg());
-        if (R[s].nrings != 1)
-            die("cannot read '%s': line %ld: %d rings; compat-tri needs one simple outer outline "
-                "(holes and pieces are not supported)", R[s].name, R[s].line[R[s].start[1]], R[s].nrings);
+        if (R[s].nrings != 1) multi = 1;
+    }
+    struct compat cp;
+    if (multi) build_multi(&o, R, &cp);
+    else {
+    double **P = malloc(N * sizeof *P);
+    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
+    for (int s = 0; s < N; s++) {
         flipped[s] = rings_orient(&R[s]);
         P[s] = R[s].P;
         n[s] = rings_count(&R[s], 0);
@@ -180,7 +272,6 @@ int main(int argc, char **argv)
             }
     }
 
-    struct compat cp;
     unsigned char *keep = NULL;
     int rev = compat_corr_order(N, n, corr, C.rows);
     if (rev < 0) die("cannot read '%s': %s", o.corr, cm_errmsg());
@@ -199,70 +290,45 @@ int main(int argc, char **argv)
     }
     info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
             "largest two-sided Hausdorff distance %.3g, in %s)", M, cp.nb, o.err, hmax, o.shapes[hs]);
-    struct compat_refine_params pa = {o.min_angle * M_PI / 180, o.size, o.max_nv ? o.max_nv : 10 * cp.nb, 200};
-    int remeshed = 0;
-    struct compat_refine_stats rs;
-    struct compat rm;   /* the remeshed result (--refine remesh, auto) */
-    memset(&rm, 0, sizeof rm);
-    if (o.refine == REFINE_REMESH || o.refine == REFINE_AUTO) {
-        /* auto tries the first two poses as the reference, remesh every pose */
-        int nref = o.refine == REFINE_AUTO && N > 2 ? 2 : N;
-        for (int r = 0; r < nref && !remeshed; r++) {
-            if (compat_copy(&cp, &rm) < 0) die("%s", cm_errmsg());
-            remeshed = compat_remesh(&rm, r, &pa, &rs);
-            if (remeshed < 0) die("%s", cm_errmsg());
-            if (remeshed)
-                info(1, "remeshed by transfer from %s: %d rounds, %d interior and %d boundary splits, %d flips, "
-                        "%d moves; min angle %.2f deg", o.shapes[r], rs.rounds, rs.splits, rs.bsplits, rs.flips,
-                     rs.moves, compat_min_angle(&rm, NULL) * 180 / M_PI);
-            else compat_free(&rm);
-        }
-        if (!remeshed)
-            info(1, "remeshing by transfer left inverted triangles from %s: "
-                    "refining the compatible triangulation instead", nref < N ? "poses 0 and 1 as the reference" : "every reference pose");
+    if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
+    free(keep); free(corr); columns_free(&C);
+    free(P); free(n); free(flipped);
     }
-    pa.size = 0;   /* the size bound is for the reference mesh only */
-    if (remeshed && o.refine == REFINE_REMESH) { compat_free(&cp); cp = rm; memset(&rm, 0, sizeof rm); }
-    else remeshed = 0;
-    if (!remeshed) {
-        if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
-        double ma0, q0 = compat_min_angle(&cp, &ma0);
-        info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
-                "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
-             cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
-    }
-    if (!remeshed && o.refine == REFINE_NONE) {
-        /* target edge length: mean boundary edge, relative to each shape's diagonal */
-        double target = 0;
-        if (o.edge > 0) {
-            for (int s = 0; s < N; s++) {
-                double L = 0, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-                for (int i = 0; i < cp.nb; i++) {
-                    int j = (i + 1) % cp.nb;
-                    L += hypot(cp.X[s][2 * j] - cp.X[s][2 * i], cp.X[s][2 * j + 1] - cp.X[s][2 * i + 1]);
-                    for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], cp.X[s][2 * i + d]); hi[d] = fmax(hi[d], cp.X[s][2 * i + d]); }
-                }
-                target += L / cp.nb / hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    double ma0, q0 = compat_min_angle(&cp, &ma0);
+    info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
+            "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
+         cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
+    /* target edge length: mean boundary edge, relative to each shape's diagonal */
+    double target = 0;
+    if (o.edge > 0) {
+        for (int s = 0; s < N; s++) {
+            double L = 0, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+            int ne = 0;
+            for (int i = 0; i < cp.nb; i++) {
+                int j = compat_boundary_next(&cp, i);   /* along the vertex's ring */
+                if (j < 0) continue;
+                L += hypot(cp.X[s][2 * j] - cp.X[s][2 * i], cp.X[s][2 * j + 1] - cp.X[s][2 * i + 1]);
+                ne++;
+                for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], cp.X[s][2 * i + d]); hi[d] = fmax(hi[d], cp.X[s][2 * i + d]); }
             }
-            target = o.edge * target / N;
+            target += L / ne / hypot(hi[0] - lo[0], hi[1] - lo[1]);
         }
+        target = o.edge * target / N;
+    }
+    if (o.refine && (cp.nrings > 0 || cp.npts > 0))
+        info(1, "holes, pieces or interior points: --refine refine handles one outer ring only; "
+                "using the edge-length refinement (--refine none)");
+    if (!o.refine || cp.nrings > 0 || cp.npts > 0) {
         if (compat_improve(&cp, target, o.smooth) < 0) die("%s", cm_errmsg());
-    } else if (!remeshed) {
-        double q1 = compat_min_angle(&cp, NULL);
+    } else {
+        struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : 10 * cp.nb, 200};
+        struct compat_refine_stats rs;
         if (compat_refine(&cp, &pa, &rs) < 0) die("%s", cm_errmsg());
         info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d flips, %d moves; "
-                "min angle %.2f -> %.2f deg%s", rs.rounds, rs.splits, rs.bsplits, rs.flips, rs.moves,
-             q1 * 180 / M_PI, compat_min_angle(&cp, NULL) * 180 / M_PI, rs.kept_input ? " (worse: input kept)" : "");
+                "min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", rs.rounds, rs.splits, rs.bsplits,
+             rs.flips, rs.moves, q0 * 180 / M_PI, compat_min_angle(&cp, NULL) * 180 / M_PI,
+             rs.kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(&cp) * 180 / M_PI);
     }
-    if (rm.N) {   /* auto: the better of remeshing and refinement */
-        double qr = compat_min_angle(&rm, NULL), qc = compat_min_angle(&cp, NULL);
-        info(1, "kept the %s (min angle %.2f deg; the other %.2f deg)", qr > qc ? "remeshed mesh" : "refined mesh",
-             fmax(qr, qc) * 180 / M_PI, fmin(qr, qc) * 180 / M_PI);
-        if (qr > qc) { struct compat x = cp; cp = rm; rm = x; }
-        compat_free(&rm);
-    }
-    if (o.refine != REFINE_NONE)
-        info(1, "sharpest outline corner %.2f deg", compat_sharpest_corner(&cp) * 180 / M_PI);
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
         compat_pose_quality(&cp, s, &mn, &u10, &u20);
@@ -290,8 +356,7 @@ int main(int argc, char **argv)
     out_close(out);
     mesh_free(&m);
     compat_free(&cp);
-    free(keep); free(corr); columns_free(&C);
     for (int s = 0; s < N; s++) rings_free(&R[s]);
-    free(R); free(P); free(n); free(flipped);
+    free(R);
     return 0;
 }

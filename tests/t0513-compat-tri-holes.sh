@@ -1,0 +1,132 @@
+#!/bin/sh
+test_description='compat-tri: holes (eyes, the gap between the legs), several pieces, interior points'
+. "$(dirname "$0")/test-lib.sh"
+
+# check a plain MESH stream of N frames against the input ring files:
+# every triangle positive in every frame (> 0 as printed), every
+# correspondence row (global vertex indices) and every interior point a
+# vertex at exactly its input position, the triangles' area equal to the
+# rings' (PIECES, 1-based ring numbers, minus the other rings) within REL
+# (0: to 1e-9, and every input vertex must be a mesh vertex), COMP
+# connected components
+check_holes() {   # check_holes MESH CORR PTS REL COMP PIECES RING...
+	ch_mesh=$1 ch_corr=$2 ch_pts=$3 ch_rel=$4 ch_comp=$5 ch_pieces=$6; shift 6
+	awk -v nr=$# -v rel="$ch_rel" -v comp="$ch_comp" -v pieces="$ch_pieces" '
+	function flush() { if (rs) { a = 0; for (i = 0; i < rs; i++) { j = (i + 1) % rs; a += RX[i] * RY[j] - RX[j] * RY[i] }
+		a = (a > 0 ? a : -a) / 2; A[ri] += (rk in PC) ? a : -a }; rs = 0 }
+	function find(x) { while (P[x] != x) x = P[x] = P[P[x]]; return x }
+	BEGIN { ri = -1; nf = 0; rs = 0; np = split(pieces, pp, " "); for (i = 1; i <= np; i++) PC[pp[i]] = 1 }
+	FILENAME == ARGV[1] {
+		if ($1 == "f") { F0[nf] = $2; F1[nf] = $3; F2[nf] = $4; nf++; next }
+		if ($1 == "frame") { fr = $2; k = 0; next }
+		if (fr != "" && NF == 3) { X[fr, k] = $1; Y[fr, k] = $2; V[fr, $1 " " $2] = 1; k++; nv = k }
+		next }
+	FILENAME == ARGV[2] { for (s = 0; s < NF; s++) C[FNR - 1, s] = $(s + 1); nc = FNR; next }
+	FILENAME == ARGV[3] { for (s = 0; s < NF / 2; s++) { QX[FNR - 1, s] = $(2 * s + 1); QY[FNR - 1, s] = $(2 * s + 2) }; nq = FNR; next }
+	FNR == 1 { flush(); ri++; pi = 0; rk = 0 }
+	$1 == "ring" { flush(); rk++; next }
+	{ PX[ri, pi] = $1; PY[ri, pi] = $2; RX[rs] = $1; RY[rs] = $2; rs++; pi++; NP[ri] = pi }
+	END { flush(); bad = 0; tol = rel ? rel : 1e-9
+		for (s = 0; s < nr; s++) { tot = 0
+			for (t = 0; t < nf; t++) {
+				a = (X[s,F1[t]]-X[s,F0[t]])*(Y[s,F2[t]]-Y[s,F0[t]]) - (Y[s,F1[t]]-Y[s,F0[t]])*(X[s,F2[t]]-X[s,F0[t]])
+				if (!(a > 0)) { print "frame " s ": triangle " t " has area " a; bad = 1 }
+				tot += a / 2 }
+			d = tot - A[s]
+			if (!(d < tol * A[s] && -d < tol * A[s])) { print "frame " s ": mesh area " tot ", rings " A[s]; bad = 1 }
+			for (c = 0; c < nc; c++) { i = C[c, s]
+				if (!((s, PX[s, i] " " PY[s, i]) in V)) { print "shape " s ": correspondence " c " (vertex " i ") is not a mesh vertex"; bad = 1 } }
+			for (c = 0; c < nq; c++)
+				if (!((s, QX[c, s] " " QY[c, s]) in V)) { print "shape " s ": interior point " c " is not a mesh vertex"; bad = 1 }
+			if (!rel) for (i = 0; i < NP[s]; i++)
+				if (!((s, PX[s, i] " " PY[s, i]) in V)) { print "shape " s ": input vertex " i " is not a mesh vertex"; bad = 1 } }
+		for (v = 0; v < nv; v++) P[v] = v
+		for (t = 0; t < nf; t++) { P[find(F0[t])] = find(F1[t]); P[find(F1[t])] = find(F2[t]) }
+		for (t = 0; t < nf; t++) if (!(find(F0[t]) in R)) { R[find(F0[t])] = 1; nco++ }
+		if (nco != comp) { print nco " components, expected " comp; bad = 1 }
+		exit bad }' "$ch_mesh" "$ch_corr" "$ch_pts" "$@"
+}
+
+# poses K..: rings pK.rings, columns of the tips and points of those poses
+make_inputs() {   # make_inputs NAME K...
+	mi=$1; shift
+	: >"$mi.corr.tmp"; : >"$mi.pts.tmp"; mi_files=
+	for k in "$@"; do
+		if [ -s "$mi.corr.tmp" ]; then
+			paste -d" " "$mi.corr.tmp" "tips$k.col" >"$mi.c2" && mv "$mi.c2" "$mi.corr.tmp"
+			paste -d" " "$mi.pts.tmp" "pts$k" >"$mi.p2" && mv "$mi.p2" "$mi.pts.tmp"
+		else cp "tips$k.col" "$mi.corr.tmp" && cp "pts$k" "$mi.pts.tmp"; fi
+		mi_files="$mi_files p$k.rings"
+	done
+	mv "$mi.corr.tmp" "$mi.corr" && mv "$mi.pts.tmp" "$mi.pts"
+}
+
+test_expect_success 'setup: six poses of a character with two eyes and a gap between its legs' '
+	for k in 0 1 2 3 4 5; do
+		awk -v pose=$k -v tips=tips$k -v pts=pts$k -f "$TEST_DIRECTORY/t0513-holey.awk" >p$k.rings &&
+		tr " " "\n" <tips$k >tips$k.col || return 1
+	done &&
+	test $(grep -c ring p0.rings) = 4 && test $(wc -l <tips0.col) = 4
+'
+test_expect_success 'pose subsets (2..6 poses): positive, corners and interior points exact, holes kept open' '
+	for set in "0 1" "0 2" "0 3" "0 4" "0 5" "1 4" "0 1 2" "3 4 5" "0 1 2 3" "1 2 3 4 5" "0 1 2 3 4 5"; do
+		make_inputs sub $set &&
+		compat-tri -l 0 -s 0 -c sub.corr -i sub.pts $mi_files >sub.mesh 2>sub.err &&
+		check_holes sub.mesh sub.corr sub.pts 0.02 1 1 $mi_files || { echo "poses $set: $(cat sub.err)"; return 1; }
+	done
+'
+test_expect_success 'all six with refinement and smoothing: positive, interior points still exact' '
+	make_inputs all 0 1 2 3 4 5 &&
+	compat-tri -v -c all.corr -i all.pts $mi_files >all.mesh 2>log &&
+	check_holes all.mesh all.corr all.pts 0.02 1 1 $mi_files &&
+	grep -q "1 piece, 3 holes" log && grep -q "2 rings without a correspondence row" log &&
+	grep -q "2 interior points" log
+'
+test_expect_success '-e 0: every input vertex of every ring is a mesh vertex, areas exact' '
+	make_inputs e0 0 3 5 &&
+	compat-tri -e 0 -l 0 -s 0 -c e0.corr -i e0.pts $mi_files >e0.mesh &&
+	check_holes e0.mesh e0.corr e0.pts 0 1 1 $mi_files
+'
+test_expect_success 'two pieces (a separate tail): one mesh of two components' '
+	for k in 0 1 2 3; do
+		awk -v pose=$k -v tail=1 -v tips=tips$k -v pts=pts$k -f "$TEST_DIRECTORY/t0513-holey.awk" >p$k.rings &&
+		tr " " "\n" <tips$k >tips$k.col || return 1
+	done &&
+	make_inputs tail 0 1 2 3 &&
+	for k in 0 1 2 3; do mv p$k.rings tail$k.rings || return 1; done &&
+	mi_files="tail0.rings tail1.rings tail2.rings tail3.rings" &&
+	compat-tri -v -c tail.corr -i tail.pts $mi_files >tail.mesh 2>log &&
+	grep -q "2 pieces, 3 holes" log &&
+	check_holes tail.mesh tail.corr tail.pts 0.02 2 "1 5" $mi_files &&
+	compat-tri -e 0 -l 0 -s 0 -c tail.corr $mi_files >tail0.mesh &&
+	: >nopts && check_holes tail0.mesh tail.corr nopts 0 2 "1 5" $mi_files
+'
+test_expect_success 'hole counts differ: one-line error naming the file' '
+	for k in 0 1 2 3; do
+		awk -v pose=$k -v tips=tips$k -v pts=pts$k -f "$TEST_DIRECTORY/t0513-holey.awk" >p$k.rings &&
+		tr " " "\n" <tips$k >tips$k.col || return 1
+	done &&
+	awk -v pose=2 -v eyes=1 -v tips=t2 -v pts=q2 -f "$TEST_DIRECTORY/t0513-holey.awk" >oneeye.rings &&
+	cut -d" " -f1,2 all.corr >c01 &&
+	test_fails_cleanly compat-tri -c c01 p0.rings oneeye.rings &&
+	grep -q "cannot read .oneeye.rings.: 3 rings, but .p0.rings. has 4" .err
+'
+test_expect_success 'an interior point outside its outline or in an eye: error naming file and line' '
+	make_inputs two 0 1 &&
+	{ echo "# nose, navel, then a point off the body"; cat two.pts; echo "9 9 9 9"; } >out.pts &&
+	test_fails_cleanly compat-tri -c two.corr -i out.pts p0.rings p1.rings &&
+	grep -q "cannot read .out.pts.: line 4: point (9, 9) of shape 0 lies outside its outline" .err &&
+	x=$(awk "/^ring/ { r++; next } r == 3 { print \$1 - 0.05, \$2; exit }" p0.rings) &&
+	{ head -1 two.pts; echo "$x $(head -1 two.pts | cut -d" " -f3,4)"; } >eye.pts &&
+	test_fails_cleanly compat-tri -c two.corr -i eye.pts p0.rings p1.rings &&
+	grep -q "line 2: .* lies outside its outline (in a hole)" .err
+'
+test_expect_success 'a correspondence row on different rings in two shapes: error' '
+	printf "0 0\n28 19\n87 130\n" >mixed.corr &&
+	test_fails_cleanly compat-tri -c mixed.corr p0.rings p1.rings && grep -q "line 3: .*ring" .err
+'
+test_expect_success 'rings nested differently (an eye outside the head): error' '
+	awk "/^ring/ { r++ } r == 3 && !/^ring/ { \$1 += 3 } { print }" p1.rings >moved.rings &&
+	test_fails_cleanly compat-tri -c two.corr p0.rings moved.rings && grep -q "ring 3 lies in no ring" .err
+'
+test_done
