@@ -139,6 +139,68 @@ static void die_row(const char *path)
     die("cannot read '%s': %s", path, m);
 }
 
+/* one outer ring per shape: the paper's pipeline */
+static void build_single(const struct options *o, struct rings *R, struct compat *cp)
+{
+    int N = o->nshapes;
+    double **P = malloc(N * sizeof *P);
+    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
+    for (int s = 0; s < N; s++) {
+        flipped[s] = rings_orient(&R[s]);
+        P[s] = R[s].P;
+        n[s] = rings_count(&R[s], 0);
+        if (flipped[s]) info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
+    }
+    /* correspondences: rows by N columns of integer indices */
+    struct columns C;
+    if (columns_read(o->corr, 0, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    if (C.cols != N)
+        die("cannot read '%s': line 1: %d columns, but there are %d shapes", o->corr, C.cols, N);
+    if (C.rows < 3)
+        die("cannot read '%s': %d correspondence point%s; at least 3 are needed to match the outlines",
+            o->corr, C.rows, C.rows == 1 ? "" : "s");
+    int *corr = malloc((size_t)C.rows * N * sizeof *corr);
+    for (int k = 0; k < C.rows; k++)
+        for (int s = 0; s < N; s++) {
+            double x = C.x[(size_t)k * N + s];
+            if (x != floor(x) || x < 0 || x >= n[s])
+                die("cannot read '%s': row %d: '%g' is not a vertex index of '%s' (0..%d)", o->corr, k + 1,
+                    x, o->shapes[s], n[s] - 1);
+            int v = (int)x;
+            corr[(size_t)k * N + s] = flipped[s] ? n[s] - 1 - v : v;
+        }
+    /* rows given along a clockwise file order run backwards after reversal */
+    if (flipped[0]) {
+        for (int a = 0, b = C.rows - 1; a < b; a++, b--)
+            for (int s = 0; s < N; s++) {
+                int t = corr[(size_t)a * N + s];
+                corr[(size_t)a * N + s] = corr[(size_t)b * N + s];
+                corr[(size_t)b * N + s] = t;
+            }
+    }
+    unsigned char *keep = NULL;
+    int rev = compat_corr_order(N, n, corr, C.rows);
+    if (rev < 0) die("cannot read '%s': %s", o->corr, cm_errmsg());
+    if (rev) info(1, "%s: points run clockwise along the outlines; using them in reverse order", o->corr);
+    if (compat_match(N, P, n, corr, C.rows, cp, &keep) < 0)
+        die("cannot read '%s': %s", o->corr, cm_errmsg());
+    int M = cp->nb;
+    cp->split_mode = o->split;
+    compat_simplify(cp, o->err, keep);
+    /* the outline actually kept, against the input rings */
+    double hmax = 0;
+    int hs = 0;
+    for (int s = 0; s < N; s++) {
+        double h = compat_outline_error(cp, s, P[s], n[s]);
+        if (h > hmax) { hmax = h; hs = s; }
+    }
+    info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
+            "largest two-sided Hausdorff distance %.3g, in %s)", M, cp->nb, o->err, hmax, o->shapes[hs]);
+    if (compat_triangulate(cp) < 0) die("%s", cm_errmsg());
+    free(keep); free(corr); columns_free(&C);
+    free(P); free(n); free(flipped);
+}
+
 /* several rings or interior points: compat_holes.h */
 static void build_multi(const struct options *o, struct rings *R, struct compat *cp)
 {
@@ -214,65 +276,7 @@ int main(int argc, char **argv)
     }
     struct compat cp;
     if (multi) build_multi(&o, R, &cp);
-    else {
-    double **P = malloc(N * sizeof *P);
-    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
-    for (int s = 0; s < N; s++) {
-        flipped[s] = rings_orient(&R[s]);
-        P[s] = R[s].P;
-        n[s] = rings_count(&R[s], 0);
-        if (flipped[s]) info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
-    }
-    /* correspondences: rows by N columns of integer indices */
-    struct columns C;
-    if (columns_read(o.corr, 0, -1, NULL, &C) < 0) die("%s", cm_errmsg());
-    if (C.cols != N)
-        die("cannot read '%s': line 1: %d columns, but there are %d shapes", o.corr, C.cols, N);
-    if (C.rows < 3)
-        die("cannot read '%s': %d correspondence point%s; at least 3 are needed to match the outlines",
-            o.corr, C.rows, C.rows == 1 ? "" : "s");
-    int *corr = malloc((size_t)C.rows * N * sizeof *corr);
-    for (int k = 0; k < C.rows; k++)
-        for (int s = 0; s < N; s++) {
-            double x = C.x[(size_t)k * N + s];
-            if (x != floor(x) || x < 0 || x >= n[s])
-                die("cannot read '%s': row %d: '%g' is not a vertex index of '%s' (0..%d)", o.corr, k + 1,
-                    x, o.shapes[s], n[s] - 1);
-            int v = (int)x;
-            corr[(size_t)k * N + s] = flipped[s] ? n[s] - 1 - v : v;
-        }
-    /* rows given along a clockwise file order run backwards after reversal */
-    if (flipped[0]) {
-        for (int a = 0, b = C.rows - 1; a < b; a++, b--)
-            for (int s = 0; s < N; s++) {
-                int t = corr[(size_t)a * N + s];
-                corr[(size_t)a * N + s] = corr[(size_t)b * N + s];
-                corr[(size_t)b * N + s] = t;
-            }
-    }
-
-    unsigned char *keep = NULL;
-    int rev = compat_corr_order(N, n, corr, C.rows);
-    if (rev < 0) die("cannot read '%s': %s", o.corr, cm_errmsg());
-    if (rev) info(1, "%s: points run clockwise along the outlines; using them in reverse order", o.corr);
-    if (compat_match(N, P, n, corr, C.rows, &cp, &keep) < 0)
-        die("cannot read '%s': %s", o.corr, cm_errmsg());
-    int M = cp.nb;
-    cp.split_mode = o.split;
-    compat_simplify(&cp, o.err, keep);
-    /* the outline actually kept, against the input rings */
-    double hmax = 0;
-    int hs = 0;
-    for (int s = 0; s < N; s++) {
-        double h = compat_outline_error(&cp, s, P[s], n[s]);
-        if (h > hmax) { hmax = h; hs = s; }
-    }
-    info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
-            "largest two-sided Hausdorff distance %.3g, in %s)", M, cp.nb, o.err, hmax, o.shapes[hs]);
-    if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
-    free(keep); free(corr); columns_free(&C);
-    free(P); free(n); free(flipped);
-    }
+    else build_single(&o, R, &cp);
     double ma0, q0 = compat_min_angle(&cp, &ma0);
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
