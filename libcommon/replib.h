@@ -117,7 +117,12 @@ struct replib_opts {
                                    trials: the piece whose frames are cheapest to hand to
                                    their second-best pieces is moved onto a D^2-sampled
                                    badly fitted frame, the descent rerun, and the result
-                                   kept only if its energy is lower */
+                                   kept only if its energy is lower.  With lambda > 0 and
+                                   the DP, the trials' label steps consider only the 16
+                                   cheapest pieces of each frame (by data cost) and its
+                                   current label, in O(n (d + 17^2)) instead of O(n d^2);
+                                   one exact descent from the best result follows, so the
+                                   output is a fixed point of the exact label step */
     int threads;                /* restarts run in parallel on this many threads (0: one per core);
                                    the result does not depend on it */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
