@@ -74,10 +74,7 @@ static void z_rows(const struct replib_data *D, const double *sw, int i0, int nb
 }
 
 /* The low-rank test streams Z by blocks of rows (never the whole N x 3#V). */
-/* The input's decimal step: the smallest q = 10^-k (k = 0..9) such that
- * every sampled coordinate is a multiple of q to double rounding (text
- * exports print a fixed number of decimals: OBJ 6), or 0 if none. */
-static double input_step(const double *X, size_t count)
+double replib_input_step(const double *X, size_t count)
 {
     size_t stride = count / 65536 + 1;
     for (int k = 0; k <= 9; k++) {
@@ -103,7 +100,7 @@ static int gram_lowrank(struct replib_data *D, const double *sw, double **Zr_out
      * with step q are known to +-q/2, so a residual of RMS q/2 per
      * (weighted) coordinate is below the input's precision; without a
      * decimal step (binary input), 1e-12 relative as before. */
-    double q = input_step(D->X, (size_t)D->n * m3), wsum = 0;
+    double q = replib_input_step(D->X, (size_t)D->n * m3), wsum = 0;
     for (int i = 0; i < D->nv; i++) wsum += D->w ? D->w[i] : 1;
     double tolq = (double)N * 3 * wsum * (q / 2) * (q / 2), eprev = INFINITY;
     D->step = q;
@@ -485,13 +482,27 @@ static int lstate_apply(const struct lstate *s, const double *Y1, int n1, const 
     return 0;
 }
 
+/* x_g - ref of the kept 32-bit frame g (fixed point or float), in double */
+static void kept_row(const struct replib_data *D, int g, double *row)
+{
+    size_t m3 = D->m3;
+    const double *b = D->xbase ? D->xbase + (size_t)(g / REPLIB_KEEP_CHUNK) * m3 : D->ref;
+    if (D->Xi) {
+        const int32_t *x = D->Xi + (size_t)g * m3;
+        for (size_t t = 0; t < m3; t++) row[t] = (b[t] - D->ref[t]) + x[t] * D->xstep;
+    } else {
+        const float *x = D->Xf + (size_t)g * m3;
+        for (size_t t = 0; t < m3; t++) row[t] = (b[t] - D->ref[t]) + x[t];
+    }
+}
+
 /* The library in model coordinates (d by 3#V): from the frames (double or
  * single precision), or from the reduced coordinates and their basis. */
 static int library_out(const struct replib_data *D, const struct lstate *s, double *R)
 {
     int n = D->n, m3 = D->m3, d = s->d;
     if (D->X) return lstate_apply(s, D->X, n, D->Rfix, m3, R);
-    if (D->Xf) {
+    if (D->Xf || D->Xi) {
         /* rows are frames only (no fixed pieces with the sketch) */
         double *row = malloc(sizeof(double) * m3);
         if (!row) return cm_seterr("replib: out of memory");
@@ -500,13 +511,13 @@ static int library_out(const struct replib_data *D, const struct lstate *s, doub
         if (nf && !tmp) { free(row); return cm_seterr("replib: out of memory"); }
         for (int a = 0; a < d; a++)
             if (s->src[a] >= 0) {
-                const float *x = D->Xf + (size_t)s->src[a] * m3;
-                for (int t = 0; t < m3; t++) R[(size_t)a * m3 + t] = D->ref[t] + x[t];
+                kept_row(D, s->src[a], row);
+                for (int t = 0; t < m3; t++) R[(size_t)a * m3 + t] = D->ref[t] + row[t];
             }
         for (int k = 0; k < s->nnz; k++) {
-            const float *x = D->Xf + (size_t)s->ci[k] * m3;
             double v = s->v[k], *o = tmp + (size_t)s->ri[k] * m3;
-            for (int t = 0; t < m3; t++) o[t] += v * x[t];
+            kept_row(D, s->ci[k], row);
+            for (int t = 0; t < m3; t++) o[t] += v * row[t];
         }
         if (nf) lsolve(s, m3, tmp);
         for (int p = 0; p < nf; p++) {
@@ -1375,7 +1386,8 @@ double replib_label_timed(const struct replib_data *D, double lambda, enum repli
     return E;
 }
 
-static void evaluate(const double *X, const float *Xf, const double *ref, int n, int nv, const double *R,
+static void evaluate(const double *X, const float *Xf, const int32_t *Xi, double q, const double *xbase,
+                     const double *ref, int n, int nv, const double *R,
                      const int *l, const double *w, const unsigned char *cut, double lambda,
                      struct replib_report *rep, double *frame_err)
 {
@@ -1387,13 +1399,16 @@ static void evaluate(const double *X, const float *Xf, const double *ref, int n,
     if (!X) {       /* two frames in double at a time */
         xb = malloc(sizeof(double) * 2 * m3);
         if (!xb) { memset(rep, 0, sizeof *rep); rep->energy = NAN; return; }
-        for (size_t k = 0; k < m3; k++) xb[m3 + k] = ref[k] + Xf[k];
+#define KEPT(f, k) ((xbase ? xbase[(size_t)((f) / REPLIB_KEEP_CHUNK) * m3 + (k)] : ref[k]) + \
+                   (Xi ? Xi[(size_t)(f) * m3 + (k)] * q : Xf[(size_t)(f) * m3 + (k)]))
+        for (size_t k = 0; k < m3; k++) xb[m3 + k] = KEPT(0, k);
     }
     for (int f = 0; f < n; f++) {
         if (xb) {
             memcpy(xb, xb + m3, sizeof(double) * m3);
             if (f + 1 < n)
-                for (size_t k = 0; k < m3; k++) xb[m3 + k] = ref[k] + Xf[(size_t)(f + 1) * m3 + k];
+                for (size_t k = 0; k < m3; k++) xb[m3 + k] = KEPT(f + 1, k);
+#undef KEPT
         }
         const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
         double fm = 0;
@@ -1438,13 +1453,21 @@ void replib_evaluate(const double *X, int n, int nv, const double *R, int d, con
                      struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(X, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(X, NULL, NULL, 0, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }
 
-void replib_evaluate_f(const float *Xf, const double *ref, int n, int nv, const double *R, int d,
+void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
                        const int *l, const double *w, const unsigned char *cut, double lambda,
                        struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(NULL, Xf, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(NULL, Xf, NULL, 0, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+}
+
+void replib_evaluate_i(const int32_t *Xi, double q, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
+                       const int *l, const double *w, const unsigned char *cut, double lambda,
+                       struct replib_report *rep, double *frame_err)
+{
+    (void)d;
+    evaluate(NULL, NULL, Xi, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }
