@@ -33,7 +33,7 @@ static const char help[] =
 "                       (the index compat-tri -c expects; for outlines the\n"
 "                       index in the file's ring, ring number first if several)\n"
 "      --points-file FILE  mark and number (1, 2, ... in row order) the vertices\n"
-"                       named in column 1 of FILE, e.g. compat-tri --points-out\n"
+"                       named in column 1 of FILE, e.g. a compat-tri -c file\n"
 "      --points-column N   take the vertex indices from column N (1-based)\n"
 "  -o, --output FILE    write to FILE (temporary + rename) instead of stdout\n"
 "  -h, --help           show this help\n"
