@@ -121,13 +121,9 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'I': o->init_labels = optarg; break;
         case 'L': o->labels_out = optarg; break;
-        case 'c': o->swap_cost = arg_double(optarg, "--swap-cost");
-            if (!(o->swap_cost >= 0)) usage_error("--swap-cost must be >= 0");
-            break;
+        case 'c': o->swap_cost = arg_nonneg(optarg, "--swap-cost"); break;
         case 'Z':
-            o->nswap = arg_doublelist(optarg, "--swap-sweep", &o->swap_sweep);
-            for (int k = 0; k < o->nswap; k++)
-                if (!(o->swap_sweep[k] >= 0)) usage_error("--swap-sweep: %g is negative", o->swap_sweep[k]);
+            o->nswap = arg_nonneg_list(optarg, "--swap-sweep", &o->swap_sweep);
             break;
         case 'P': o->report = optarg; break;
         case 'E': o->max_error = arg_double(optarg, "--max-error");
