@@ -12,7 +12,9 @@
 # git), run with the same options (it has no --search: its method is the
 # plain descent).  Lines: default options (5 restarts,
 # greedy start, local search) and -r 1 --search 0 (one plain descent, the
-# cheapest run).  BENCH_FULL=1 adds the Bunny under the old release (4.3 GB,
+# cheapest run); after each default run a "kept frames" line gives the
+# largest rounding of the frames kept beside the sketch (int32 of the
+# input's decimal step, or floats) against half that step.  BENCH_FULL=1 adds the Bunny under the old release (4.3 GB,
 # about a minute) and the film-scale stream (100,000 frames of a
 # 10,000-vertex part piped from dict-tile, against 5,000 frames).
 set -u
@@ -52,7 +54,13 @@ timed() { # prints "wall cpu peak_MB energy" of dict-learn-like command "$@" --r
 line() { # name V F d paper_s old(0/1) file
     name=$1 V=$2 F=$3 d=$4 paper=$5 runold=$6 f=$7
     for opts in "" "-r 1 --search 0"; do
-        new=$(timed dict-learn -d $d -l 2 $opts "$f") || { echo "table1 $name: dict-learn failed"; continue; }
+        new=$(timed dict-learn -v -d $d -l 2 $opts "$f") || { echo "table1 $name: dict-learn failed"; continue; }
+        # the frames kept beside the sketch: their largest rounding against
+        # half the input's decimal step (what the input can represent)
+        [ -z "$opts" ] && sed -n 's/.*frames kept exactly as integers of the input.s step \([^ ]*\) (largest rounding \([^ ]*\) .*/\1 \2/p; s/.*single-precision frames: largest rounding \([^ ]*\) .*/0 \1 float/p' "$T/err" |
+            awk -v n="$name" '{ kind = NF == 3 ? "floats" : "int32 of the input step " $1;
+                printf "kept frames %s (stream): largest rounding %.3g model units (%s) | baseline half the input step %s | ratio %.3g\n",
+                    n, $2, kind, ($1 > 0 ? $1 / 2 : "-"), ($1 > 0 ? ($1 / 2) / ($2 > 0 ? $2 : 1e-300) : 0) }'
         old="- - - -"
         if [ -n "$OLD" ] && [ "$runold" = 1 ]; then
             old=$(timed "$OLD" -d $d -l 2 ${opts%--search 0} "$f") || old="- - - -"

@@ -70,6 +70,7 @@ extern "C" int cdt2_mesh_box(const double lo[2], const double hi[2], const doubl
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <cmath>
 #include <set>
+#include <cstring>
 
 namespace {
 typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> PVb;
@@ -116,6 +117,27 @@ int polygon_triangles(int m, const double *X, std::vector<int> &T)
     return 0;
 }
 
+}
+
+extern "C" int cdt2_polygon(int m, const double *X, int **F)
+{
+    *F = NULL;
+    if (m < 3) return cm_seterr("polygon of %d corners", m);
+    try {
+        std::vector<int> T;
+        if (polygon_triangles(m, X, T) < 0)
+            return cm_seterr("the polygon is not simple (%s)",
+                             strstr(cm_errmsg(), "repeated") ? "a corner repeats" : "its edges cross");
+        *F = (int *)malloc(sizeof(int) * T.size() + 1);
+        if (!*F) return cm_seterr("out of memory");
+        std::copy(T.begin(), T.end(), *F);
+        return 0;
+    } catch (const std::exception &e) {
+        return cm_seterr("polygon triangulation failed: %s", e.what());
+    }
+}
+
+namespace {
 typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
 typedef CGAL::Triangulation_vertex_base_with_info_2<int, EK> EVb;
 typedef CGAL::Constrained_triangulation_face_base_2<EK> EFb;

@@ -56,6 +56,15 @@ int cdt2_overlay(int m, int N, const double *const *X, double **S, int *k, int *
 int cdt2_mesh_polygon(const double *P, int n, double shape, double size,
                       double **V, int *nv, int **F, int *nf);
 
+/* The m - 2 triangles of a simple polygon without new points (CGAL
+ * constrained Delaunay triangulation with exact predicates; inside = odd
+ * nesting).  Unique for corners in general position (no four cocircular).
+ * X        m by 2 corners in order (either orientation)
+ * F        out: (m - 2) by 3 corner indices, counter-clockwise (malloc'd)
+ * Returns 0, or -1 (cm_errmsg set) when a corner repeats or the polygon is
+ * not simple (edges cross). */
+int cdt2_polygon(int m, const double *X, int **F);
+
 #ifdef __cplusplus
 }
 #endif

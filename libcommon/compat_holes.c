@@ -98,15 +98,7 @@ int compat_nest(int N, struct rings *R, int *parent, unsigned char *flipped)
             int hole = compat_is_hole(parent, k);
             flipped[(size_t)s * nr + k] = 0;
             if ((!hole && a < 0) || (hole && a > 0)) {
-                double *P = rings_ring(r, k);
-                long *L = r->line + r->start[k];
-                int n = rings_count(r, k);
-                for (int i = 0, j = n - 1; i < j; i++, j--) {
-                    double t0 = P[2 * i], t1 = P[2 * i + 1];
-                    P[2 * i] = P[2 * j]; P[2 * i + 1] = P[2 * j + 1];
-                    P[2 * j] = t0; P[2 * j + 1] = t1;
-                    long tl = L[i]; L[i] = L[j]; L[j] = tl;
-                }
+                rings_reverse(r, k);
                 flipped[(size_t)s * nr + k] = 1;
             }
         }

@@ -32,10 +32,25 @@ int pose_weights_build(struct pose_weights *pw, const double *P, int N, double m
         for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], P[2 * i + d]); hi[d] = fmax(hi[d], P[2 * i + d]); }
     double ext = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(ext > 0)) ext = 1;
+    /* the closest pair of poses, in the user's terms if it is too close */
+    int ci = -1, cj = -1;
+    double dmin = INFINITY;
     for (int i = 0; i < N; i++)
-        for (int j = 0; j < i; j++)
-            if (hypot(P[2 * i] - P[2 * j], P[2 * i + 1] - P[2 * j + 1]) <= 1e-9 * ext)
-                return cm_seterr("poses %d and %d are at the same point", j + 1, i + 1);
+        for (int j = 0; j < i; j++) {
+            double d = hypot(P[2 * i] - P[2 * j], P[2 * i + 1] - P[2 * j + 1]);
+            if (d < dmin) { dmin = d; ci = j; cj = i; }
+        }
+    if (N > 1 && !(dmin > POSE_WEIGHTS_MIN_SEPARATION * ext)) {
+        if (dmin == 0)
+            return cm_seterr("poses %d and %d are at the same place (%.17g %.17g) in pose space; a place "
+                             "can have only one pose: drop one of them, or move one to its own place",
+                             ci + 1, cj + 1, P[2 * ci], P[2 * ci + 1]);
+        return cm_seterr("poses %d and %d nearly coincide: %.3g apart, %.2g of the poses' extent (below "
+                         "%g), so their weights would swing by hundreds between them; drop one of them, "
+                         "or move them at least %.3g apart (a twentieth of the extent keeps the weights "
+                         "within about [-3, 4])", ci + 1, cj + 1, dmin, dmin / ext,
+                         POSE_WEIGHTS_MIN_SEPARATION, POSE_WEIGHTS_MIN_SEPARATION * ext);
+    }
     /* normalized coordinates: poses centred, extent 1 */
     double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
     double *Pn = malloc(2 * (size_t)N * sizeof *Pn);
@@ -92,7 +107,14 @@ int pose_weights_build(struct pose_weights *pw, const double *P, int N, double m
     struct quad_solver *S = quad_solver_new(Q, fixed);
     sparse_free(&Q);
     free(fixed);
-    if (!S) { free(Y); free(V); free(F); free(pidx); return -1; }
+    if (!S) {
+        free(Y); free(V); free(F); free(pidx);
+        if (N > 1)
+            return cm_seterr("the weights have no unique solution (%s); the closest poses are %d and %d, "
+                             "%.3g apart (%.2g of the extent): move them apart or drop one", cm_errmsg(),
+                             ci + 1, cj + 1, dmin, dmin / ext);
+        return -1;
+    }
     double *W = malloc((size_t)nv * N * sizeof *W);
     int rc = quad_solver_solve(S, NULL, Y, W, N);
     quad_solver_free(S);

@@ -44,7 +44,12 @@ static void *big_alloc(size_t bytes)
     return p;
 }
 
-#define GRAM_AUTO_MAX 12000   /* N above this: K would exceed ~1.1 GB; use direct */
+#define GRAM_AUTO_MAX 12000
+/* candidates per frame in the label steps of split/merge trials at lambda
+ * > 0 (the cheapest pieces by data cost, plus the current label): on the
+ * Monkey-size benchmark (d = 150) 8, 16 and 32 all gave the exact DP's
+ * final energy, at 9.5, 11.1 and 12.8 s CPU against 15.7 s */
+#define REPLIB_TRIAL_CANDIDATES 16   /* N above this: K would exceed ~1.1 GB; use direct */
 
 /* Exact low-rank Gram matrix.  Blend-shape animations (faces) have a small
  * rank: facecap's 335 frames span 52 dimensions to rounding.  With a random
@@ -69,10 +74,7 @@ static void z_rows(const struct replib_data *D, const double *sw, int i0, int nb
 }
 
 /* The low-rank test streams Z by blocks of rows (never the whole N x 3#V). */
-/* The input's decimal step: the smallest q = 10^-k (k = 0..9) such that
- * every sampled coordinate is a multiple of q to double rounding (text
- * exports print a fixed number of decimals: OBJ 6), or 0 if none. */
-static double input_step(const double *X, size_t count)
+double replib_input_step(const double *X, size_t count)
 {
     size_t stride = count / 65536 + 1;
     for (int k = 0; k <= 9; k++) {
@@ -98,7 +100,7 @@ static int gram_lowrank(struct replib_data *D, const double *sw, double **Zr_out
      * with step q are known to +-q/2, so a residual of RMS q/2 per
      * (weighted) coordinate is below the input's precision; without a
      * decimal step (binary input), 1e-12 relative as before. */
-    double q = input_step(D->X, (size_t)D->n * m3), wsum = 0;
+    double q = replib_input_step(D->X, (size_t)D->n * m3), wsum = 0;
     for (int i = 0; i < D->nv; i++) wsum += D->w ? D->w[i] : 1;
     double tolq = (double)N * 3 * wsum * (q / 2) * (q / 2), eprev = INFINITY;
     D->step = q;
@@ -480,13 +482,27 @@ static int lstate_apply(const struct lstate *s, const double *Y1, int n1, const 
     return 0;
 }
 
+/* x_g - ref of the kept 32-bit frame g (fixed point or float), in double */
+static void kept_row(const struct replib_data *D, int g, double *row)
+{
+    size_t m3 = D->m3;
+    const double *b = D->xbase ? D->xbase + (size_t)(g / REPLIB_KEEP_CHUNK) * m3 : D->ref;
+    if (D->Xi) {
+        const int32_t *x = D->Xi + (size_t)g * m3;
+        for (size_t t = 0; t < m3; t++) row[t] = (b[t] - D->ref[t]) + x[t] * D->xstep;
+    } else {
+        const float *x = D->Xf + (size_t)g * m3;
+        for (size_t t = 0; t < m3; t++) row[t] = (b[t] - D->ref[t]) + x[t];
+    }
+}
+
 /* The library in model coordinates (d by 3#V): from the frames (double or
  * single precision), or from the reduced coordinates and their basis. */
 static int library_out(const struct replib_data *D, const struct lstate *s, double *R)
 {
     int n = D->n, m3 = D->m3, d = s->d;
     if (D->X) return lstate_apply(s, D->X, n, D->Rfix, m3, R);
-    if (D->Xf) {
+    if (D->Xf || D->Xi) {
         /* rows are frames only (no fixed pieces with the sketch) */
         double *row = malloc(sizeof(double) * m3);
         if (!row) return cm_seterr("replib: out of memory");
@@ -495,13 +511,13 @@ static int library_out(const struct replib_data *D, const struct lstate *s, doub
         if (nf && !tmp) { free(row); return cm_seterr("replib: out of memory"); }
         for (int a = 0; a < d; a++)
             if (s->src[a] >= 0) {
-                const float *x = D->Xf + (size_t)s->src[a] * m3;
-                for (int t = 0; t < m3; t++) R[(size_t)a * m3 + t] = D->ref[t] + x[t];
+                kept_row(D, s->src[a], row);
+                for (int t = 0; t < m3; t++) R[(size_t)a * m3 + t] = D->ref[t] + row[t];
             }
         for (int k = 0; k < s->nnz; k++) {
-            const float *x = D->Xf + (size_t)s->ci[k] * m3;
             double v = s->v[k], *o = tmp + (size_t)s->ri[k] * m3;
-            for (int t = 0; t < m3; t++) o[t] += v * x[t];
+            kept_row(D, s->ci[k], row);
+            for (int t = 0; t < m3; t++) o[t] += v * row[t];
         }
         if (nf) lsolve(s, m3, tmp);
         for (int p = 0; p < nf; p++) {
@@ -533,6 +549,7 @@ struct work {
     double *P, *Q, *C, *Rw;     /* P: N by d; C: d by N (Gram); Rw: d by 3#V (direct) */
     double *U, *T, *H, *c;      /* chain terms */
     struct chain ch;
+    int ncand;                  /* > 0: label steps restricted to this many candidates per frame (search trials) */
 };
 
 static void work_free(struct work *w)
@@ -641,6 +658,82 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
     return 0;
 }
 
+/* The chain DP with frame f restricted to its K cheapest pieces by U
+ * (lowest piece first on ties) and its current label: exact for that
+ * restricted problem, O(n (d + K^2)) instead of O(n d^2).  The current
+ * labels are among the candidates, so the energy never rises above
+ * theirs: a weaker but valid label step for a descent.  l: n labels, in:
+ * the current ones, out: the new ones.  Returns the energy, NAN on
+ * allocation failure. */
+static double dp_candidates(const struct chain *p, int K, int *l)
+{
+    int n = p->n, d = p->d;
+    if (K > d) K = d;
+    int W = K + 1;
+    int *cand = malloc(sizeof(int) * (size_t)n * W), *nc = malloc(sizeof(int) * n);
+    double *hs = malloc(sizeof(double) * (size_t)n * W), *V = malloc(sizeof(double) * W);
+    double *Vn = malloc(sizeof(double) * W);
+    if (!cand || !nc || !hs || !V || !Vn) {
+        free(cand); free(nc); free(hs); free(V); free(Vn);
+        cm_seterr("replib: out of memory (%d frames, %d candidates)", n, W);
+        return NAN;
+    }
+    for (int f = 0; f < n; f++) {
+        const double *u = p->U + (size_t)f * d;
+        int *c = cand + (size_t)f * W, k = 0, in = 0;
+        for (int a = 0; a < d; a++) {
+            if (k == K && !(u[a] < u[c[K - 1]])) continue;
+            int j = k < K ? k++ : K - 1;
+            while (j > 0 && u[c[j - 1]] > u[a]) { c[j] = c[j - 1]; j--; }
+            c[j] = a;
+        }
+        for (int j = 0; j < k; j++) in |= c[j] == l[f];
+        if (!in) c[k++] = l[f];
+        nc[f] = k;
+    }
+    double total = 0;
+    int start = 0;
+    while (start < n) {
+        int end = start;
+        while (end < n - 1 && (!p->link || p->link[end])) end++;
+        for (int i = 0; i < nc[start]; i++) V[i] = p->U[(size_t)start * d + cand[(size_t)start * W + i]];
+        for (int f = start; f < end; f++) {
+            const double *Hf = p->H ? p->H + (size_t)f * d : NULL;
+            const int *ca = cand + (size_t)f * W, *cb = ca + W;
+            double *h = hs + (size_t)f * W, cf = p->c ? p->c[f] : 0;
+            for (int i = 0; i < nc[f]; i++) h[i] = V[i] - (Hf ? Hf[ca[i]] : 0);
+            for (int j = 0; j < nc[f + 1]; j++) {
+                int b = cb[j];
+                double m = INFINITY;
+                for (int i = 0; i < nc[f]; i++) {
+                    double v = h[i] + (p->T ? p->T[(size_t)ca[i] * d + b] : 0);
+                    m = v < m ? v : m;
+                }
+                Vn[j] = m + p->U[(size_t)(f + 1) * d + b] + cf + (Hf ? Hf[b] : 0);
+            }
+            double *t = V; V = Vn; Vn = t;
+        }
+        int best = 0;
+        for (int i = 1; i < nc[end]; i++) if (V[i] < V[best]) best = i;
+        total += V[best];
+        l[end] = cand[(size_t)end * W + best];
+        for (int f = end - 1; f >= start; f--) {
+            const int *ca = cand + (size_t)f * W;
+            const double *h = hs + (size_t)f * W;
+            int b = l[f + 1], im = 0;
+            double m = INFINITY;
+            for (int i = 0; i < nc[f]; i++) {
+                double v = h[i] + (p->T ? p->T[(size_t)ca[i] * d + b] : 0);
+                if (v < m) { m = v; im = i; }
+            }
+            l[f] = ca[im];
+        }
+        start = end + 1;
+    }
+    free(cand); free(nc); free(hs); free(V); free(Vn);
+    return total;
+}
+
 /* label step on the chain in w; l in/out (used as the start for moves) */
 static double label_step(struct work *w, enum replib_method m, int *l, int have_start)
 {
@@ -657,6 +750,7 @@ static double label_step(struct work *w, enum replib_method m, int *l, int have_
         }
         return E;
     }
+    if (m == REPLIB_DP && w->ncand > 0 && have_start) return dp_candidates(&w->ch, w->ncand, l);
     if (m == REPLIB_DP) return chain_dp(&w->ch, l);
     if (!have_start) {
         int n = w->ch.n, d = w->ch.d;
@@ -1097,6 +1191,9 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
     if (!out->labels || lstate_copy(&out->s, s) < 0) { out->rc = -1; return; }
     memcpy(out->labels, l, sizeof(int) * n);
     out->E = E;
+    /* trials at lambda > 0 with the DP: label steps on a few candidates
+     * per frame, then one exact descent from the best */
+    w->ncand = o->method == REPLIB_DP && mu > 0 && o->search > 0 ? REPLIB_TRIAL_CANDIDATES : 0;
     for (int t = 0; t < o->search; t++) {
         memcpy(x->ln, l, sizeof(int) * n);
         if (!split_merge(D, o, w, x, &r)) break;
@@ -1110,6 +1207,17 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
         } else {
             memcpy(l, out->labels, sizeof(int) * n);
             if (lstate_copy(s, &out->s) < 0 || compute_costs(D, s, mu, w) < 0) { out->rc = -1; return; }
+        }
+    }
+    if (w->ncand > 0) {
+        w->ncand = 0;
+        memcpy(l, out->labels, sizeof(int) * n);
+        double En = out->E;
+        if (lstate_copy(s, &out->s) < 0 || descend(D, o, w, s, x, &En, out, &it) < 0) { out->rc = -1; return; }
+        if (En < out->E) {
+            out->E = En;
+            memcpy(out->labels, l, sizeof(int) * n);
+            if (lstate_copy(&out->s, s) < 0) { out->rc = -1; return; }
         }
     }
     if (o->search > 0 && compute_costs(D, &out->s, mu, w) < 0) { out->rc = -1; return; }
@@ -1278,7 +1386,8 @@ double replib_label_timed(const struct replib_data *D, double lambda, enum repli
     return E;
 }
 
-static void evaluate(const double *X, const float *Xf, const double *ref, int n, int nv, const double *R,
+static void evaluate(const double *X, const float *Xf, const int32_t *Xi, double q, const double *xbase,
+                     const double *ref, int n, int nv, const double *R,
                      const int *l, const double *w, const unsigned char *cut, double lambda,
                      struct replib_report *rep, double *frame_err)
 {
@@ -1290,13 +1399,16 @@ static void evaluate(const double *X, const float *Xf, const double *ref, int n,
     if (!X) {       /* two frames in double at a time */
         xb = malloc(sizeof(double) * 2 * m3);
         if (!xb) { memset(rep, 0, sizeof *rep); rep->energy = NAN; return; }
-        for (size_t k = 0; k < m3; k++) xb[m3 + k] = ref[k] + Xf[k];
+#define KEPT(f, k) ((xbase ? xbase[(size_t)((f) / REPLIB_KEEP_CHUNK) * m3 + (k)] : ref[k]) + \
+                   (Xi ? Xi[(size_t)(f) * m3 + (k)] * q : Xf[(size_t)(f) * m3 + (k)]))
+        for (size_t k = 0; k < m3; k++) xb[m3 + k] = KEPT(0, k);
     }
     for (int f = 0; f < n; f++) {
         if (xb) {
             memcpy(xb, xb + m3, sizeof(double) * m3);
             if (f + 1 < n)
-                for (size_t k = 0; k < m3; k++) xb[m3 + k] = ref[k] + Xf[(size_t)(f + 1) * m3 + k];
+                for (size_t k = 0; k < m3; k++) xb[m3 + k] = KEPT(f + 1, k);
+#undef KEPT
         }
         const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
         double fm = 0;
@@ -1341,13 +1453,21 @@ void replib_evaluate(const double *X, int n, int nv, const double *R, int d, con
                      struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(X, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(X, NULL, NULL, 0, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }
 
-void replib_evaluate_f(const float *Xf, const double *ref, int n, int nv, const double *R, int d,
+void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
                        const int *l, const double *w, const unsigned char *cut, double lambda,
                        struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(NULL, Xf, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(NULL, Xf, NULL, 0, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+}
+
+void replib_evaluate_i(const int32_t *Xi, double q, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
+                       const int *l, const double *w, const unsigned char *cut, double lambda,
+                       struct replib_report *rep, double *frame_err)
+{
+    (void)d;
+    evaluate(NULL, NULL, Xi, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }

@@ -31,10 +31,13 @@
  */
 #ifndef CM_REPLIB_H
 #define CM_REPLIB_H
+#include <stddef.h>
 #include <stdint.h>
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+#define REPLIB_KEEP_CHUNK 64      /* frames per base of the kept 32-bit frames */
 
 enum replib_method { REPLIB_DP = 0, REPLIB_EXPANSION = 1, REPLIB_SWAP = 2 };
 
@@ -64,6 +67,10 @@ struct replib_data {
                                    replib_learn refuses a nonzero value (relabel its library) */
     /* frames held elsewhere (replib_sketch.h): then X is NULL, Z holds
      * reduced coordinates, and the pieces come from */
+    const int32_t *Xi;          /* n by 3#V: (x_f - ref) / xstep, integers (exact), or NULL: */
+    double xstep;               /* the step of Xi */
+    const double *xbase;        /* ceil(n / REPLIB_KEEP_CHUNK) by 3#V: frame f of Xi or Xf is
+                                   x_f = xbase[f / REPLIB_KEEP_CHUNK] + kept (NULL: ref + kept) */
     const float *Xf;            /* n by 3#V: x_f - ref in single precision, or NULL: */
     const double *V;            /* 3#V by zdim orthonormal basis, z ~ Zr V^T */
     const double *ref;          /* 3#V reference frame */
@@ -84,6 +91,12 @@ struct replib_data {
                                    accepted when <= q/2 (what the input can represent) or 1e-12 relative */
     double prep_seconds;        /* time spent in replib_prepare */
 };
+
+/* The input's decimal step: the smallest q = 10^-k (k = 0..9) such that
+ * every sampled coordinate of X (count values, up to 65,536 sampled) is a
+ * multiple of q to double rounding (text exports print a fixed number of
+ * decimals: OBJ 6), or 0 if none. */
+double replib_input_step(const double *X, size_t count);
 
 /* Validate (weights finite and >= 0 with a positive sum, X finite) and
  * precompute.  Returns 0, or -1 with cm_errmsg(). */
@@ -117,7 +130,12 @@ struct replib_opts {
                                    trials: the piece whose frames are cheapest to hand to
                                    their second-best pieces is moved onto a D^2-sampled
                                    badly fitted frame, the descent rerun, and the result
-                                   kept only if its energy is lower */
+                                   kept only if its energy is lower.  With lambda > 0 and
+                                   the DP, the trials' label steps consider only the 16
+                                   cheapest pieces of each frame (by data cost) and its
+                                   current label, in O(n (d + 17^2)) instead of O(n d^2);
+                                   one exact descent from the best result follows, so the
+                                   output is a fixed point of the exact label step */
     int threads;                /* restarts run in parallel on this many threads (0: one per core);
                                    the result does not depend on it */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
@@ -172,8 +190,14 @@ struct replib_report {
 void replib_evaluate(const double *X, int n, int nv, const double *R, int d, const int *l,
                      const double *w, const unsigned char *cut, double lambda,
                      struct replib_report *rep, double *frame_err);
-/* The same with the frames as Xf + ref (Xf: n by 3#V floats, ref: 3#V). */
-void replib_evaluate_f(const float *Xf, const double *ref, int n, int nv, const double *R, int d,
+/* The same with the frames as b_f + Xi q (Xi: n by 3#V integers, q their
+ * step, xbase: the bases b as in struct replib_data, ref: 3#V). */
+void replib_evaluate_i(const int32_t *Xi, double q, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
+                       const int *l, const double *w, const unsigned char *cut, double lambda,
+                       struct replib_report *rep, double *frame_err);
+/* The same with the frames as b_f + Xf (Xf: n by 3#V floats, xbase: the
+ * bases or NULL for ref, ref: 3#V). */
+void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
                        const int *l, const double *w, const unsigned char *cut, double lambda,
                        struct replib_report *rep, double *frame_err);
 

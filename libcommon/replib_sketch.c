@@ -4,6 +4,7 @@
 #include "rng.h"
 #include <cblas.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,7 +20,7 @@ extern void dgels_(const char *trans, const int *m, const int *n, const int *nrh
 void replib_sketch_free(struct replib_sketch *S)
 {
     free(S->ref); free(S->sw); free(S->Om); free(S->Y); free(S->W); free(S->zz); free(S->dd);
-    free(S->cut); free(S->Xf); free(S->zb); free(S->zprev); free(S->V);
+    free(S->cut); free(S->Xk); free(S->xbase); free(S->kb); free(S->zb); free(S->zprev); free(S->V);
     memset(S, 0, sizeof *S);
 }
 
@@ -37,6 +38,7 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     S->zb = malloc(sizeof(double) * (size_t)BATCH * m3);
     S->zprev = malloc(sizeof(double) * m3);
     if (!S->ref || !S->Om || !S->W || !S->zb || !S->zprev) goto oom;
+    if (S->keeping && !(S->kb = malloc(sizeof(double) * (size_t)REPLIB_KEEP_CHUNK * m3))) goto oom;
     if (w) {
         double sum = 0;
         for (int i = 0; i < nv; i++) {
@@ -95,11 +97,68 @@ static int grow(struct replib_sketch *S)
     double *dd = realloc(S->dd, sizeof(double) * nc);
     if (!dd) return -1;
     S->dd = dd;
+    double *xo = realloc(S->xbase, sizeof(double) * (size_t)(nc / REPLIB_KEEP_CHUNK + 1) * S->m3);
+    if (!xo) return -1;
+    S->xbase = xo;
     unsigned char *c = realloc(S->cut, nc);
     if (!c) return -1;
     S->cut = c;
     S->cap = nc;
     return 0;
+}
+
+/* Encode the buffered frames of the chunk that ends before frame f1 into
+ * the kept 32-bit frames: base = the midrange of each coordinate over the
+ * chunk (on the input's grid), then integers of the step while every value
+ * is on the grid and within +-2^31 steps, else floats (all kept frames
+ * turned to floats once, in place). */
+static void keep_chunk(struct replib_sketch *S, int f1)
+{
+    int m3 = S->m3, c = (f1 - 1) / REPLIB_KEEP_CHUNK, f0 = c * REPLIB_KEEP_CHUNK, nb = f1 - f0;
+    double q = S->xstep, e = 0, *o = S->xbase + (size_t)c * m3;
+    for (int t = 0; t < m3; t++) {
+        double lo = S->kb[t], hi = lo;
+        for (int g = 1; g < nb; g++) {
+            double v = S->kb[(size_t)g * m3 + t];
+            lo = v < lo ? v : lo;
+            hi = v > hi ? v : hi;
+        }
+        o[t] = q > 0 ? nearbyint(0.5 * (lo + hi) / q) * q : 0.5 * (lo + hi);
+    }
+    for (int g = 0; g < nb && S->fixed; g++) {
+        const double *x = S->kb + (size_t)g * m3;
+        int32_t *xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
+        for (int t = 0; t < m3; t++) {
+            double v = x[t] - o[t], k = nearbyint(v / q), ek = fabs(k * q - v);
+            if (!(fabs(k) <= 2147483647.0) || ek > 1e-3 * q) { S->fixed = 0; break; }
+            xi[t] = (int32_t)k;
+            if (ek > e) e = ek;
+        }
+    }
+    if (!S->fixed && f0 > 0 && S->xstep > 0 && !S->floated) {
+        /* off the grid or out of range: the earlier chunks to float, in place */
+        for (size_t t = 0; t < (size_t)f0 * m3; t++) {
+            int32_t k;
+            memcpy(&k, (char *)S->Xk + 4 * t, 4);
+            double v = k * q;
+            float fv = (float)v;
+            memcpy((char *)S->Xk + 4 * t, &fv, 4);
+            if (fabs((double)fv - v) > e) e = fabs((double)fv - v);
+        }
+    }
+    if (!S->fixed) {
+        S->floated = 1;
+        for (int g = 0; g < nb; g++) {
+            const double *x = S->kb + (size_t)g * m3;
+            float *xf = (float *)S->Xk + (size_t)(f0 + g) * m3;
+            for (int t = 0; t < m3; t++) {
+                double v = x[t] - o[t];
+                xf[t] = (float)v;
+                if (fabs((double)xf[t] - v) > e) e = fabs((double)xf[t] - v);
+            }
+        }
+    }
+    if (e > S->float_err) S->float_err = e;
 }
 
 int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
@@ -108,30 +167,29 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
     for (int t = 0; t < m3; t++)
         if (!isfinite(x[t])) return cm_seterr("frame %d: vertex %d: coordinate is not finite", f, t / 3);
     if (f == S->cap && grow(S) < 0) return cm_seterr("replib_sketch: out of memory at frame %d", f);
-    if (f == 0) memcpy(S->ref, x, sizeof(double) * m3);
+    if (f == 0) {
+        memcpy(S->ref, x, sizeof(double) * m3);
+        S->xstep = replib_input_step(x, m3);
+        S->fixed = S->xstep > 0;
+    }
     if (S->keeping) {
-        size_t need = (size_t)(f + 1) * m3 * sizeof(float);
+        size_t need = (size_t)(f + 1) * m3 * 4;
         if (need > S->keep_bytes) {
-            free(S->Xf); S->Xf = NULL; S->keeping = 0;      /* too long: sketch only */
+            free(S->Xk); S->Xk = NULL; S->keeping = 0;      /* too long: sketch only */
         } else {
-            /* grow the float frames geometrically, within the budget */
-            float *nx = S->Xf;
+            /* grow the kept frames geometrically, within the budget */
+            void *nx = S->Xk;
             if (f == S->xcap) {
-                size_t nc = S->xcap ? 2 * (size_t)S->xcap : 256, lim = S->keep_bytes / ((size_t)m3 * sizeof(float));
+                size_t nc = S->xcap ? 2 * (size_t)S->xcap : 256, lim = S->keep_bytes / ((size_t)m3 * 4);
                 if (nc > lim) nc = lim;
-                nx = realloc(S->Xf, nc * m3 * sizeof(float));
+                nx = realloc(S->Xk, nc * m3 * 4);
                 if (nx) S->xcap = (int)nc;
             }
-            if (!nx) { free(S->Xf); S->Xf = NULL; S->keeping = 0; }
+            if (!nx) { free(S->Xk); S->Xk = NULL; S->keeping = 0; }
             else {
-                S->Xf = nx;
-                float *xf = nx + (size_t)f * m3;
-                for (int t = 0; t < m3; t++) {
-                    double v = x[t] - S->ref[t];
-                    xf[t] = (float)v;
-                    double e = fabs((double)xf[t] - v);
-                    if (e > S->float_err) S->float_err = e;
-                }
+                S->Xk = nx;
+                memcpy(S->kb + (size_t)(f % REPLIB_KEEP_CHUNK) * m3, x, sizeof(double) * m3);
+                if (f % REPLIB_KEEP_CHUNK == REPLIB_KEEP_CHUNK - 1) keep_chunk(S, f + 1);
             }
         }
     }
@@ -159,6 +217,7 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
 int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
 {
     if (flush(S) < 0) return -1;
+    if (S->keeping && S->n % REPLIB_KEEP_CHUNK) keep_chunk(S, S->n);
     int n = S->n, k = S->k, s = S->s, m3 = S->m3, info = 0;
     if (n < 1) return cm_seterr("replib_sketch: no frames");
     if (!S->keeping && S->sw)
@@ -238,7 +297,10 @@ int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
     /* fill D as replib_prepare would */
     memset(D, 0, sizeof *D);
     D->n = D->N = n; D->nv = S->nv; D->m3 = m3; D->X = NULL;
-    D->Xf = S->keeping ? S->Xf : NULL; D->ref = S->ref; D->V = S->V; D->sw = S->sw;
+    D->Xf = S->keeping && !S->fixed ? (const float *)S->Xk : NULL;
+    D->Xi = S->keeping && S->fixed ? (const int32_t *)S->Xk : NULL;
+    D->xstep = S->xstep; D->step = S->xstep; D->xbase = S->keeping ? S->xbase : NULL;
+    D->ref = S->ref; D->V = S->V; D->sw = S->sw;
     D->link = calloc(n, 1);
     D->mean = calloc(m3, sizeof(double));
     D->zz = malloc(sizeof(double) * n);

@@ -14,10 +14,16 @@
  * Zr = Q R^T (n by k) are the reduced coordinates handed to replib_learn
  * (Zr Zr^T ~ Z Z^T), and pieces come back as x_0 + (C Zr) V^T / sqrt(w).
  * Memory: n k + s 3#V + 3#V k doubles, plus (optionally) the frames in
- * single precision (n 3#V floats) while they fit a byte budget: then the
- * pieces and the report are computed from those frames instead (exact up
- * to float rounding of x - x_0, which is checked against the input's
- * precision).  Exact norms |z_f|^2 and |z_{f+1} - z_f|^2 are accumulated
+ * 32 bits (n 3#V words) while they fit a byte budget: then the pieces and
+ * the report are computed from those frames instead.  The 32-bit words
+ * are integers k = (x_f - b) / q (b: per chunk of 64 frames, the midrange
+ * of each coordinate, in double) when the input is printed with a decimal
+ * step q (replib_input_step of the first frame: OBJ 1e-6) and every
+ * coordinate seen is on that grid within +-2^31 steps: exact (b + k q to
+ * double rounding); otherwise single-precision floats of x_f - b, whose
+ * rounding (up to 2^-24 |x_f - b|) is reported.  The bases cost 1/32 of
+ * the kept frames' memory.  A frame off the grid
+ * turns the frames kept so far to floats (in place) and says so.  Exact norms |z_f|^2 and |z_{f+1} - z_f|^2 are accumulated
  * on the way, so the sketch's captured fraction of |Z|_F^2 is known.
  */
 #ifndef CM_REPLIB_SKETCH_H
@@ -42,13 +48,20 @@ struct replib_sketch {
     double *W;                  /* s by 3#V */
     double *zz, *dd;            /* cap: exact |z_f|^2, |z_{f+1} - z_f|^2 (0 across cuts) */
     unsigned char *cut;         /* cap */
-    float *Xf;                  /* cap by 3#V: x_f - x_0 in single precision, or NULL */
+    void *Xk;                   /* cap by 3#V kept frames: int32_t (x_f - x_0) / xstep if fixed,
+                                   else float x_f - x_0; or NULL */
+    double *xbase;              /* per chunk of REPLIB_KEEP_CHUNK frames, 3#V bases b (the midrange
+                                   of each coordinate over the chunk): kept frame = x_f - b */
+    double *kb;                 /* REPLIB_KEEP_CHUNK by 3#V: the frames of the chunk being read */
+    int fixed;                  /* 1: Xk holds integers of the input's step */
+    int floated;                /* 1: Xk holds floats */
+    double xstep;               /* the first frame's decimal step q (0: none) */
     double *zb;                 /* 64 by 3#V batch */
     double *zprev;              /* 3#V previous z */
     int nb, cap, xcap;
     uint64_t seed;
     double zn;                  /* |Z|_F^2 */
-    double float_err;           /* max |float(x - x_0) - (x - x_0)| over kept frames */
+    double float_err;           /* max |kept(x - x_0) - (x - x_0)| over kept frames (model units) */
     /* after replib_sketch_finish */
     double *V;                  /* 3#V by k basis (orthonormal) */
     double captured;            /* |Zr|_F^2 / |Z|_F^2 */
@@ -62,7 +75,7 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
 /* Add one frame x (#V by 3); cut = 1 if it starts a clip. */
 int replib_sketch_add(struct replib_sketch *S, const double *x, int cut);
 /* Finish the sketch and fill D (D->n, nv, and everything replib_prepare
- * derives; D->X = NULL, D->Xf / D->ref / D->V point into S, which must
+ * derives; D->X = NULL, D->Xi or D->Xf / D->ref / D->V point into S, which must
  * outlive D).  No fixed pieces.  Returns 0 or -1. */
 int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D);
 void replib_sketch_free(struct replib_sketch *S);

@@ -210,21 +210,26 @@ int rings_orientation(const struct rings *r, int k)
     return orient2_sign(P + 2 * ((v + n - 1) % n), P + 2 * v, P + 2 * ((v + 1) % n));
 }
 
+void rings_reverse(struct rings *r, int k)
+{
+    double *P = rings_ring(r, k);
+    long *L = r->line + r->start[k];
+    int n = rings_count(r, k);
+    for (int i = 0, j = n - 1; i < j; i++, j--) {
+        double t0 = P[2 * i], t1 = P[2 * i + 1];
+        P[2 * i] = P[2 * j]; P[2 * i + 1] = P[2 * j + 1];
+        P[2 * j] = t0; P[2 * j + 1] = t1;
+        long tl = L[i]; L[i] = L[j]; L[j] = tl;
+    }
+}
+
 int rings_orient(struct rings *r)
 {
     int flipped = 0;
     for (int k = 0; k < r->nrings; k++) {
         int o = rings_orientation(r, k);
         if ((k == 0 && o < 0) || (k > 0 && o > 0)) {
-            double *P = rings_ring(r, k);
-            long *L = r->line + r->start[k];
-            int n = rings_count(r, k);
-            for (int i = 0, j = n - 1; i < j; i++, j--) {
-                double t0 = P[2 * i], t1 = P[2 * i + 1];
-                P[2 * i] = P[2 * j]; P[2 * i + 1] = P[2 * j + 1];
-                P[2 * j] = t0; P[2 * j + 1] = t1;
-                long tl = L[i]; L[i] = L[j]; L[j] = tl;
-            }
+            rings_reverse(r, k);
             flipped++;
         }
     }

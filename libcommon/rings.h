@@ -73,6 +73,9 @@ int rings_check_simple(const struct rings *r);
  * orientation 0 as it is; returns the number of rings reversed). */
 int rings_orient(struct rings *r);
 
+/* Reverse the point order (and the source lines) of ring k. */
+void rings_reverse(struct rings *r, int k);
+
 /* Segment predicates shared by the 2D tools.
  * orient2: twice the signed area of (a, b, c), > 0 counter-clockwise. */
 static inline double orient2(const double *a, const double *b, const double *c)

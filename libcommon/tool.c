@@ -203,6 +203,21 @@ int arg_doublelist(const char *s, const char *what, double **out)
     return n;
 }
 
+double arg_nonneg(const char *s, const char *what)
+{
+    double v = arg_double(s, what);
+    if (!(v >= 0)) usage_error("%s must be >= 0, got '%s'", what, s);
+    return v;
+}
+
+int arg_nonneg_list(const char *s, const char *what, double **out)
+{
+    int n = arg_doublelist(s, what, out);
+    for (int k = 0; k < n; k++)
+        if (!((*out)[k] >= 0)) usage_error("%s: %g is negative", what, (*out)[k]);
+    return n;
+}
+
 FILE *out_open(const char *path)
 {
     if (!path || !strcmp(path, "-"))

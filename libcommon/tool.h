@@ -50,6 +50,10 @@ int arg_int(const char *s, const char *what);
 int arg_intlist(const char *s, const char *what, int **out);
 /* The same for finite numbers ("0,0.5,2"). */
 int arg_doublelist(const char *s, const char *what, double **out);
+/* A finite number >= 0, and a list of them: usage_error() naming `what`
+ * otherwise. */
+double arg_nonneg(const char *s, const char *what);
+int arg_nonneg_list(const char *s, const char *what, double **out);
 
 /* The input operand of a tool that reads per-triangle part labels from
  * LABELS (-l, required) and one animation (e.g. part-split, seam-homog),

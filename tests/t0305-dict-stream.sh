@@ -22,6 +22,19 @@ for lam in 0 2; do
 		anim-diff off.lib sk.lib | awk '/^# rms/{ exit !(\$3 < 1e-9) }'
 	"
 done
+test_expect_success 'frames kept as integers of the input step (6 decimals): same labels, pieces = in memory to 1e-12 rms' '
+	awk "/^frame /{ fr = 1 } fr && NF == 3 && \$1 != \"frame\" { printf \"%.6f %.6f %.6f\n\", \$1, \$2, \$3; next } { print }" head.mesh >head6.mesh &&
+	dict-learn -v -d 12 -l 2 --stream on --labels-out i.lab head6.mesh 2>log >i.lib &&
+	grep "frames kept exactly as integers of the input.s step 1e-06" log &&
+	dict-learn -d 12 -l 2 --stream off --labels-out o.lab head6.mesh >o.lib &&
+	test_cmp o.lab i.lab &&
+	anim-diff o.lib i.lib | awk "/^# rms/{ print; exit !(\$3 < 1e-12) }"
+'
+test_expect_success 'a frame off the decimal grid: the kept frames turn to single precision, said with -v' '
+	awk "/^frame /{ k++ } k == 150 && NF == 3 && \$1 != \"frame\" { printf \"%.9f %s %s\n\", \$1 + 1e-8, \$2, \$3; next } { print }" noisy.mesh >offgrid.mesh &&
+	dict-learn -v -d 12 -l 2 --stream on offgrid.mesh 2>log >/dev/null &&
+	grep "single-precision frames: largest rounding .* left the input.s decimal grid" log
+'
 test_expect_success 'full-rank input: the rank-16 sketch loses little (energy within 2%, printed)' '
 	dict-learn -d 10 -l 0 --stream off --report f_off.rep noisy.mesh >/dev/null &&
 	dict-learn -v -d 10 -l 0 --stream on --rank 16 --report f_on.rep noisy.mesh 2>log >/dev/null &&

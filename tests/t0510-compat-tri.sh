@@ -48,16 +48,18 @@ test_expect_success 'bad input: self-intersecting outline' '
 test_expect_success 'bad input: correspondence columns do not match shape count' '
 	test_fails_cleanly compat-tri -c corr.txt a.rings b.rings && grep -q "3 columns, but there are 2 shapes" .err
 '
-test_expect_success 'bad input: fewer than 3 correspondence points' '
+test_expect_success 'bad input: fewer than 3 correspondence points with --match off' '
 	printf "0 0 0\n10 14 8\n" >two.txt &&
-	test_fails_cleanly compat-tri -c two.txt a.rings b.rings c.rings && grep -q "at least 3" .err
+	test_fails_cleanly compat-tri --match off -c two.txt a.rings b.rings c.rings && grep -q "at least 3" .err
 '
 test_expect_success 'bad input: index out of range, order not consistent' '
 	printf "0 0 0\n10 99 8\n20 27 15\n" >oor.txt && test_fails_cleanly compat-tri -c oor.txt a.rings b.rings c.rings &&
 	printf "0 0 0\n20 14 8\n10 27 15\n" >ord.txt && test_fails_cleanly compat-tri -c ord.txt a.rings b.rings c.rings
 '
 test_expect_success 'usage errors exit 2' '
-	test_must_fail_usage compat-tri a.rings 2>/dev/null &&
+	test_must_fail_usage compat-tri --match off a.rings 2>/dev/null &&
+	test_must_fail_usage compat-tri --match arclength a.rings b.rings 2>/dev/null &&
+	test_must_fail_usage compat-tri --match-points 2 a.rings b.rings 2>/dev/null &&
 	test_must_fail_usage compat-tri -c corr.txt 2>/dev/null
 '
 need_shared_data shapes2d/poses/elephant-pose6.rings.txt

@@ -5,6 +5,7 @@
 #include "compat_tri.h"
 #include "compat_holes.h"
 #include "compat_refine.h"
+#include "boundary_match.h"
 #include "columns.h"
 #include "mesh.h"
 #include "rings.h"
@@ -17,7 +18,7 @@
 #include <getopt.h>
 
 static const char help[] =
-"Usage: compat-tri -c CORR [options] SHAPE0 SHAPE1 ...\n"
+"Usage: compat-tri [-c CORR] [options] SHAPE0 SHAPE1 ...\n"
 "Compatible triangulation of N outlines (ring files): one MESH stream of N\n"
 "frames with one face list, frame i = shape i.  Outlines may have holes and\n"
 "several pieces, matched ring by ring (same rings in the same order).\n"
@@ -26,7 +27,8 @@ static const char help[] =
 "                        column i = vertex index (0-based) in SHAPEi's file\n"
 "                        (points of all rings counted in file order); one\n"
 "                        outer ring: at least 3 rows, in the same order along\n"
-"                        every outline; several rings: each row on one ring,\n"
+"                        every outline (0 rows or no -c, 1 or 2 rows: the rest\n"
+"                        are found by --match); several rings: each row on one ring,\n"
 "                        a ring without rows is matched from its first vertex\n"
 "  -i, --interior FILE   interior correspondence points: one row per point,\n"
 "                        2N columns x0 y0 x1 y1 ... (the point in SHAPE0,\n"
@@ -36,6 +38,18 @@ static const char help[] =
 "                        ring k with ring k) or 'nearest' (each shape's rings\n"
 "                        reordered to SHAPE0's by nesting and nearest mean\n"
 "                        vertex, e.g. for frames traced by img2rings)\n"
+"  -m, --match MODE      'elastic' (default with fewer than 3 rows: Baxter et\n"
+"                        al.'s optimized boundary mapping, curvature and stretch\n"
+"                        by dynamic programming; without rows the start is found\n"
+"                        by trying every cyclic shift), 'arclength' (baseline:\n"
+"                        arc length from the given rows) or 'off' (default with\n"
+"                        3 or more rows)\n"
+"      --match-points K  correspondence points placed by the matching: the given\n"
+"                        rows plus SHAPE0's most salient corners (default 12)\n"
+"      --bend R          weight of the bending term of the matching (default 0.03)\n"
+"      --points-out FILE write the correspondence points used (a -c file, indices\n"
+"                        in file order) to FILE, to look at (mesh2svg\n"
+"                        --points-file) and edit\n"
 "  -e, --error E         outline tolerance: two-sided Hausdorff distance of\n"
 "                        the simplified to the input outline, as a fraction\n"
 "                        of each pose's bounding-box diagonal (default 0.005;\n"
@@ -64,7 +78,9 @@ static const char help[] =
 "Example: compat-tri -v -c corr.txt pose1.rings pose2.rings | mesh2svg -g >t.svg\n";
 
 struct options {
-    const char *corr, *output, *interior;
+    const char *corr, *output, *interior, *points_out;
+    int match, match_points;
+    double bend;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv;
     double min_angle;
@@ -77,12 +93,14 @@ static void parse_args(int argc, char **argv, struct options *o)
     static const struct option lo[] = {
         {"corr", 1, 0, 'c'}, {"interior", 1, 0, 'i'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
         {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"match-rings", 1, 0, 'M'},
-        {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'K'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
-        {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
+        {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'X'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
+        {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
+        {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20;
+    o->match = -1; o->match_points = 12; o->bend = 0.03;
     int c;
-    while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:vh", lo, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:m:vh", lo, NULL)) != -1) {
         switch (c) {
         case 'c': o->corr = optarg; break;
         case 'i': o->interior = optarg; break;
@@ -105,8 +123,17 @@ static void parse_args(int argc, char **argv, struct options *o)
             else usage_error("--refine must be 'refine' or 'none'");
             break;
         case 'a': o->min_angle = arg_double(optarg, "--min-angle"); break;
-        case 'K': o->max_nv = arg_int(optarg, "--max-vertices"); break;
+        case 'X': o->max_nv = arg_int(optarg, "--max-vertices"); break;
         case 'R': o->raw = 1; break;
+        case 'm':
+            if (!strcmp(optarg, "elastic")) o->match = BMATCH_ELASTIC;
+            else if (!strcmp(optarg, "arclength")) o->match = BMATCH_ARCLENGTH;
+            else if (!strcmp(optarg, "off")) o->match = -2;
+            else usage_error("--match must be 'elastic', 'arclength' or 'off'");
+            break;
+        case 'K': o->match_points = arg_int(optarg, "--match-points"); break;
+        case 'B': o->bend = arg_double(optarg, "--bend"); break;
+        case 'P': o->points_out = optarg; break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);
@@ -114,7 +141,10 @@ static void parse_args(int argc, char **argv, struct options *o)
         default: usage_error("unknown option");
         }
     }
-    if (!o->corr) usage_error("-c CORR (correspondence points) is required");
+    if (o->match_points < 3 || o->match_points > 1000) usage_error("--match-points must be in 3..1000");
+    if (!(o->bend >= 0 && o->bend < 1e6)) usage_error("--bend must be >= 0");
+    if (!o->corr && o->match == -2) usage_error("--match off needs -c CORR with at least 3 rows");
+    if (!o->corr && o->match == BMATCH_ARCLENGTH) usage_error("--match arclength needs -c CORR (a start point)");
     if (!(o->err >= 0 && o->err < 1)) usage_error("--error must be in [0, 1)");
     if (!(o->edge >= 0 && o->edge < 1e6)) usage_error("--edge-length must be >= 0");
     if (o->smooth < 0 || o->smooth > 10000) usage_error("--smooth must be in 0..10000");
@@ -158,6 +188,124 @@ static void die_row(const char *path)
     if (sscanf(m, "row %d:", &k) == 1 && (line = data_line(path, k)) > 0)
         die("cannot read '%s': line %ld:%s", path, line, strchr(m, ':') + 1);
     die("cannot read '%s': %s", path, m);
+}
+
+/* The correspondence points after boundary matching to shape 0 (given:
+ * ncorr rows in counter-clockwise index order); written to --points-out in
+ * file order.  Returns the new rows (replacing given), count in *ncorr. */
+static int *match_points(const struct options *o, int N, double **P, const int *n, const int *flipped,
+                         int *given, int *ncorr, const int *want, int nwant)
+{
+    struct bmatch_params prm;
+    bmatch_defaults(&prm);
+    prm.mode = o->match;
+    prm.bend = o->bend;
+    int *corr, nc, K = o->match_points;
+    double *cost = malloc(N * sizeof *cost);
+    if (bmatch_corr(N, P, n, given, *ncorr, want, nwant, K, &prm, &corr, &nc, cost) < 0)
+        die("boundary matching failed: %s", cm_errmsg());
+    for (int s = 1; s < N; s++)
+        info(1, "%s: matched to %s (%s, cost %.4g)", o->shapes[s], o->shapes[0],
+             o->match == BMATCH_ARCLENGTH ? "arc length" : "elastic", cost[s]);
+    info(1, "boundary matching: %d point%s given in every shape, %d in %s only, %d correspondence points "
+            "placed", *ncorr, *ncorr == 1 ? "" : "s", nwant, o->shapes[0], nc);
+    free(cost);
+    free(given);
+    if (o->points_out) {
+        FILE *f = out_open(o->points_out);
+        fprintf(f, "# compat-tri --points-out: %d correspondence points (rows) of %d shapes (columns),\n"
+                   "# 0-based vertex indices in each file's order; usable as compat-tri -c\n", nc, N);
+        for (int a = 0; a < nc; a++) {
+            int k = flipped[0] ? (nc - a) % nc : a;   /* increasing along shape 0's file */
+            for (int s = 0; s < N; s++) {
+                int v = corr[(size_t)k * N + s];
+                fprintf(f, "%s%d", s ? " " : "", flipped[s] ? n[s] - 1 - v : v);
+            }
+            fputc('\n', f);
+        }
+        out_close(f);
+    }
+    *ncorr = nc;
+    return corr;
+}
+
+/* one outer ring per shape: the paper's pipeline */
+static void build_single(struct options *o, struct rings *R, struct compat *cp)
+{
+    int N = o->nshapes;
+    double **P = malloc(N * sizeof *P);
+    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
+    for (int s = 0; s < N; s++) {
+        flipped[s] = rings_orient(&R[s]);
+        P[s] = R[s].P;
+        n[s] = rings_count(&R[s], 0);
+        if (flipped[s]) info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
+    }
+    /* correspondences: rows by N columns of integer indices */
+    struct columns C = {0};
+    if (o->corr && columns_read(o->corr, 0, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    if (o->corr && C.rows > 0 && C.cols != N)
+        die("cannot read '%s': line 1: %d columns, but there are %d shapes", o->corr, C.cols, N);
+    /* full rows; rows "v -1 -1 ...": a point on SHAPE0 only, to be placed by the matching */
+    int *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr), *want = malloc((C.rows + 1) * sizeof *want);
+    int ncorr = 0, nwant = 0;
+    for (int k = 0; k < C.rows; k++) {
+        const double *row = C.x + (size_t)k * N;
+        int unknown = 0;
+        for (int s = 1; s < N; s++) unknown += row[s] == -1;
+        if (unknown && unknown != N - 1)
+            die("cannot read '%s': row %d: give the point in every shape, or in %s only (-1 in the other "
+                "columns)", o->corr, k + 1, o->shapes[0]);
+        for (int s = 0; s < (unknown ? 1 : N); s++) {
+            double x = row[s];
+            if (x != floor(x) || x < 0 || x >= n[s])
+                die("cannot read '%s': row %d: '%g' is not a vertex index of '%s' (0..%d)", o->corr, k + 1,
+                    x, o->shapes[s], n[s] - 1);
+            int v = (int)x;
+            if (unknown) want[nwant] = flipped[0] ? n[0] - 1 - v : v;
+            else corr[(size_t)ncorr * N + s] = flipped[s] ? n[s] - 1 - v : v;
+        }
+        if (unknown) nwant++; else ncorr++;
+    }
+    if (o->match < 0 && o->match != -2) o->match = ncorr < 3 ? BMATCH_ELASTIC : -2;
+    if (o->match == -2 && (ncorr < 3 || nwant))
+        die("cannot read '%s': %d correspondence point%s%s; at least 3 are needed without --match",
+            o->corr, ncorr, ncorr == 1 ? "" : "s", nwant ? " given in every shape" : "");
+    if (o->match == BMATCH_ARCLENGTH && ncorr < 1)
+        die("cannot read '%s': no correspondence point in every shape; --match arclength needs a start", o->corr);
+    /* rows given along a clockwise file order run backwards after reversal */
+    if (flipped[0]) {
+        for (int a = 0, b = ncorr - 1; a < b; a++, b--)
+            for (int s = 0; s < N; s++) {
+                int t = corr[(size_t)a * N + s];
+                corr[(size_t)a * N + s] = corr[(size_t)b * N + s];
+                corr[(size_t)b * N + s] = t;
+            }
+    }
+
+    unsigned char *keep = NULL;
+    int rev = compat_corr_order(N, n, corr, ncorr);
+    if (rev < 0) die("cannot read '%s': %s", o->corr, cm_errmsg());
+    if (rev) info(1, "%s: points run clockwise along the outlines; using them in reverse order", o->corr);
+    if (o->match >= 0) corr = match_points(o, N, P, n, flipped, corr, &ncorr, want, nwant);
+    const char *corr_name = o->match >= 0 ? "the matched points" : o->corr;
+    if (compat_match(N, P, n, corr, ncorr, cp, &keep) < 0)
+        die("cannot read '%s': %s", corr_name, cm_errmsg());
+    int M = cp->nb;
+    cp->split_mode = o->split;
+    compat_simplify(cp, o->err, keep);
+    /* the outline actually kept, against the input rings */
+    double hmax = 0;
+    int hs = 0;
+    for (int s = 0; s < N; s++) {
+        double h = compat_outline_error(cp, s, P[s], n[s]);
+        if (h > hmax) { hmax = h; hs = s; }
+    }
+    info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
+            "largest two-sided Hausdorff distance %.3g, in %s)", M, cp->nb, o->err, hmax, o->shapes[hs]);
+    if (compat_triangulate(cp) < 0) die("%s", cm_errmsg());
+    free(keep); free(corr); free(want); columns_free(&C);
+    free(P); free(n); free(flipped);
 }
 
 /* several rings or interior points: compat_holes.h */
@@ -234,66 +382,9 @@ int main(int argc, char **argv)
         if (R[s].nrings != 1) multi = 1;
     }
     struct compat cp;
+    if (multi && !o.corr) die("several rings or interior points need -c CORR (the matching handles one outer ring)");
     if (multi) build_multi(&o, R, &cp);
-    else {
-    double **P = malloc(N * sizeof *P);
-    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
-    for (int s = 0; s < N; s++) {
-        flipped[s] = rings_orient(&R[s]);
-        P[s] = R[s].P;
-        n[s] = rings_count(&R[s], 0);
-        if (flipped[s]) info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
-    }
-    /* correspondences: rows by N columns of integer indices */
-    struct columns C;
-    if (columns_read(o.corr, 0, -1, NULL, &C) < 0) die("%s", cm_errmsg());
-    if (C.cols != N)
-        die("cannot read '%s': line 1: %d columns, but there are %d shapes", o.corr, C.cols, N);
-    if (C.rows < 3)
-        die("cannot read '%s': %d correspondence point%s; at least 3 are needed to match the outlines",
-            o.corr, C.rows, C.rows == 1 ? "" : "s");
-    int *corr = malloc((size_t)C.rows * N * sizeof *corr);
-    for (int k = 0; k < C.rows; k++)
-        for (int s = 0; s < N; s++) {
-            double x = C.x[(size_t)k * N + s];
-            if (x != floor(x) || x < 0 || x >= n[s])
-                die("cannot read '%s': row %d: '%g' is not a vertex index of '%s' (0..%d)", o.corr, k + 1,
-                    x, o.shapes[s], n[s] - 1);
-            int v = (int)x;
-            corr[(size_t)k * N + s] = flipped[s] ? n[s] - 1 - v : v;
-        }
-    /* rows given along a clockwise file order run backwards after reversal */
-    if (flipped[0]) {
-        for (int a = 0, b = C.rows - 1; a < b; a++, b--)
-            for (int s = 0; s < N; s++) {
-                int t = corr[(size_t)a * N + s];
-                corr[(size_t)a * N + s] = corr[(size_t)b * N + s];
-                corr[(size_t)b * N + s] = t;
-            }
-    }
-
-    unsigned char *keep = NULL;
-    int rev = compat_corr_order(N, n, corr, C.rows);
-    if (rev < 0) die("cannot read '%s': %s", o.corr, cm_errmsg());
-    if (rev) info(1, "%s: points run clockwise along the outlines; using them in reverse order", o.corr);
-    if (compat_match(N, P, n, corr, C.rows, &cp, &keep) < 0)
-        die("cannot read '%s': %s", o.corr, cm_errmsg());
-    int M = cp.nb;
-    cp.split_mode = o.split;
-    compat_simplify(&cp, o.err, keep);
-    /* the outline actually kept, against the input rings */
-    double hmax = 0;
-    int hs = 0;
-    for (int s = 0; s < N; s++) {
-        double h = compat_outline_error(&cp, s, P[s], n[s]);
-        if (h > hmax) { hmax = h; hs = s; }
-    }
-    info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
-            "largest two-sided Hausdorff distance %.3g, in %s)", M, cp.nb, o.err, hmax, o.shapes[hs]);
-    if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
-    free(keep); free(corr); columns_free(&C);
-    free(P); free(n); free(flipped);
-    }
+    else build_single(&o, R, &cp);
     double ma0, q0 = compat_min_angle(&cp, &ma0);
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
@@ -316,7 +407,7 @@ int main(int argc, char **argv)
         target = o.edge * target / N;
     }
     if (o.refine && (cp.nrings > 0 || cp.npts > 0))
-        info(1, "holes, pieces or interior points: --refine refine handles one outer ring only; "
+        warn("holes, pieces or interior points: --refine refine handles one outer ring only; "
                 "using the edge-length refinement (--refine none)");
     if (!o.refine || cp.nrings > 0 || cp.npts > 0) {
         if (compat_improve(&cp, target, o.smooth) < 0) die("%s", cm_errmsg());

@@ -62,9 +62,10 @@ static const char help[] =
 "                         (faster; reports stay exact), or one GEMM per iteration\n"
 "      --stream auto|on|off  read the frames once into a low-rank sketch\n"
 "                         (auto: when they exceed 512 MB as doubles); the\n"
-"                         frames are kept in single precision within --memory\n"
+"                         frames are kept in 32 bits within --memory (exact\n"
+"                         integers of the input's decimal step, else floats)\n"
 "      --rank K           sketch size (default 128)\n"
-"      --memory MB        budget for the single-precision frames (default 4096);\n"
+"      --memory MB        budget for the 32-bit frames (default 4096);\n"
 "                         beyond it pieces come from the sketch (approximate)\n"
 "      --threads N        restarts run on N threads (default 0: one per core);\n"
 "                         the result does not depend on N\n"
@@ -120,13 +121,9 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'I': o->init_labels = optarg; break;
         case 'L': o->labels_out = optarg; break;
-        case 'c': o->swap_cost = arg_double(optarg, "--swap-cost");
-            if (!(o->swap_cost >= 0)) usage_error("--swap-cost must be >= 0");
-            break;
+        case 'c': o->swap_cost = arg_nonneg(optarg, "--swap-cost"); break;
         case 'Z':
-            o->nswap = arg_doublelist(optarg, "--swap-sweep", &o->swap_sweep);
-            for (int k = 0; k < o->nswap; k++)
-                if (!(o->swap_sweep[k] >= 0)) usage_error("--swap-sweep: %g is negative", o->swap_sweep[k]);
+            o->nswap = arg_nonneg_list(optarg, "--swap-sweep", &o->swap_sweep);
             break;
         case 'P': o->report = optarg; break;
         case 'E': o->max_error = arg_double(optarg, "--max-error");
@@ -208,8 +205,11 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     if (D->X)
         replib_evaluate(m->V, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
                         o->lambda, &run->rep, NULL);
+    else if (D->Xi)
+        replib_evaluate_i(D->Xi, D->xstep, D->xbase, D->ref, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
+                          o->lambda, &run->rep, NULL);
     else if (D->Xf)
-        replib_evaluate_f(D->Xf, D->ref, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
+        replib_evaluate_f(D->Xf, D->xbase, D->ref, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
                           o->lambda, &run->rep, NULL);
     else {
         /* sketch only: the model's energy in the sketch's coordinates */
@@ -332,8 +332,12 @@ int main(int argc, char **argv)
         if (replib_sketch_finish(&S, &D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
         D.w = o.weights ? wc.x : NULL;
         info(1, "sketch: rank %d captures %.8f of |Z|^2; frames %s", D.zdim, S.captured,
-             D.Xf ? "kept in single precision" : "not kept (pieces from the sketch)");
-        if (D.Xf) info(1, "sketch: single-precision frames: largest rounding %.3g model units", S.float_err);
+             D.Xi ? "kept in 32-bit integers of the input's step" : D.Xf ? "kept in single precision" :
+             "not kept (pieces from the sketch)");
+        if (D.Xi) info(1, "sketch: frames kept exactly as integers of the input's step %g (largest rounding %.3g model units)",
+                       D.xstep, S.float_err);
+        else if (D.Xf) info(1, "sketch: single-precision frames: largest rounding %.3g model units%s", S.float_err,
+                            S.xstep > 0 ? " (a frame left the input's decimal grid or its range)" : " (no decimal step)");
     } else {
         D.n = m.nframes; D.nv = m.nv; D.X = m.V; D.nfix = nfix; D.Rfix = nfix ? fx.V : NULL;
         D.w = o.weights ? wc.x : NULL; D.cut = m.cut;
@@ -368,7 +372,7 @@ int main(int argc, char **argv)
 
     struct run best;
     int d = o.d;
-    if (o.max_error >= 0 && streamed && !D.Xf)
+    if (o.max_error >= 0 && streamed && !D.Xf && !D.Xi)
         die("--max-error needs the frames: they exceed --memory %g MB (raise it)", o.memory);
     if (o.max_error >= 0) {
         /* doubling then bisection on d (max error is nearly monotone in d) */
@@ -469,7 +473,7 @@ int main(int argc, char **argv)
     }
     FILE *out = out_open(o.output);
     struct mesh lib = {m.nv, m.nf, d, m.F, best.res.R, NULL};
-    if (streamed && D.Xf == NULL) info(1, "pieces reconstructed from the rank-%d sketch", D.zdim);
+    if (streamed && !D.Xf && !D.Xi) info(1, "pieces reconstructed from the rank-%d sketch", D.zdim);
     unsigned char *cut = calloc(d, 1);
     lib.cut = cut;
     if (mesh_write(out, &lib, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());

@@ -72,13 +72,9 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'l': o->lambda = arg_double(optarg, "--lambda"); break;
         case 'w': o->weights = optarg; break;
-        case 'c': o->swap_cost = arg_double(optarg, "--swap-cost");
-            if (!(o->swap_cost >= 0)) usage_error("--swap-cost must be >= 0");
-            break;
+        case 'c': o->swap_cost = arg_nonneg(optarg, "--swap-cost"); break;
         case 'S':
-            o->nsweep = arg_doublelist(optarg, "--swap-sweep", &o->sweep);
-            for (int k = 0; k < o->nsweep; k++)
-                if (!(o->sweep[k] >= 0)) usage_error("--swap-sweep: %g is negative", o->sweep[k]);
+            o->nsweep = arg_nonneg_list(optarg, "--swap-sweep", &o->sweep);
             break;
         case 'P': o->report = optarg; break;
         case 'q': o->quiet = 1; break;

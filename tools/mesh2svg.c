@@ -6,6 +6,7 @@
  */
 #include "mesh.h"
 #include "rings.h"
+#include "columns.h"
 #include "topology.h"
 #include "tool.h"
 #include "cm_error.h"
@@ -28,7 +29,12 @@ static const char help[] =
 "  -w, --width W        width of one drawing in pixels (default 400)\n"
 "      --fill COLOR     fill of the triangles / outer rings (default #cfe0f5)\n"
 "      --no-edges       draw only the outline, not the triangle edges\n"
-"      --points         mark the vertices\n"
+"      --points         mark the vertices and label each with its 0-based index\n"
+"                       (the index compat-tri -c expects; for outlines the\n"
+"                       index in the file's ring, ring number first if several)\n"
+"      --points-file FILE  mark and number (1, 2, ... in row order) the vertices\n"
+"                       named in column 1 of FILE, e.g. a compat-tri -c file\n"
+"      --points-column N   take the vertex indices from column N (1-based)\n"
 "  -o, --output FILE    write to FILE (temporary + rename) instead of stdout\n"
 "  -h, --help           show this help\n"
 "      --version        show the version\n"
@@ -37,7 +43,8 @@ static const char help[] =
 
 struct options {
     const char *input, *output, *fill;
-    int frame, animate, grid, columns, no_edges, points;
+    int frame, animate, grid, columns, no_edges, points, points_col;
+    const char *points_file;
     double width, fps;
 };
 
@@ -46,7 +53,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     static const struct option lo[] = {
         {"frame", 1, 0, 'f'}, {"animate", 0, 0, 'a'}, {"fps", 1, 0, 'F'}, {"grid", 0, 0, 'g'},
         {"columns", 1, 0, 'c'}, {"width", 1, 0, 'w'}, {"fill", 1, 0, 'L'}, {"no-edges", 0, 0, 'E'},
-        {"points", 0, 0, 'P'}, {"output", 1, 0, 'o'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'},
+        {"points", 0, 0, 'P'}, {"points-file", 1, 0, 'Q'}, {"points-column", 1, 0, 'K'},
+        {"output", 1, 0, 'o'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->width = 400; o->fps = 12; o->fill = "#cfe0f5";
@@ -62,6 +70,11 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'L': o->fill = optarg; break;
         case 'E': o->no_edges = 1; break;
         case 'P': o->points = 1; break;
+        case 'Q': o->points_file = optarg; break;
+        case 'K':
+            o->points_col = arg_int(optarg, "--points-column");
+            if (o->points_col < 1) usage_error("--points-column must be >= 1");
+            break;
         case 'o': o->output = optarg; break;
         case 'h': print_help_and_exit(help);
         case 'V': print_version_and_exit();
@@ -75,6 +88,10 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->width > 0 && o->width < 1e6)) usage_error("--width must be positive");
     if (!(o->fps > 0 && o->fps < 1000)) usage_error("--fps must be positive");
     if (o->columns < 0) usage_error("--columns must be positive");
+    if (o->points_col && !o->points_file) usage_error("--points-column needs --points-file");
+    if (!o->points_col) o->points_col = 1;
+    if (o->animate && (o->points || o->points_file))
+        usage_error("--points and --points-file draw on still pictures, not with --animate");
     for (const char *s = o->fill; *s; s++)
         if (*s == '"' || *s == '<' || *s == '&') usage_error("--fill: bad color '%s'", o->fill);
 }
@@ -126,6 +143,16 @@ static void mesh_path(FILE *out, const struct mesh *m, const double *X, const st
     }
 }
 
+/* a marked vertex at svg position (x, y) with a label (NULL: none) */
+static void mark(FILE *out, double x, double y, double rad, const char *color, const char *label, double fs)
+{
+    fprintf(out, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"%s\"/>\n", x, y, rad, color);
+    if (label)
+        fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" font-family=\"sans-serif\" font-size=\"%.2f\" "
+                     "fill=\"%s\" stroke=\"white\" stroke-width=\"%.2f\" paint-order=\"stroke\">%s</text>\n",
+                x + rad, y - rad, fs, color, 0.25 * fs, label);
+}
+
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -149,6 +176,22 @@ int main(int argc, char **argv)
     if (o.frame >= m.nframes)
         die("cannot read '%s': frame %d asked, the stream has %d", o.input ? o.input : "<stdin>",
             o.frame, m.nframes);
+    /* numbered points: vertex indices from a column of a file */
+    struct columns pts = {0};
+    if (o.points_file) {
+        if (columns_read(o.points_file, 0, -1, NULL, &pts) < 0) die("%s", cm_errmsg());
+        if (pts.rows > 0 && o.points_col > pts.cols)
+            die("cannot read '%s': no column %d (it has %d)", o.points_file, o.points_col, pts.cols);
+        int lim = is_mesh ? m.nv : (r.nrings == 1 ? m.nv : 0);
+        if (!is_mesh && r.nrings != 1)
+            die("cannot read '%s': --points-file numbers vertices of one ring; '%s' has %d rings",
+                o.points_file, o.input ? o.input : "<stdin>", r.nrings);
+        for (int i = 0; i < pts.rows; i++) {
+            double x = pts.x[(size_t)i * pts.cols + o.points_col - 1];
+            if (x != floor(x) || x < 0 || x >= lim)
+                die("cannot read '%s': row %d: %g is not a vertex index 0..%d", o.points_file, i + 1, x, lim - 1);
+        }
+    }
     int f0 = o.frame, f1 = o.frame + 1;
     if (o.animate || o.grid) { f0 = 0; f1 = m.nframes; }
     /* common bounding box of the shown frames */
@@ -196,10 +239,20 @@ int main(int argc, char **argv)
         }
         fprintf(out, "\"/>\n");
         if (o.points) {
-            for (int i = 0; i < m.nv; i++)
-                fprintf(out, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"%s\"/>\n",
-                        (m.V[3 * i] - v.x0) * v.s, (v.y1 - m.V[3 * i + 1]) * v.s, 3 * sw,
-                        i == 0 ? "red" : "black");
+            char lab[32];
+            for (int k = 0; k < r.nrings; k++)
+                for (int i = r.start[k]; i < r.start[k + 1]; i++) {
+                    if (r.nrings > 1) snprintf(lab, sizeof lab, "%d:%d", k, i - r.start[k]);
+                    else snprintf(lab, sizeof lab, "%d", i);
+                    mark(out, (m.V[3 * i] - v.x0) * v.s, (v.y1 - m.V[3 * i + 1]) * v.s, 3 * sw,
+                         i == r.start[k] ? "red" : "black", lab, 5 * sw);
+                }
+        }
+        for (int i = 0; i < pts.rows; i++) {
+            char lab[32];
+            int p = (int)pts.x[(size_t)i * pts.cols + o.points_col - 1];
+            snprintf(lab, sizeof lab, "%d", i + 1);
+            mark(out, (m.V[3 * p] - v.x0) * v.s, (v.y1 - m.V[3 * p + 1]) * v.s, 5 * sw, "#d01c1c", lab, 10 * sw);
         }
     } else if (o.animate) {
         double dur = m.nframes / o.fps;
@@ -230,10 +283,21 @@ int main(int argc, char **argv)
             fprintf(out, "\"/>\n<path fill=\"none\" stroke=\"black\" stroke-width=\"%.2f\" stroke-linecap=\"round\" d=\"", 2 * sw);
             mesh_path(out, &m, X, &v, ox, oy, &t, 1);
             fprintf(out, "\"/>\n");
-            if (o.points)
-                for (int i = 0; i < m.nv; i++)
-                    fprintf(out, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"/>\n",
-                            ox + (X[3 * i] - v.x0) * v.s, oy + (v.y1 - X[3 * i + 1]) * v.s, 2.5 * sw);
+            if (o.points) {
+                char lab[32];
+                for (int i = 0; i < m.nv; i++) {
+                    snprintf(lab, sizeof lab, "%d", i);
+                    mark(out, ox + (X[3 * i] - v.x0) * v.s, oy + (v.y1 - X[3 * i + 1]) * v.s, 2.5 * sw, "black",
+                         lab, 5 * sw);
+                }
+            }
+            for (int i = 0; i < pts.rows; i++) {
+                char lab[32];
+                int p = (int)pts.x[(size_t)i * pts.cols + o.points_col - 1];
+                snprintf(lab, sizeof lab, "%d", i + 1);
+                mark(out, ox + (X[3 * p] - v.x0) * v.s, oy + (v.y1 - X[3 * p + 1]) * v.s, 5 * sw, "#d01c1c", lab,
+                     10 * sw);
+            }
             if (o.grid)
                 fprintf(out, "<text x=\"%.1f\" y=\"%.1f\" font-family=\"sans-serif\" font-size=\"%.1f\">%d</text>\n",
                         ox + 4 * sw, oy + 12 * sw, 10 * sw, k);
@@ -244,5 +308,6 @@ int main(int argc, char **argv)
     if (is_mesh) topology_free(&t);
     mesh_free(&m);
     rings_free(&r);
+    columns_free(&pts);
     return 0;
 }

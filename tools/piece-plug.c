@@ -1,8 +1,10 @@
 /* piece-plug -- printable pieces that click together (past StopShop Sec. 4,
  * which made its male/female plugs by hand): every piece of every part is
- * closed into a solid by a cap over each boundary loop; the cap over a seam
- * is the same triangle fan in both parts (and in every piece, the seam being
- * constant after seam-homog), so neighbours meet face to face.  Every seam
+ * closed into a solid by a cap over each boundary loop (loopcap.h: a fan
+ * from the centroid, or a constrained Delaunay triangulation where the loop
+ * is not star-shaped about it); the cap over a seam is the same in both
+ * parts (and in every piece, the seam being constant after seam-homog), so
+ * neighbours meet face to face.  Every seam
  * cap gets the same connectors at the same places (magnet pockets, or a
  * keyed plug on one side and its socket on the other) and the piece id is
  * engraved on it, with CGAL corefinement Booleans (solid.h).  One STL file
@@ -15,6 +17,7 @@
 #include "geometry.h"
 #include "solid.h"
 #include "connector.h"
+#include "loopcap.h"
 #include "closest_point.h"
 #include "image.h"
 #include "tool.h"
@@ -31,9 +34,11 @@ static const char help[] =
 "open piece library of one part (dict-learn output, frames = pieces); MAP:\n"
 "its part-split vertex map (part vertex -> whole-mesh vertex), which tells\n"
 "where parts meet.  Give every part.  Each piece is closed by a cap (a fan\n"
-"from the centroid) over every boundary loop; the cap over a seam is the\n"
-"same surface in both parts and every piece, the mating face.  Every seam\n"
-"cap gets --count connectors placed from the seam alone:\n"
+"from the centroid, or a constrained Delaunay triangulation of the loop seen\n"
+"along its normal where it is not star-shaped) over every boundary loop; the\n"
+"cap over a seam is the same surface in both parts and every piece, the\n"
+"mating face.  Every seam cap gets --count connectors placed from the seam\n"
+"alone:\n"
 "\n"
 "  --magnet DxH     round pockets D wide and H deep on both sides, for\n"
 "                   magnets; or\n"
@@ -92,6 +97,8 @@ struct part {
     unsigned char *onb;   /* #V on the boundary */
     int *partner;         /* nl: the part sharing loop l (a seam), -1 for an open hole */
     double *cen;          /* nl by 3 cap centres of the seam loops (the same in every piece) */
+    int **capT, *capn;    /* nl: the cap triangles of seam loop l (vertex nv + l = its centre), the
+                             same in every piece and, mirrored, in the partner part; NULL for holes */
     struct trimesh add, cut;  /* connector solids shared by every piece */
 };
 
@@ -265,15 +272,17 @@ static void loop_centroid(const struct part *A, int l, const double *X, double c
     free(ord);
 }
 
-/* height along a (from o) of the fan cap over loop l at in-plane point
+/* height along a (from o) of the cap over seam loop l at in-plane point
  * o + s u + r w; NAN when the point is off the cap */
 static double cap_height(const struct part *A, int l, const double *X, const double cen[3],
                          const struct connector_frame *fr, double s, double r)
 {
     double best = NAN;
-    for (int k = A->Ls[l]; k < A->Ls[l + 1]; k++) {
-        int ia = A->L[k], ib = A->L[k + 1 < A->Ls[l + 1] ? k + 1 : A->Ls[l]];
-        const double *pts[3] = {cen, X + 3 * ia, X + 3 * ib};
+    int nv = A->m.nv;
+    for (int k = 0; k < A->capn[l]; k++) {
+        const int *t = A->capT[l] + 3 * k;
+        const double *pts[3];
+        for (int j = 0; j < 3; j++) pts[j] = t[j] >= nv ? cen : X + 3 * t[j];
         double P2[3][2], Z[3];
         for (int j = 0; j < 3; j++) {
             double d[3];
@@ -289,6 +298,36 @@ static double cap_height(const struct part *A, int l, const double *X, const dou
         if (isnan(best) || fabs(z) < fabs(best)) best = z;
     }
     return best;
+}
+
+/* a diagonal of a triangulated cap (no centre vertex) that is an edge of
+ * the part's own mesh: that edge would get four faces.  Returns the first
+ * such triangle's index, -1 if none. */
+static int cap_reuses_edge(const struct part *A, const int *T, int nt, int *ea, int *eb)
+{
+    for (int k = 0; k < nt; k++)
+        for (int j = 0; j < 3; j++) {
+            int a = T[3 * k + j], b = T[3 * k + (j + 1) % 3], e;
+            if (a >= A->m.nv || b >= A->m.nv || (e = topology_edge(&A->t, a, b)) < 0) continue;
+            if (A->t.EFn[e] == 2) { *ea = a; *eb = b; return k; }
+        }
+    return -1;
+}
+
+/* the cap of loop l of A in the positions X with centre c (vertex nv + l) */
+static int cap_of(const struct part *A, int l, const double *X, const double c[3], int **T, int *fan)
+{
+    double a[3];
+    int n = A->Ls[l + 1] - A->Ls[l], isfan, ea, eb;
+    loop_area_vector(X, A->L + A->Ls[l], n, a);
+    int nt = loop_cap(X, A->L + A->Ls[l], n, c, a, A->m.nv + l, T, &isfan);
+    if (nt < 0) die("cannot read '%s': loop %d: %s", A->lib, l, cm_errmsg());
+    if (!isfan && cap_reuses_edge(A, *T, nt, &ea, &eb) >= 0)
+        die("cannot read '%s': loop %d is not star-shaped about its centroid and its triangulated cap would "
+            "reuse the interior edge %d-%d of the piece (a triangle with all three corners on the loop): "
+            "smooth the seam (seam-smooth) or move it", A->lib, l, ea, eb);
+    if (fan) *fan = isfan;
+    return nt;
 }
 
 static const char *mm(double unit) { return unit != 1 ? " mm" : ""; }
@@ -330,6 +369,8 @@ int main(int argc, char **argv)
         struct part *A = &P[p];
         A->partner = malloc(sizeof(int) * A->nl);
         A->cen = calloc((size_t)A->nl * 3, sizeof(double));
+        A->capT = calloc(A->nl, sizeof *A->capT);
+        A->capn = calloc(A->nl, sizeof *A->capn);
         for (int l = 0; l < A->nl; l++) {
             int partner = -2;
             for (int k = A->Ls[l]; k < A->Ls[l + 1]; k++) {
@@ -366,8 +407,13 @@ int main(int argc, char **argv)
             struct part *A = &P[p];
             int q = A->partner[l];
             if (q < p) continue;
-            int lq = -1;
-            for (int j = 0; j < P[q].nl; j++) if (P[q].partner[j] == p) lq = j;
+            /* q's loop holding this seam: the one with l's first vertex */
+            int lq = -1, g0 = A->map[A->L[A->Ls[l]]];
+            for (int j = 0; j < P[q].nl && lq < 0; j++)
+                if (P[q].partner[j] == p)
+                    for (int k = P[q].Ls[j]; k < P[q].Ls[j + 1]; k++)
+                        if (P[q].map[P[q].L[k]] == g0) { lq = j; break; }
+            if (lq < 0) die("cannot read '%s': seam loop %d with part %d: part %d has no such loop", A->lib, l, q, q);
             const double *X = mesh_frame(&A->m, 0), *cen = A->cen + 3 * l;
             struct seam s = {p, q, l, lq, {0}, {0}, {0}, {0}, INFINITY};
             memcpy(s.cen, cen, sizeof s.cen);
@@ -398,6 +444,30 @@ int main(int argc, char **argv)
             }
             SM = realloc(SM, sizeof *SM * (nseam + 1));
             SM[nseam++] = s;
+            /* the seam cap, once: in p, and mirrored (same triangles, reversed) in q */
+            int fan, nt = cap_of(A, l, X, cen, &A->capT[l], &fan);
+            A->capn[l] = nt;
+            struct part *B = &P[q];
+            B->capn[lq] = nt;
+            B->capT[lq] = malloc(sizeof(int) * 3 * nt);
+            for (int k = 0; k < 3 * nt; k++) {
+                int v = A->capT[l][k], vq = -1;
+                if (v >= A->m.nv) vq = B->m.nv + lq;
+                else
+                    for (int j = B->Ls[lq]; j < B->Ls[lq + 1] && vq < 0; j++)
+                        if (B->map[B->L[j]] == A->map[v]) vq = B->L[j];
+                if (vq < 0) die("cannot read '%s': seam %d-%d: vertex %d of part %d is not on the seam of part %d",
+                                B->lib, p, q, v, p, q);
+                B->capT[lq][k - k % 3 + (k % 3 == 0 ? 0 : 3 - k % 3)] = vq;   /* (a, b, c) -> (a, c, b) */
+            }
+            int ea, eb;
+            if (!fan && cap_reuses_edge(B, B->capT[lq], nt, &ea, &eb) >= 0)
+                die("cannot read '%s': loop %d is not star-shaped about its centroid and its triangulated cap would "
+                    "reuse the interior edge %d-%d of the piece (a triangle with all three corners on the seam): "
+                    "smooth the seam (seam-smooth) or move it", B->lib, lq, ea, eb);
+            if (!fan)
+                info(1, "seam %d-%d: the loop is not star-shaped about its centroid: capped by a constrained Delaunay "
+                     "triangulation (%d triangles)", p, q, nt);
             if (!(o.magnet || o.plug)) continue;
             for (int j = 0; j < o.count; j++) {
                 struct connector_frame fr;
@@ -455,27 +525,31 @@ int main(int argc, char **argv)
         int nv = A->m.nv, nf = A->m.nf, nl = A->nl, nb = A->Ls[nl];
         int nsv = nv + nl, nsf = nf + nb;
         /* faces: the piece, then the caps; the skin (wall checks) is the piece
-         * and the caps of open holes */
+         * and the caps of open holes (made per piece: they follow the frame) */
         int *S = malloc(sizeof(int) * 3 * nsf), *skin = malloc(sizeof(int) * 3 * nsf), nskin = nf;
-        memcpy(S, A->m.F, sizeof(int) * 3 * nf);
-        memcpy(skin, A->m.F, sizeof(int) * 3 * nf);
         int *seamcap = malloc(sizeof(int) * 3 * nsf), nseamcap = 0;
-        for (int l = 0, f = nf; l < nl; l++)
-            for (int k = A->Ls[l]; k < A->Ls[l + 1]; k++, f++) {
-                int ia = A->L[k], ib = A->L[k + 1 < A->Ls[l + 1] ? k + 1 : A->Ls[l]];
-                int t3[3] = {ib, ia, nv + l};
-                memcpy(S + 3 * f, t3, sizeof t3);
-                if (A->partner[l] < 0) memcpy(skin + 3 * nskin++, t3, sizeof t3);
-                else memcpy(seamcap + 3 * nseamcap++, t3, sizeof t3);
-            }
         double *O = malloc(sizeof(double) * 3 * nsv);
         for (int k = 0; k < A->m.nframes; k++, r++) {
             char what[64];
             snprintf(what, sizeof what, "part %d piece %d", p, k);
             memcpy(O, mesh_frame(&A->m, k), sizeof(double) * 3 * nv);
+            memcpy(S, A->m.F, sizeof(int) * 3 * nf);
+            memcpy(skin, A->m.F, sizeof(int) * 3 * nf);
+            nsf = nf; nskin = nf; nseamcap = 0;
             for (int l = 0; l < nl; l++) {
-                if (A->partner[l] >= 0) memcpy(O + 3 * (nv + l), A->cen + 3 * l, sizeof(double) * 3);
-                else loop_centroid(A, l, O, O + 3 * (nv + l));
+                if (A->partner[l] >= 0) {
+                    memcpy(O + 3 * (nv + l), A->cen + 3 * l, sizeof(double) * 3);
+                    memcpy(S + 3 * nsf, A->capT[l], sizeof(int) * 3 * A->capn[l]);
+                    memcpy(seamcap + 3 * nseamcap, A->capT[l], sizeof(int) * 3 * A->capn[l]);
+                    nsf += A->capn[l]; nseamcap += A->capn[l];
+                } else {
+                    loop_centroid(A, l, O, O + 3 * (nv + l));
+                    int *T, nt = cap_of(A, l, O, O + 3 * (nv + l), &T, NULL);
+                    memcpy(S + 3 * nsf, T, sizeof(int) * 3 * nt);
+                    memcpy(skin + 3 * nskin, T, sizeof(int) * 3 * nt);
+                    nsf += nt; nskin += nt;
+                    free(T);
+                }
             }
             struct solid_info si;
             if (solid_check(O, nsv, S, nsf, &si) < 0) die("%s: %s", what, cm_errmsg());
@@ -484,7 +558,7 @@ int main(int argc, char **argv)
                 if (solid_check(O, nv, A->m.F, nf, &pi) == 0 && pi.self_intersections)
                     die("cannot read '%s': %s: the piece intersects itself (%d face pairs)", A->lib, what,
                         pi.self_intersections);
-                die("cannot read '%s': %s: the capped piece %s (%d face pairs: a cap from the loop's centroid crosses "
+                die("cannot read '%s': %s: the capped piece %s (%d face pairs: a cap crosses "
                     "the surface)", A->lib, what, !si.closed ? "is not closed" : "intersects itself", si.self_intersections);
             }
             if (si.volume < 0)
@@ -623,7 +697,9 @@ int main(int argc, char **argv)
     free(res);
     for (int p = 0; p < np; p++) {
         mesh_free(&P[p].m); free(P[p].map); topology_free(&P[p].t); free(P[p].Ls); free(P[p].L);
-        free(P[p].onb); free(P[p].partner); free(P[p].cen); trimesh_free(&P[p].add); trimesh_free(&P[p].cut);
+        free(P[p].onb); free(P[p].partner); free(P[p].cen);
+        for (int l = 0; l < P[p].nl; l++) free(P[p].capT[l]);
+        free(P[p].capT); free(P[p].capn); trimesh_free(&P[p].add); trimesh_free(&P[p].cut);
         free((char *)P[p].lib);
     }
     free(P); free(C); free(SM); free(bnd); free(owner); free(owner_v);

@@ -15,6 +15,7 @@
 #include "geometry.h"
 #include "mesh.h"
 #include "mesh_spool.h"
+#include "mirror.h"
 #include "columns.h"
 #include "progress.h"
 #include "tool.h"
@@ -60,6 +61,14 @@ static const char help[] =
 "      --one-pass           one pass, RMS displacement instead of Eq. 3's sum\n"
 "                           (no second read, no temporary file for pipes)\n"
 "      --max-cycles N       limit alpha-expansion cycles (default: to convergence)\n"
+"      --symmetric          a seam symmetric about a mirror plane (--mirror, or\n"
+"                           found by PCA + ICP of the average mesh with its\n"
+"                           reflection): seam costs and seed distances averaged\n"
+"                           with their mirror's, each triangle tied to its mirror\n"
+"      --mirror A,B,C,D     the mirror plane A x + B y + C z = D; without\n"
+"                           --symmetric only the seam's asymmetry is measured (-v)\n"
+"      --sym-weight K       weight of the tie of a triangle to its mirror, in mean\n"
+"                           seam-edge costs (default 1; 0: costs averaged only)\n"
 "      --no-weld            do not join vertices that share a position in every\n"
 "                           frame (UV-seam duplicates; joined by default)\n"
 "  -o, --output FILE        write the labels to FILE instead of stdout\n"
@@ -107,8 +116,8 @@ struct seed { int part, face; double p[3]; int is_point; long line; };
 
 struct options {
     const char *input, *seeds_file, *output;
-    double gamma, motion, band, seed_radius, bridge, seed_snap;
-    int parts, one_pass, max_cycles, no_weld, band_set;
+    double gamma, motion, band, seed_radius, bridge, seed_snap, sym_weight, mirror[4];
+    int parts, one_pass, max_cycles, no_weld, band_set, symmetric, mirror_set;
     struct seed *seeds;
     int nseeds, cap;
 };
@@ -128,7 +137,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     static const struct option lo[] = {
         {"seed", 1, 0, 'S'}, {"seeds", 1, 0, 'F'}, {"gamma", 1, 0, 'g'}, {"motion", 1, 0, 'm'},
         {"band", 1, 0, 'b'}, {"seed-radius", 1, 0, 'r'}, {"parts", 1, 0, 'p'},
-        {"bridge", 1, 0, 'B'}, {"seed-snap", 1, 0, 'T'},
+        {"bridge", 1, 0, 'B'}, {"seed-snap", 1, 0, 'T'}, {"symmetric", 0, 0, 'Y'},
+        {"mirror", 1, 0, 'X'}, {"sym-weight", 1, 0, 'K'},
         {"one-pass", 0, 0, '1'}, {"no-weld", 0, 0, 'W'}, {"max-cycles", 1, 0, 'M'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -138,6 +148,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->seed_radius = DEFAULT_SEED_RADIUS;
     o->bridge = DEFAULT_BRIDGE;
     o->seed_snap = DEFAULT_SEED_SNAP;
+    o->sym_weight = 1;
     int c;
     while ((c = getopt_long(argc, argv, "g:m:b:r:p:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -159,6 +170,20 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'r': o->seed_radius = arg_double(optarg, "--seed-radius"); break;
         case 'B': o->bridge = arg_double(optarg, "--bridge"); break;
         case 'T': o->seed_snap = arg_double(optarg, "--seed-snap"); break;
+        case 'Y': o->symmetric = 1; break;
+        case 'K': o->sym_weight = arg_double(optarg, "--sym-weight");
+            if (!(o->sym_weight >= 0)) usage_error("--sym-weight must be >= 0");
+            break;
+        case 'X': {
+            double *v;
+            if (arg_doublelist(optarg, "--mirror", &v) != 4) usage_error("--mirror wants A,B,C,D (4 numbers), got '%s'", optarg);
+            double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            if (!(len > 0) || !isfinite(len)) usage_error("--mirror: the normal A,B,C is zero");
+            for (int k = 0; k < 4; k++) o->mirror[k] = v[k] / len;
+            free(v);
+            o->mirror_set = 1;
+            break;
+        }
         case 'p': o->parts = arg_int(optarg, "--parts"); break;
         case '1': o->one_pass = 1; break;
         case 'W': o->no_weld = 1; break;
@@ -512,6 +537,63 @@ int main(int argc, char **argv)
     double *A = malloc(sizeof(double) * (nf ? nf : 1)), atot = 0;
     if (!U0 || !disk || !nearest || !A) die("out of memory");
     memcpy(U0, U, sizeof(double) * (size_t)nf * s);
+    /* --symmetric: the mirror plane, every triangle's mirror triangle; the
+     * seam costs (w) and seed distances (U0) averaged with their mirror's */
+    double plane[4];
+    int *mf = NULL;
+    double tm0 = now_seconds();
+    if (o.mirror_set || o.symmetric) {
+        double prms, pworst;
+        if (o.mirror_set) {
+            memcpy(plane, o.mirror, sizeof plane);
+            prms = mirror_plane_rms(avg, nv, Fw, nf, plane);
+            if (isnan(prms)) die("cannot segment '%s': %s", name, cm_errmsg());
+            info(1, "mirror plane %.6g %.6g %.6g %.6g (given): reflected vertices %.3g%% of the diagonal "
+                 "from the surface (RMS)", plane[0], plane[1], plane[2], plane[3], 100 * prms / diag);
+        } else {
+            if (mirror_plane_find(avg, nv, Fw, nf, 0, plane, &prms, &pworst) < 0)
+                die("cannot segment '%s': %s", name, cm_errmsg());
+            info(1, "mirror plane %.6g,%.6g,%.6g,%.6g (found): reflected vertices %.3g%% of the diagonal "
+                 "from the surface (RMS of the closest 90%%, largest %.3g%%)", plane[0], plane[1], plane[2],
+                 plane[3], 100 * prms / diag, 100 * pworst / diag);
+        }
+        if (o.symmetric && prms > 0.05 * diag)
+            die("cannot segment '%s': the mesh is not mirror symmetric about the %s plane (reflected vertices "
+                "%.3g%% of the diagonal from the surface, RMS)%s", name, o.mirror_set ? "given" : "found",
+                100 * prms / diag, o.mirror_set ? "" : "; give --mirror if the plane is known");
+        if (prms > 0.01 * diag)
+            warn("the mesh is only roughly symmetric about the mirror plane: reflected vertices %.3g%% of the "
+                 "diagonal from the surface (RMS)", 100 * prms / diag);
+    }
+    if (o.symmetric) {
+        mf = malloc(sizeof(int) * (nf ? nf : 1));
+        double *tmp = malloc(sizeof(double) * ((size_t)nf * s + t.ne + 1));
+        if (!mf || !tmp) die("out of memory");
+        if (mirror_faces(avg, nv, Fw, nf, plane, mf, NULL) < 0) die("cannot segment '%s': %s", name, cm_errmsg());
+        for (size_t k = 0; k < (size_t)nf * s; k++) {
+            size_t f = k / s, p = k % s, g = (size_t)mf[f] * s + p;
+            tmp[k] = isfinite(U0[k]) && isfinite(U0[g]) ? 0.5 * (U0[k] + U0[g]) : U0[k];
+        }
+        memcpy(U0, tmp, sizeof(double) * (size_t)nf * s);
+        int paired = 0;
+        for (int e = 0; e < t.ne; e++) {
+            tmp[e] = w[e];
+            if (t.EFn[e] != 2) continue;
+            int h1 = mf[t.EF[2 * e]], h2 = mf[t.EF[2 * e + 1]];
+            for (int c = 0; c < 3; c++) {
+                int e2 = t.FE[3 * h1 + c];
+                if (t.EFn[e2] == 2 && (t.EF[2 * e2] == h2 || t.EF[2 * e2 + 1] == h2)) {
+                    tmp[e] = 0.5 * (w[e] + w[e2]);
+                    paired++;
+                    break;
+                }
+            }
+        }
+        memcpy(w, tmp, sizeof(double) * t.ne);
+        free(tmp);
+        info(1, "--symmetric: %d of %d interior edges averaged with their mirror edge (plane and mirror map %.3f s)",
+             paired, t.ne - t.nboundary, now_seconds() - tm0);
+    }
     face_areas(avg, F, nf, A);
     for (int f = 0; f < nf; f++) atot += A[f];
     if (!(atot > 0)) die("cannot segment '%s': the average mesh has zero area", name);
@@ -555,8 +637,8 @@ retry:
 
     /* Eq. 1 by alpha-expansion over the dual graph (interior edges) */
     int ne = 0;
-    int *E = malloc(sizeof(int) * 2 * (t.ne + nbr + 1));
-    double *W = malloc(sizeof(double) * (t.ne + nbr + 1));
+    int *E = malloc(sizeof(int) * 2 * ((size_t)t.ne + nbr + (mf ? nf : 0) + 1));
+    double *W = malloc(sizeof(double) * ((size_t)t.ne + nbr + (mf ? nf : 0) + 1));
     if (!E || !W) die("out of memory");
     for (int e = 0; e < t.ne; e++)
         if (t.EFn[e] == 2) {
@@ -570,6 +652,19 @@ retry:
         for (int k = 0; k < 3; k++) c += w[t.FE[3 * br[i].f + k]] + w[t.FE[3 * br[i].g + k]];
         E[2 * ne] = br[i].f; E[2 * ne + 1] = br[i].g;
         W[ne++] = o.gamma * c / 6;
+    }
+    /* --symmetric: each triangle tied to its mirror (a Potts term: cutting
+     * the pair costs sym_weight mean seam-edge costs) */
+    if (mf && o.sym_weight > 0) {
+        double wsum = 0;
+        int nin = 0;
+        for (int e = 0; e < t.ne; e++) if (t.EFn[e] == 2) { wsum += w[e]; nin++; }
+        double tie = o.sym_weight * o.gamma * (nin ? wsum / nin : 0);
+        for (int f = 0; f < nf; f++)
+            if (mf[f] != f) {
+                E[2 * ne] = f; E[2 * ne + 1] = mf[f];
+                W[ne++] = tie;
+            }
     }
     int *L = malloc(sizeof(int) * (nf ? nf : 1));
     struct alpha_expansion_stats st;
@@ -629,6 +724,27 @@ retry:
     for (int p = 0; p < s; p++) info(1, "part %d: %d triangles", p, count[p]);
     info(1, "time: frames %.3f s, edge costs %.3f s, geodesics %.3f s, alpha-expansion %.3f s, total %.3f s",
          t1 - t0, t2 - t1, t3 - t2, t4 - t3, t4 - t0);
+
+    if (o.mirror_set || o.symmetric) {
+        /* the seam's asymmetry: Hausdorff distance between the seam (its
+         * edges on the average mesh) and its mirror */
+        double *P = malloc(sizeof(double) * 6 * ((size_t)t.ne + 1));
+        int nseam = 0, unlike = 0;
+        if (!P) die("out of memory");
+        for (int e = 0; e < t.ne; e++) {
+            if (t.EFn[e] != 2 || L[t.EF[2 * e]] == L[t.EF[2 * e + 1]]) continue;
+            const double *a = avg + 3 * t.E[2 * e], *b = avg + 3 * t.E[2 * e + 1];
+            for (int k = 0; k < 3; k++) { P[6 * nseam + k] = a[k]; P[6 * nseam + 3 + k] = b[k]; }
+            nseam++;
+        }
+        double h = mirror_hausdorff(P, nseam, plane);
+        free(P);
+        if (mf) for (int f = 0; f < nf; f++) unlike += L[f] != L[mf[f]];
+        info(1, "seam asymmetry: Hausdorff distance to its mirror %.4g%% of the bbox diagonal (%d seam edges)%s",
+             100 * h / diag, nseam, o.symmetric ? "" : " [measured only: add --symmetric]");
+        if (mf) info(1, "--symmetric: %d of %d triangles labelled unlike their mirror triangle", unlike, nf);
+    }
+    free(mf);
 
     FILE *out = out_open(o.output);
     if (labels_write(out, L, nf) < 0) die("cannot write output: %s", cm_errmsg());

@@ -44,6 +44,22 @@ static void make_problem(struct rng *r, int n, int d, double mu, double *U, doub
     }
 }
 
+/* the lowest energy over all d^n labelings */
+static double brute_min(const struct chain *p)
+{
+    int l[16];
+    double bestE = INFINITY;
+    long total = 1;
+    for (int f = 0; f < p->n; f++) total *= p->d;
+    for (long code = 0; code < total; code++) {
+        long k = code;
+        for (int f = 0; f < p->n; f++) { l[f] = k % p->d; k /= p->d; }
+        double e = chain_energy(p, l, NULL, NULL);
+        if (e < bestE) bestE = e;
+    }
+    return bestE;
+}
+
 int main(void)
 {
     struct rng r;
@@ -60,22 +76,12 @@ int main(void)
         struct chain p = {n, d, U, T, H, c, link, 0};
         /* direct check of the expansion of mu |dx - (r_b - r_a)|^2 is in make_problem's algebra;
          * brute force */
-        int l[16], best[16];
-        double bestE = INFINITY;
-        long total = 1;
-        for (int f = 0; f < n; f++) total *= d;
-        for (long code = 0; code < total; code++) {
-            long k = code;
-            for (int f = 0; f < n; f++) { l[f] = k % d; k /= d; }
-            double e = chain_energy(&p, l, NULL, NULL);
-            if (e < bestE - 1e-12) { bestE = e; for (int f = 0; f < n; f++) best[f] = l[f]; }
-        }
+        double bestE = brute_min(&p);
         int ld[16];
         double Edp = chain_dp(&p, ld);
         double Echeck = chain_energy(&p, ld, NULL, NULL);
         if (fabs(Edp - bestE) > 1e-9 * (1 + fabs(bestE))) dp_ok = 0;
         if (fabs(Echeck - Edp) > 1e-9 * (1 + fabs(Edp))) dp_label_ok = 0;
-        (void)best;
         /* moves from a random start */
         int le[16], ls[16];
         for (int f = 0; f < n; f++) le[f] = ls[f] = rng_int(&r, d);
@@ -120,16 +126,8 @@ int main(void)
         const double costs[] = {0.05, 0.3, 1, 4, 1e4};
         for (int k = 0; k < 5; k++) {
             p.swap = costs[k];
-            int l[16], ld[16];
-            double bestE = INFINITY;
-            long total = 1;
-            for (int f = 0; f < n; f++) total *= d;
-            for (long code = 0; code < total; code++) {
-                long q = code;
-                for (int f = 0; f < n; f++) { l[f] = q % d; q /= d; }
-                double e = chain_energy(&p, l, NULL, NULL);
-                if (e < bestE) bestE = e;
-            }
+            int ld[16];
+            double bestE = brute_min(&p);
             double Edp = chain_dp(&p, ld);
             if (fabs(Edp - bestE) > 1e-9 * (1 + fabs(bestE))) sw_dp_ok = 0;
             int s = chain_swaps(&p, ld);

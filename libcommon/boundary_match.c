@@ -1,0 +1,377 @@
+/* boundary_match.c -- see boundary_match.h */
+#include "boundary_match.h"
+#include "cm_error.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void bmatch_defaults(struct bmatch_params *prm)
+{
+    prm->mode = BMATCH_ELASTIC;
+    prm->samples = 256;
+    prm->bend = 0.03;
+    prm->start_bend = 0.3;
+}
+
+/* a closed polygon with cumulative arc lengths */
+struct outline {
+    const double *P;
+    int n;
+    double *cum;      /* n + 1: cum[i] = arc position of vertex i, cum[n] = L */
+    double L;
+};
+
+static int outline_init(struct outline *o, const double *P, int n)
+{
+    o->P = P; o->n = n;
+    o->cum = malloc((n + 1) * sizeof *o->cum);
+    if (!o->cum) return cm_seterr("out of memory");
+    o->cum[0] = 0;
+    for (int i = 0; i < n; i++) {
+        int j = (i + 1) % n;
+        o->cum[i + 1] = o->cum[i] + hypot(P[2 * j] - P[2 * i], P[2 * j + 1] - P[2 * i + 1]);
+    }
+    o->L = o->cum[n];
+    if (!(o->L > 0)) { free(o->cum); return cm_seterr("outline of zero length"); }
+    return 0;
+}
+
+static double wrap(double s, double L)
+{
+    s = fmod(s, L);
+    return s < 0 ? s + L : s;
+}
+
+/* point at arc position s (any real, taken modulo L) */
+static void outline_point(const struct outline *o, double s, double q[2])
+{
+    s = wrap(s, o->L);
+    int lo = 0, hi = o->n;           /* cum[lo] <= s < cum[hi] */
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (o->cum[mid] <= s) lo = mid; else hi = mid;
+    }
+    int j = (lo + 1) % o->n;
+    double len = o->cum[lo + 1] - o->cum[lo], t = len > 0 ? (s - o->cum[lo]) / len : 0;
+    q[0] = o->P[2 * lo] + t * (o->P[2 * j] - o->P[2 * lo]);
+    q[1] = o->P[2 * lo + 1] + t * (o->P[2 * j + 1] - o->P[2 * lo + 1]);
+}
+
+/* direction angle of the chord (s - d, s + d) */
+static double chord_angle(const struct outline *o, double s, double d)
+{
+    double a[2], b[2];
+    outline_point(o, s - d, a);
+    outline_point(o, s + d, b);
+    return atan2(b[1] - a[1], b[0] - a[0]);
+}
+
+/* tangent angles at m + 1 samples s0 + k len / m, unwrapped (continuous) */
+static void sample_angles(const struct outline *o, double s0, double len, int m, double *th)
+{
+    double d = 0.005 * o->L;
+    for (int k = 0; k <= m; k++) {
+        th[k] = chord_angle(o, s0 + len * k / m, d);
+        if (k) {
+            double dd = th[k] - th[k - 1];
+            dd -= 2 * M_PI * floor((dd + M_PI) / (2 * M_PI));
+            th[k] = th[k - 1] + dd;
+        }
+    }
+}
+
+static const int STEPS[9][2] = {{1, 1}, {1, 0}, {0, 1}, {1, 2}, {2, 1}, {1, 3}, {3, 1}, {2, 3}, {3, 2}};
+
+/* Dynamic program from (0,0) to (mA, mB).  thA: mA + 1, thB: mB + 1 angles;
+ * hA, hB: step lengths as fractions of the perimeters.  path (may be NULL):
+ * out, up to mA + mB + 1 pairs, *plen of them.  Returns the cost. */
+static double dp_align(const double *thA, int mA, double hA, const double *thB, int mB, double hB, double R,
+                       int *path, int *plen, double *D, unsigned char *from)
+{
+    int W = mB + 1;
+    for (int i = 0; i <= mA; i++)
+        for (int j = 0; j <= mB; j++) {
+            if (!i && !j) { D[0] = 0; from[0] = 255; continue; }
+            double best = INFINITY;
+            int bs = 255;
+            for (int k = 0; k < 9; k++) {
+                int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
+                if (pi < 0 || pj < 0) continue;
+                double prev = D[(size_t)pi * W + pj];
+                if (!(prev < best)) continue;
+                double c = prev + fabs(STEPS[k][0] * hA - STEPS[k][1] * hB) +
+                           R * fabs((thA[i] - thA[pi]) - (thB[j] - thB[pj]));
+                if (c < best) { best = c; bs = k; }
+            }
+            D[(size_t)i * W + j] = best;
+            from[(size_t)i * W + j] = (unsigned char)bs;
+        }
+    double cost = D[(size_t)mA * W + mB];
+    if (path) {
+        int i = mA, j = mB, n = 0;
+        while (1) {
+            path[2 * n] = i; path[2 * n + 1] = j; n++;
+            if (!i && !j) break;
+            int k = from[(size_t)i * W + j];
+            i -= STEPS[k][0]; j -= STEPS[k][1];
+        }
+        for (int a = 0, b = n - 1; a < b; a++, b--) {
+            int t0 = path[2 * a], t1 = path[2 * a + 1];
+            path[2 * a] = path[2 * b]; path[2 * a + 1] = path[2 * b + 1];
+            path[2 * b] = t0; path[2 * b + 1] = t1;
+        }
+        *plen = n;
+    }
+    return cost;
+}
+
+/* Align the segment of A from arc sA of length lenA with the segment of B
+ * from sB of length lenB (M samples per perimeter); map A's vertices whose
+ * arc offset from sA lies in [0, lenA) into tB.  Returns the cost. */
+static double align_segment(const struct outline *A, double sA, double lenA, const struct outline *B, double sB,
+                            double lenB, int M, double R, int arclength, double *tB)
+{
+    int mA = (int)ceil(M * lenA / A->L), mB = (int)ceil(M * lenB / B->L);
+    if (mA < 1) mA = 1;
+    if (mB < 1) mB = 1;
+    int *path = NULL, plen = 2;
+    double cost = 0;
+    if (arclength) {
+        path = malloc(4 * sizeof *path);
+        path[0] = path[1] = 0; path[2] = mA; path[3] = mB;
+    } else {
+        double *thA = malloc((mA + 1) * sizeof *thA), *thB = malloc((mB + 1) * sizeof *thB);
+        double *D = malloc((size_t)(mA + 1) * (mB + 1) * sizeof *D);
+        unsigned char *from = malloc((size_t)(mA + 1) * (mB + 1));
+        path = malloc(2 * (size_t)(mA + mB + 1) * sizeof *path);
+        sample_angles(A, sA, lenA, mA, thA);
+        sample_angles(B, sB, lenB, mB, thB);
+        cost = dp_align(thA, mA, lenA / A->L / mA, thB, mB, lenB / B->L / mB, R, path, &plen, D, from);
+        free(thA); free(thB); free(D); free(from);
+    }
+    /* piecewise-linear map along the path */
+    for (int v = 0; v < A->n; v++) {
+        double off = wrap(A->cum[v] - sA, A->L);
+        if (off >= lenA) continue;
+        double u = off / lenA * mA;      /* sample coordinate on A */
+        int k = 0;
+        while (k + 1 < plen - 1 && path[2 * (k + 1)] <= u) k++;
+        double i0 = path[2 * k], j0 = path[2 * k + 1], i1 = path[2 * k + 2], j1 = path[2 * k + 3];
+        double t = i1 > i0 ? (u - i0) / (i1 - i0) : 0;
+        if (t < 0) t = 0;
+        if (t > 1) t = 1;
+        double w = j0 + t * (j1 - j0);
+        tB[v] = wrap(sB + w / mB * lenB, B->L);
+    }
+    free(path);
+    return cost;
+}
+
+/* cost of the closed alignment from A's sA with B's start at every coarse
+ * shift; returns the best start arc on B after fine refinement */
+static double search_start(const struct outline *A, double sA, const struct outline *B, int M, double R)
+{
+    int Mc = M / 4 < 16 ? 16 : M / 4;
+    double *thA = malloc((Mc + 1) * sizeof *thA), *thB = malloc((2 * Mc + 1) * sizeof *thB);
+    double *D = malloc((size_t)(M + 1) * (M + 1) * sizeof *D);
+    unsigned char *from = malloc((size_t)(M + 1) * (M + 1));
+    sample_angles(A, sA, A->L, Mc, thA);
+    sample_angles(B, 0, 2 * B->L, 2 * Mc, thB);
+    double best[3] = {INFINITY, INFINITY, INFINITY};
+    int bi[3] = {0, 0, 0};
+    for (int t = 0; t < Mc; t++) {
+        double c = dp_align(thA, Mc, 1.0 / Mc, thB + t, Mc, 1.0 / Mc, R, NULL, NULL, D, from);
+        for (int k = 0; k < 3; k++)
+            if (c < best[k]) {
+                for (int l = 2; l > k; l--) { best[l] = best[l - 1]; bi[l] = bi[l - 1]; }
+                best[k] = c; bi[k] = t;
+                break;
+            }
+    }
+    free(thA); free(thB);
+    /* fine: M samples, shifts within one coarse step of the three best */
+    double *fA = malloc((M + 1) * sizeof *fA), *fB = malloc((M + 1) * sizeof *fB);
+    sample_angles(A, sA, A->L, M, fA);
+    int r = M / Mc;
+    double bestc = INFINITY, bests = 0;
+    for (int k = 0; k < 3; k++) {
+        if (!isfinite(best[k])) continue;
+        for (int d = -r; d <= r; d++) {
+            double s = wrap((bi[k] * r + d) * B->L / M, B->L);
+            sample_angles(B, s, B->L, M, fB);
+            double c = dp_align(fA, M, 1.0 / M, fB, M, 1.0 / M, R, NULL, NULL, D, from);
+            if (c < bestc) { bestc = c; bests = s; }
+        }
+    }
+    free(fA); free(fB); free(D); free(from);
+    return bests;
+}
+
+static int check_pairs(const int *pairs, int npairs, int na, int nb)
+{
+    for (int side = 0; side < 2; side++) {
+        int n = side ? nb : na, prev = 0;
+        for (int k = 0; k < npairs; k++) {
+            int v = pairs[2 * k + side];
+            if (v < 0 || v >= n) return cm_seterr("pair %d: vertex %d out of range 0..%d", k + 1, v, n - 1);
+            int r = ((v - pairs[side]) % n + n) % n;
+            if (k && r <= prev)
+                return cm_seterr("pair %d: vertex %d repeats or breaks the cyclic order", k + 1, v);
+            prev = r;
+        }
+    }
+    return 0;
+}
+
+int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pairs, int npairs,
+               const struct bmatch_params *prm, double *tB, double *cost)
+{
+    if (prm->samples < 16 || prm->samples > 4096) return cm_seterr("samples must be in 16..4096");
+    if (!(prm->bend >= 0 && prm->bend < 1e6) || !(prm->start_bend >= 0 && prm->start_bend < 1e6))
+        return cm_seterr("bending weight must be >= 0");
+    if (prm->mode == BMATCH_ARCLENGTH && npairs < 1)
+        return cm_seterr("arc-length matching needs a given correspondence point");
+    if (check_pairs(pairs, npairs, na, nb) < 0) return -1;
+    struct outline A, B;
+    if (outline_init(&A, Ap, na) < 0) return -1;
+    if (outline_init(&B, Bp, nb) < 0) { free(A.cum); return -1; }
+    double c = 0;
+    int M = prm->samples, arc = prm->mode == BMATCH_ARCLENGTH;
+    if (npairs == 0) {
+        double s = search_start(&A, 0, &B, M, prm->start_bend);
+        c = align_segment(&A, 0, A.L, &B, s, B.L, M, prm->bend, 0, tB);
+    } else {
+        for (int k = 0; k < npairs; k++) {
+            int a0 = pairs[2 * k], b0 = pairs[2 * k + 1];
+            int a1 = pairs[2 * ((k + 1) % npairs)], b1 = pairs[2 * ((k + 1) % npairs) + 1];
+            double lA = wrap(A.cum[a1] - A.cum[a0], A.L), lB = wrap(B.cum[b1] - B.cum[b0], B.L);
+            if (npairs == 1) { lA = A.L; lB = B.L; }
+            c += align_segment(&A, A.cum[a0], lA, &B, B.cum[b0], lB, M, prm->bend, arc, tB);
+        }
+    }
+    if (cost) *cost = c;
+    free(A.cum); free(B.cum);
+    return 0;
+}
+
+/* vertex of o nearest to arc position t (by arc length) */
+static int nearest_vertex(const struct outline *o, double t)
+{
+    int best = 0;
+    double bd = INFINITY;
+    for (int i = 0; i < o->n; i++) {
+        double d = fabs(o->cum[i] - t);
+        d = fmin(d, o->L - d);
+        if (d < bd) { bd = d; best = i; }
+    }
+    return best;
+}
+
+int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngiven, const int *want,
+                int nwant, int K, const struct bmatch_params *prm, int **corr_out, int *ncorr, double *cost)
+{
+    *corr_out = NULL; *ncorr = 0;
+    if (K < 3) return cm_seterr("need at least 3 points (K = %d)", K);
+    if (K < ngiven + nwant) K = ngiven + nwant;
+    for (int k = 0; k < nwant; k++) {
+        if (want[k] < 0 || want[k] >= n[0]) return cm_seterr("point %d: vertex %d out of range 0..%d", k + 1, want[k], n[0] - 1);
+        for (int l = 0; l < ngiven; l++)
+            if (given[l * N] == want[k]) return cm_seterr("point %d: vertex %d of shape 0 is given twice", k + 1, want[k]);
+        for (int l = 0; l < k; l++)
+            if (want[l] == want[k]) return cm_seterr("points %d and %d: both are vertex %d of shape 0", l + 1, k + 1, want[k]);
+    }
+    struct outline A;
+    if (outline_init(&A, P[0], n[0]) < 0) return -1;
+    /* salience of shape 0's vertices: turning between the chords of +-3% */
+    double *sal = malloc(n[0] * sizeof *sal);
+    for (int i = 0; i < n[0]; i++) {
+        double w = 0.03 * A.L, p[2], q[2], r[2];
+        outline_point(&A, A.cum[i] - w, p);
+        outline_point(&A, A.cum[i], q);
+        outline_point(&A, A.cum[i] + w, r);
+        double t = atan2(r[1] - q[1], r[0] - q[0]) - atan2(q[1] - p[1], q[0] - p[0]);
+        t -= 2 * M_PI * floor((t + M_PI) / (2 * M_PI));
+        sal[i] = fabs(t);
+    }
+    /* anchors on shape 0: the given points, then the most salient vertices */
+    int *anc = malloc(K * sizeof *anc), na = 0;
+    unsigned char *isgiven = calloc(n[0], 1);
+    for (int k = 0; k < ngiven; k++) { anc[na++] = given[k * N]; isgiven[given[k * N]] = 1; }
+    for (int k = 0; k < nwant; k++) anc[na++] = want[k];
+    double sep = 0.5 * A.L / K;
+    while (na < K) {
+        int best = -1;
+        for (int i = 0; i < n[0]; i++) {
+            int ok = 1;
+            for (int k = 0; k < na && ok; k++) {
+                double d = fabs(A.cum[i] - A.cum[anc[k]]);
+                if (fmin(d, A.L - d) < sep) ok = 0;
+            }
+            if (ok && (best < 0 || sal[i] > sal[best])) best = i;
+        }
+        if (best < 0) break;
+        anc[na++] = best;
+    }
+    free(sal);
+    /* order the anchors along shape 0 from the first given one (or the first) */
+    int origin = ngiven ? given[0] : anc[0];
+    for (int a = 1; a < na; a++)
+        for (int b = a; b > 0; b--) {
+            int rb = (anc[b] - origin + n[0]) % n[0], ra = (anc[b - 1] - origin + n[0]) % n[0];
+            if (rb < ra) { int t = anc[b]; anc[b] = anc[b - 1]; anc[b - 1] = t; } else break;
+        }
+    /* map them into every shape */
+    int *cand = malloc((size_t)na * N * sizeof *cand);
+    int *pairs = malloc(2 * (ngiven + 1) * sizeof *pairs);
+    double *tB = malloc(n[0] * sizeof *tB);
+    int rc = 0;
+    for (int a = 0; a < na; a++) cand[(size_t)a * N] = anc[a];
+    if (cost) cost[0] = 0;
+    for (int s = 1; s < N && rc == 0; s++) {
+        for (int k = 0; k < ngiven; k++) { pairs[2 * k] = given[k * N]; pairs[2 * k + 1] = given[k * N + s]; }
+        double c;
+        if (bmatch_map(P[0], n[0], P[s], n[s], pairs, ngiven, prm, tB, &c) < 0) {
+            rc = cm_seterr("shape %d: %s", s, cm_errmsg());
+            break;
+        }
+        if (cost) cost[s] = c;
+        struct outline B;
+        if (outline_init(&B, P[s], n[s]) < 0) { rc = -1; break; }
+        for (int a = 0; a < na; a++) {
+            int gk = -1;
+            for (int k = 0; k < ngiven; k++) if (given[k * N] == anc[a]) gk = k;
+            cand[(size_t)a * N + s] = gk >= 0 ? given[gk * N + s] : nearest_vertex(&B, tB[anc[a]]);
+        }
+        free(B.cum);
+    }
+    free(tB); free(pairs); free(A.cum);
+    if (rc < 0) { free(anc); free(isgiven); free(cand); return -1; }
+    /* keep the rows that increase strictly along every outline, given rows always */
+    int *corr = malloc((size_t)na * N * sizeof *corr), nc = 0;
+    for (int a = 0; a < na; a++) {
+        const int *row = cand + (size_t)a * N;
+        int keep = 1, given_row = isgiven[row[0]];
+        for (int s = 0; s < N && keep && nc > 0 && !given_row; s++) {
+            int r = ((row[s] - corr[s]) % n[s] + n[s]) % n[s];
+            int rp = ((corr[(size_t)(nc - 1) * N + s] - corr[s]) % n[s] + n[s]) % n[s];
+            if (r <= rp) keep = 0;
+            /* before the next given row (or the end of the loop) */
+            for (int b = a + 1; b < na && keep; b++)
+                if (isgiven[cand[(size_t)b * N]]) {
+                    int rg = ((cand[(size_t)b * N + s] - corr[s]) % n[s] + n[s]) % n[s];
+                    if (r >= rg) keep = 0;
+                    break;
+                }
+        }
+        if (keep) { memcpy(corr + (size_t)nc * N, row, N * sizeof *row); nc++; }
+    }
+    free(anc); free(isgiven); free(cand);
+    if (nc < 3) {
+        free(corr);
+        return cm_seterr("only %d distinct correspondence points could be placed; give more points "
+                         "or finer outlines", nc);
+    }
+    *corr_out = corr;
+    *ncorr = nc;
+    return 0;
+}
