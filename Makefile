@@ -132,12 +132,18 @@ install: all
 # A separate build (build-asan/, bin-asan/).  exitcode=86: ASan's default 1
 # is the tools' "bad input" code, so test_must_fail would pass on a crash.
 # UBSan stops at the first report (halt_on_error) except what
-# tests/sanitize/ubsan.supp names (CGAL 5.5.1's uninitialised bool in
-# Eigen_sparse_matrix::swap, reached from Heat_method_3).  Leaks are
-# reported (detect_leaks=1).  STOPMO_SANITIZE=1 tells the tests (ulimit -v
+# tests/sanitize/ubsan.supp names.  Leaks are reported (detect_leaks=1);
+# tests/sanitize/lsan.supp names only leaks inside OpenMesh and assimp.  STOPMO_SANITIZE=1 tells the tests (ulimit -v
 # cannot be combined with ASan's shadow memory).  SANITIZE_TESTS picks a
 # subset (default: all).
 SAN_FLAGS  = -fsanitize=address,undefined -fno-omit-frame-pointer
+# CGAL 5.5.1's Eigen_sparse_matrix copies an uninitialised bool in swap();
+# UBSan attributes the load to std::swap<bool> (bits/move.h), which no
+# suppression can name without hiding every bool load in std::swap, so the
+# one TU that instantiates it (geodesic.cpp, Heat_method_3) is built without
+# the bool check in the sanitizer build; every other check stays on there.
+SAN_CGAL_FLAGS = -fno-sanitize=bool
+$(BUILD)/libcommon/geodesic.o: ALL_CXXFLAGS += $(SAN_CGAL_FLAGS_ON)
 SAN_ENV    = ASAN_OPTIONS=exitcode=86:detect_leaks=1:abort_on_error=0:allocator_may_return_null=1 \
              LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
              UBSAN_OPTIONS=exitcode=86:halt_on_error=1:print_stacktrace=1:suppressions=$(CURDIR)/tests/sanitize/ubsan.supp \
@@ -145,7 +151,8 @@ SAN_ENV    = ASAN_OPTIONS=exitcode=86:detect_leaks=1:abort_on_error=0:allocator_
 SANITIZE_TESTS ?= tests/t[0-9]*.sh
 check-sanitize: deps
 	$(MAKE) BUILD=build-asan BINDIR=bin-asan OPT=-O1 EXTRA_CFLAGS="$(SAN_FLAGS)" \
-	  EXTRA_CXXFLAGS="$(SAN_FLAGS)" EXTRA_LDFLAGS="$(SAN_FLAGS)" all
+	  EXTRA_CXXFLAGS="$(SAN_FLAGS)" EXTRA_LDFLAGS="$(SAN_FLAGS)" \
+	  SAN_CGAL_FLAGS_ON="$(SAN_CGAL_FLAGS)" all
 	$(SAN_ENV) prove -j2 --timer $(SANITIZE_TESTS) $(patsubst $(BUILD)/%,build-asan/%,$(UNITS))
 
 # ---- fuzzing: libFuzzer harnesses of every reader (tests/fuzz/) ----

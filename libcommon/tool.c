@@ -11,6 +11,34 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#if defined(__SANITIZE_ADDRESS__)
+#define TOOL_LSAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TOOL_LSAN 1
+#endif
+#endif
+#ifdef TOOL_LSAN
+/* Sanitizer builds (make check-sanitize): a tool that dies (die,
+ * usage_error) exits with everything it was working on still allocated,
+ * and LeakSanitizer's at-exit check would call that a leak.  So the tools'
+ * leak check runs from their own atexit handler instead, skipped only when
+ * they exit through die() or usage_error(): every other exit (return from
+ * main, exit from --help, a write error) is still checked.  Units and other
+ * programs that do not link tool.o keep LSan's own check. */
+#include <sanitizer/lsan_interface.h>
+const char *__asan_default_options(void);
+const char *__asan_default_options(void) { return "leak_check_at_exit=0"; }
+static volatile int dying;
+static void leak_check(void)
+{
+    if (!dying) __lsan_do_leak_check();
+}
+#define TOOL_DYING() (dying = 1)
+#else
+#define TOOL_DYING() ((void)0)
+#endif
+
 const char *progname = "stopmo";
 int verbose = 0;
 
@@ -47,6 +75,9 @@ void tool_init(int argc, char **argv)
     (void)argc;
     const char *s = strrchr(argv[0], '/');
     progname = s ? s + 1 : argv[0];
+#ifdef TOOL_LSAN
+    atexit(leak_check);   /* runs after remove_temporaries */
+#endif
     atexit(remove_temporaries);
     mode_t um = umask(0);
     umask(um);
@@ -77,6 +108,7 @@ void die(const char *fmt, ...)
     va_start(ap, fmt);
     vmsg("", fmt, ap);
     va_end(ap);
+    TOOL_DYING();
     exit(EXIT_BADINPUT);
 }
 
@@ -87,6 +119,7 @@ void usage_error(const char *fmt, ...)
     vmsg("", fmt, ap);
     va_end(ap);
     fprintf(stderr, "Try '%s --help' for more information.\n", progname);
+    TOOL_DYING();
     exit(EXIT_USAGE);
 }
 
