@@ -123,17 +123,7 @@ struct work {
 
 static int grow_v(struct work *w, int nv)
 {
-    struct compat *c = w->c;
-    if (nv > c->cap) {
-        int cap = c->cap ? c->cap : 64;
-        while (cap < nv) cap *= 2;
-        for (int s = 0; s < c->N; s++) {
-            double *x = realloc(c->X[s], 2 * (size_t)cap * sizeof *x);
-            if (!x) return cm_seterr("out of memory");
-            c->X[s] = x;
-        }
-        c->cap = cap;
-    }
+    if (compat_reserve_vertices(w->c, nv) < 0) return -1;
     if (nv > w->vcap) {
         int cap = w->vcap ? w->vcap : 64;
         while (cap < nv) cap *= 2;

@@ -12,7 +12,7 @@
 /* ------------------------------------------------------------------ */
 /* storage */
 
-static int reserve_v(struct compat *c, int nv)
+int compat_reserve_vertices(struct compat *c, int nv)
 {
     if (nv <= c->cap) return 0;
     int cap = c->cap ? c->cap : 64;
@@ -173,7 +173,7 @@ int compat_match(int N, double *const *P, const int *n, const int *corr, int nco
         }
         if (pass == 0) {
             kcap = M;
-            if (reserve_v(c, M) < 0) { free(T); free(cum); return -1; }
+            if (compat_reserve_vertices(c, M) < 0) { free(T); free(cum); return -1; }
             kp = calloc(kcap, 1);
         }
     }
@@ -799,7 +799,7 @@ static int overlay_piece(struct compat *c, const int *poly, int m)
     free(X);
     if (rc < 0) return -1;
     int base = c->nv;
-    if (reserve_v(c, c->nv + k) < 0) { free(S); free(F); return -1; }
+    if (compat_reserve_vertices(c, c->nv + k) < 0) { free(S); free(F); return -1; }
     for (int s = 0; s < N; s++)
         memcpy(c->X[s] + 2 * (size_t)base, S + 2 * (size_t)s * k, 2 * (size_t)k * sizeof *S);
     c->nv += k;
@@ -835,7 +835,7 @@ static int triangulate_rec(struct compat *c, int *poly, int m, int depth)
     c->stage_count[sp.stage]++;
     int k = sp.k, base = c->nv;
     if (k > 0) {
-        if (reserve_v(c, c->nv + k) < 0) { free(sp.path); return -1; }
+        if (compat_reserve_vertices(c, c->nv + k) < 0) { free(sp.path); return -1; }
         for (int s = 0; s < c->N; s++)
             memcpy(c->X[s] + 2 * (size_t)base, sp.path + 2 * (size_t)s * k, 2 * (size_t)k * sizeof(double));
         c->nv += k;
@@ -1005,7 +1005,7 @@ static int split_pass(struct compat *c, double target, const double *dg)
         int a = t.E[2 * e], b = t.E[2 * e + 1];
         if (!oriented_edge(c->F, f1, a, b)) { int z = f1; f1 = f2; f2 = z; }
         int p = opposite(c->F, f1, a, b), q = opposite(c->F, f2, a, b);
-        if (reserve_v(c, c->nv + 1) < 0) break;
+        if (compat_reserve_vertices(c, c->nv + 1) < 0) break;
         int mv = c->nv++;
         for (int s = 0; s < c->N; s++) {
             c->X[s][2 * mv] = 0.5 * (c->X[s][2 * a] + c->X[s][2 * b]);

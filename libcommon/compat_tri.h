@@ -61,6 +61,10 @@ struct compat {
     int *pt_ring;     /* npts: the piece (outer ring) holding each point */
 };
 
+/* Room for nv vertices in every shape's X (grows c->cap by doubling;
+ * existing positions kept).  Returns -1 on out of memory (cm_errmsg set). */
+int compat_reserve_vertices(struct compat *c, int nv);
+
 /* Boundary matching.
  * N      number of shapes
  * P      N arrays: P[s] is n[s] by 2, a simple CCW polygon
