@@ -40,6 +40,29 @@ extern "C" int anim_format_from_name(const char *path)
 
 namespace {
 
+/* The format a file's first bytes show: ANIM_GLB (the "glTF" magic),
+ * ANIM_GLTF (a JSON object, after an optional UTF-8 byte-order mark and
+ * white space), ANIM_FBX (the binary header, or an ASCII FBX file's
+ * FBXHeaderExtension in its first 4 KiB); ANIM_NONE otherwise. */
+int sniff_format(const char *path)
+{
+    unsigned char b[4096];
+    FILE *f = fopen(path, "rb");
+    if (!f) return ANIM_NONE;
+    size_t n = fread(b, 1, sizeof b, f);
+    fclose(f);
+    if (n >= 4 && !memcmp(b, "glTF", 4)) return ANIM_GLB;
+    static const char fbx[] = "Kaydara FBX Binary";
+    if (n >= sizeof fbx - 1 && !memcmp(b, fbx, sizeof fbx - 1)) return ANIM_FBX;
+    size_t i = (n >= 3 && b[0] == 0xEF && b[1] == 0xBB && b[2] == 0xBF) ? 3 : 0;
+    while (i < n && (b[i] == ' ' || b[i] == '\t' || b[i] == '\r' || b[i] == '\n')) i++;
+    if (i < n && b[i] == '{') return ANIM_GLTF;
+    static const char hdr[] = "FBXHeaderExtension";
+    for (size_t j = 0; j + sizeof hdr - 1 <= n; j++)
+        if (!memcmp(b + j, hdr, sizeof hdr - 1)) return ANIM_FBX;
+    return ANIM_NONE;
+}
+
 /* ------------------------------------------------------------------ */
 /* A small JSON reader, only to decode glTF weight accessors that     */
 /* assimp 5.2 misreads (see the header).                              */
@@ -442,6 +465,18 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
         return cm_seterr("cannot read '%s': %s", path, strerror(errno));
     fclose(f);
     int fmt = o->format ? o->format : anim_format_from_name(path);
+    /* assimp hands a file whose content its format's importer refuses to
+     * any other importer whose signature matches (a ".gltf" starting with
+     * "quick3D" went to the Quick3D importer, which asked for 2 TB); so the
+     * content must be what the name or --format says before assimp sees it */
+    int kind = sniff_format(path);
+    if (kind == ANIM_NONE)
+        return cm_seterr("cannot read '%s': not a glTF, GLB or FBX file (no glTF magic, "
+                         "no JSON object, no FBX header at its start)", path);
+    if (fmt != ANIM_NONE && (fmt == ANIM_FBX) != (kind == ANIM_FBX))
+        return cm_seterr("cannot read '%s': the file is %s, not %s", path,
+                         kind == ANIM_FBX ? "FBX" : "glTF", fmt == ANIM_FBX ? "FBX" : "glTF");
+    fmt = kind;
 
     if (fmt == ANIM_GLTF || fmt == ANIM_GLB) {
         Gltf pre;

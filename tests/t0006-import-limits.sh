@@ -87,4 +87,12 @@ test_expect_success 'a missing file is named as missing, whatever its extension'
 	test_fails_cleanly mesh-import nope.obj 2>err && grep "No such file" err &&
 	test_fails_cleanly mesh-import ico.ply nope.ply 2>err && grep "nope.ply.: No such file" err
 '
+test_expect_success 'glTF/FBX: content that is not the named format never reaches another assimp importer' '
+	cp "$STOPMO_ROOT/tests/fuzz/regress/gltf/quick3d-2tb-alloc" q.gltf &&
+	test_fails_cleanly mesh-import q.gltf 2>err &&
+	grep "q.gltf.: not a glTF, GLB or FBX file" err &&
+	cp q.gltf q.glb && test_fails_cleanly mesh-import q.glb 2>err && grep "q.glb.: not a glTF" err &&
+	printf "{\"asset\":{\"version\":\"2.0\"}}" >j.fbx &&
+	test_fails_cleanly mesh-import j.fbx 2>err && grep "j.fbx.: the file is glTF, not FBX" err
+'
 test_done
