@@ -246,11 +246,23 @@ int rings_degenerate(const struct rings *r, int k)
 {
     const double *P = rings_ring(r, k);
     int n = rings_count(r, k);
-    double lo[2] = {P[0], P[1]}, hi[2] = {P[0], P[1]};
-    for (int i = 1; i < n; i++)
-        for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], P[2 * i + d]); hi[d] = fmax(hi[d], P[2 * i + d]); }
+    /* the area test runs on the points scaled by a power of two (exact)
+     * so that |coordinates| in [0.5, 1): no overflow of the squares at an
+     * extent of 1e154 and more, no underflow at 1e-160 and less */
+    double big = 0;
+    for (int i = 0; i < 2 * n; i++) big = fmax(big, fabs(P[i]));
+    int e = 0;
+    if (big > 0 && isfinite(big)) frexp(big, &e);
+    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, a = 0;
+    for (int i = 0; i < n; i++) {
+        int j = (i + 1) % n;
+        double x = ldexp(P[2 * i], -e), y = ldexp(P[2 * i + 1], -e);
+        a += x * ldexp(P[2 * j + 1], -e) - ldexp(P[2 * j], -e) * y;
+        lo[0] = fmin(lo[0], x); hi[0] = fmax(hi[0], x);
+        lo[1] = fmin(lo[1], y); hi[1] = fmax(hi[1], y);
+    }
     double dg = hypot(hi[0] - lo[0], hi[1] - lo[1]);
-    if (!(fabs(rings_area(r, k)) > 1e-12 * dg * dg)) return 1;
+    if (!(fabs(0.5 * a) > 1e-12 * dg * dg)) return 1;
     for (int i = 2; i < n; i++)
         if (orient2_sign(P, P + 2, P + 2 * i) != 0) return 0;
     return 1;

@@ -26,7 +26,7 @@ run: $(BIN)
 	@set -e; for t in $(FUZZ_TARGETS); do \
 	  mkdir -p $(FB)/corpus/$$t $(FB)/crash/$$t; \
 	  echo "fuzz_$$t: $(FUZZ_SECONDS) s"; \
-	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
+	  ASAN_OPTIONS=allocator_may_return_null=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
 	  $(FB)/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
 	    -max_len=65536 -print_final_stats=1 -artifact_prefix=$(FB)/crash/$$t/ \
 	    $(FB)/corpus/$$t tests/fuzz/corpus/$$t $$(test -d tests/fuzz/regress/$$t && echo tests/fuzz/regress/$$t) \
@@ -38,7 +38,7 @@ run: $(BIN)
 # replay the kept inputs (corpus and regress) under ASan + UBSan, no fuzzing
 replay: $(BIN)
 	@set -e; for t in $(FUZZ_TARGETS); do \
-	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
+	  ASAN_OPTIONS=allocator_may_return_null=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
 	  $(FB)/fuzz_$$t -runs=0 -timeout=20 -rss_limit_mb=2048 \
 	    tests/fuzz/corpus/$$t $$(test -d tests/fuzz/regress/$$t && echo tests/fuzz/regress/$$t) \
 	    >$(FB)/replay_$$t.log 2>&1 || { tail -40 $(FB)/replay_$$t.log; echo "1 passed, 1 failed"; exit 1; }; \
