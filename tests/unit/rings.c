@@ -10,7 +10,7 @@ static int test_degenerate(const double *pts, int n, double s)
     double P[64];
     int start[2] = {0, n};
     for (int i = 0; i < 2 * n; i++) P[i] = pts[i] * s;
-    struct rings r = {1, start, P, NULL};
+    struct rings r = {.nrings = 1, .start = start, .P = P};
     return rings_degenerate(&r, 0);
 }
 
@@ -19,7 +19,7 @@ static int test_orientation(const double *pts, int n, double s)
     double P[64];
     int start[2] = {0, n};
     for (int i = 0; i < 2 * n; i++) P[i] = pts[i] * s;
-    struct rings r = {1, start, P, NULL};
+    struct rings r = {.nrings = 1, .start = start, .P = P};
     return rings_orientation(&r, 0);
 }
 
