@@ -12,16 +12,35 @@ extern void dgeqrf_(const int *m, const int *n, double *a, const int *lda, doubl
                     const int *lwork, int *info);
 extern void dorgqr_(const int *m, const int *n, const int *k, double *a, const int *lda, const double *tau,
                     double *work, const int *lwork, int *info);
+extern void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w,
+                   double *work, const int *lwork, int *info);
 extern void dgels_(const char *trans, const int *m, const int *n, const int *nrhs, double *a, const int *lda,
                    double *b, const int *ldb, double *work, const int *lwork, int *info);
 
-#define BATCH 64
+#define BATCH 256         /* frames per co-range update (W is read and written once per batch) */
+#define STRIP 256         /* columns of W per cache block */
 
 void replib_sketch_free(struct replib_sketch *S)
 {
-    free(S->ref); free(S->sw); free(S->Om); free(S->Y); free(S->W); free(S->zz); free(S->dd);
+    free(S->ref); free(S->sw); free(S->om); free(S->Y); free(S->W); free(S->zz); free(S->dd);
     free(S->cut); free(S->Xk); free(S->xbase); free(S->kb); free(S->zb); free(S->zprev); free(S->V);
+    free(S->zt); free(S->yt);
     memset(S, 0, sizeof *S);
+}
+
+/* zeta distinct values in [0, m), each with a random sign: out[i] =
+ * 2 index + (sign < 0) */
+static void sparse_signs(struct rng *g, int m, int zeta, int *out)
+{
+    for (int i = 0; i < zeta; i++) {
+        int j, dup;
+        do {
+            j = rng_int(g, m);
+            dup = 0;
+            for (int t = 0; t < i; t++) dup |= out[t] >> 1 == j;
+        } while (dup);
+        out[i] = 2 * j + (rng_uniform(g) < 0.5);
+    }
 }
 
 int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, size_t keep_bytes,
@@ -31,13 +50,17 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     if (nv < 1 || k < 1) return cm_seterr("replib_sketch: %d vertices, rank %d", nv, k);
     int m3 = S->m3 = 3 * nv;
     S->nv = nv; S->k = k; S->s = 2 * k + 1; S->seed = seed;
+    S->zeta = k < REPLIB_SKETCH_ZETA ? k : REPLIB_SKETCH_ZETA;
+    S->zpsi = S->s < REPLIB_SKETCH_ZETA ? S->s : REPLIB_SKETCH_ZETA;
     S->keep_bytes = keep_bytes; S->keeping = keep_bytes > 0;
     S->ref = malloc(sizeof(double) * m3);
-    S->Om = malloc(sizeof(double) * (size_t)m3 * k);
+    S->om = malloc(sizeof(int) * (size_t)m3 * S->zeta);
     S->W = calloc((size_t)S->s * m3, sizeof(double));
     S->zb = malloc(sizeof(double) * (size_t)BATCH * m3);
-    S->zprev = malloc(sizeof(double) * m3);
-    if (!S->ref || !S->Om || !S->W || !S->zb || !S->zprev) goto oom;
+    S->zt = malloc(sizeof(double) * (size_t)BATCH * m3);
+    S->yt = malloc(sizeof(double) * (size_t)BATCH * k);
+    S->zprev = malloc(sizeof(double) * 3 * (size_t)m3);     /* previous z, then keep_chunk's scratch */
+    if (!S->ref || !S->om || !S->W || !S->zb || !S->zt || !S->yt || !S->zprev) goto oom;
     if (S->keeping && !(S->kb = malloc(sizeof(double) * (size_t)REPLIB_KEEP_CHUNK * m3))) goto oom;
     if (w) {
         double sum = 0;
@@ -54,33 +77,64 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     }
     struct rng g;
     rng_seed(&g, seed ^ 0x0e6a5eedULL);
-    for (size_t t = 0; t < (size_t)m3 * k; t++) S->Om[t] = rng_normal(&g);
+    for (int t = 0; t < m3; t++) sparse_signs(&g, k, S->zeta, S->om + (size_t)t * S->zeta);
     return 0;
 oom:
     replib_sketch_free(S);
     return cm_seterr("replib_sketch: out of memory (%d vertices, rank %d)", nv, k);
 }
 
-/* column f of Psi (s values) */
-static void psi_col(const struct replib_sketch *S, int f, double *p)
+/* y += x or y -= x (n values; BLAS: vectorized where -O2 C is not) */
+static void vadd(double *y, const double *x, int n, int neg)
+{
+    cblas_daxpy(n, neg ? -1.0 : 1.0, x, 1, y, 1);
+}
+
+/* column f of Psi: zpsi rows with signs (sparse_signs' encoding) */
+static void psi_col(const struct replib_sketch *S, int f, int *p)
 {
     struct rng g;
     rng_seed(&g, S->seed * 0x9E3779B97F4A7C15ULL + 0x5107c4ULL + (uint64_t)f);
-    for (int i = 0; i < S->s; i++) p[i] = rng_normal(&g);
+    sparse_signs(&g, S->s, S->zpsi, p);
 }
 
+/* The buffered frames into the sketches: Y_b = Z_b Omega (on the
+ * transposed batch, one vector add of nb values per nonzero of Omega) and
+ * W += Psi_b Z_b (every frame added to zpsi rows of W, by strips of
+ * columns that stay in cache). */
 static int flush(struct replib_sketch *S)
 {
-    int nb = S->nb, m3 = S->m3, k = S->k, s = S->s, f0 = S->n - nb;
+    int nb = S->nb, m3 = S->m3, k = S->k, f0 = S->n - nb, zeta = S->zeta, zp = S->zpsi;
     if (nb == 0) return 0;
-    cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nb, k, m3, 1.0, S->zb, m3, S->Om, k, 0.0,
-                S->Y + (size_t)f0 * k, k);
-    double *Pb = malloc(sizeof(double) * (size_t)nb * s);
-    if (!Pb) return cm_seterr("replib_sketch: out of memory");
-    for (int b = 0; b < nb; b++) psi_col(S, f0 + b, Pb + (size_t)b * s);
-    /* W += Psi_b^T Z_b  (s by nb times nb by 3#V) */
-    cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, s, m3, nb, 1.0, Pb, s, S->zb, m3, 1.0, S->W, m3);
-    free(Pb);
+    double *zt = S->zt, *yt = S->yt;
+    for (int t0 = 0; t0 < m3; t0 += 16)       /* transpose by 16 x 16 tiles */
+        for (int b0 = 0; b0 < nb; b0 += 16) {
+            int t1 = t0 + 16 < m3 ? t0 + 16 : m3, b1 = b0 + 16 < nb ? b0 + 16 : nb;
+            for (int t = t0; t < t1; t++)
+                for (int b = b0; b < b1; b++) zt[(size_t)t * nb + b] = S->zb[(size_t)b * m3 + t];
+        }
+    memset(yt, 0, sizeof(double) * (size_t)k * nb);
+    for (int t = 0; t < m3; t++) {
+        const double *zc = zt + (size_t)t * nb;
+        const int *o = S->om + (size_t)t * zeta;
+        for (int i = 0; i < zeta; i++) vadd(yt + (size_t)(o[i] >> 1) * nb, zc, nb, o[i] & 1);
+    }
+    for (int b = 0; b < nb; b++)
+        for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b) * k + j] = yt[(size_t)j * nb + b];
+    int *pc = malloc(sizeof(int) * (size_t)nb * zp);
+    if (!pc) return cm_seterr("replib_sketch: out of memory");
+    for (int b = 0; b < nb; b++) psi_col(S, f0 + b, pc + (size_t)b * zp);
+    for (int t0 = 0; t0 < m3; t0 += STRIP) {
+        int len = m3 - t0 < STRIP ? m3 - t0 : STRIP;
+        for (int b = 0; b < nb; b++) {
+            const double *z = S->zb + (size_t)b * m3 + t0;
+            for (int i = 0; i < zp; i++) {
+                int e = pc[(size_t)b * zp + i];
+                vadd(S->W + (size_t)(e >> 1) * m3 + t0, z, len, e & 1);
+            }
+        }
+    }
+    free(pc);
     S->nb = 0;
     return 0;
 }
@@ -115,22 +169,28 @@ static int grow(struct replib_sketch *S)
 static void keep_chunk(struct replib_sketch *S, int f1)
 {
     int m3 = S->m3, c = (f1 - 1) / REPLIB_KEEP_CHUNK, f0 = c * REPLIB_KEEP_CHUNK, nb = f1 - f0;
-    double q = S->xstep, e = 0, *o = S->xbase + (size_t)c * m3;
-    for (int t = 0; t < m3; t++) {
-        double lo = S->kb[t], hi = lo;
-        for (int g = 1; g < nb; g++) {
-            double v = S->kb[(size_t)g * m3 + t];
-            lo = v < lo ? v : lo;
-            hi = v > hi ? v : hi;
+    double q = S->xstep, iq = q > 0 ? 1 / q : 0, e = 0, *o = S->xbase + (size_t)c * m3;
+    double *lo = S->zprev + m3, *hi = lo + m3;   /* scratch */
+    memcpy(lo, S->kb, sizeof(double) * m3);
+    memcpy(hi, S->kb, sizeof(double) * m3);
+    for (int g = 1; g < nb; g++) {
+        const double *x = S->kb + (size_t)g * m3;
+        for (int t = 0; t < m3; t++) {
+            lo[t] = x[t] < lo[t] ? x[t] : lo[t];
+            hi[t] = x[t] > hi[t] ? x[t] : hi[t];
         }
-        o[t] = q > 0 ? nearbyint(0.5 * (lo + hi) / q) * q : 0.5 * (lo + hi);
     }
+    for (int t = 0; t < m3; t++)
+        o[t] = q > 0 ? nearbyint(0.5 * (lo[t] + hi[t]) / q) * q : 0.5 * (lo[t] + hi[t]);
     for (int g = 0; g < nb && S->fixed; g++) {
         const double *x = S->kb + (size_t)g * m3;
         int32_t *xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
         for (int t = 0; t < m3; t++) {
-            double v = x[t] - o[t], k = nearbyint(v / q), ek = fabs(k * q - v);
-            if (!(fabs(k) <= 2147483647.0) || ek > 1e-3 * q) { S->fixed = 0; break; }
+            /* round to nearest by the 1.5 2^52 trick (|v / q| < 2^31 checked first) */
+            double v = x[t] - o[t], u = v * iq;
+            if (!(fabs(u) <= 2147483647.0)) { S->fixed = 0; break; }
+            double k = (u + 6755399441055744.0) - 6755399441055744.0, ek = fabs(k * q - v);
+            if (ek > 1e-3 * q) { S->fixed = 0; break; }
             xi[t] = (int32_t)k;
             if (ek > e) e = ek;
         }
@@ -226,11 +286,11 @@ int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
                 return cm_seterr("vertex %d has weight 0: its pieces cannot be recovered from the sketch "
                                  "(keep the frames: a larger memory budget)", t / 3);
     int r = k < n ? k : n;          /* rank of the result */
-    free(S->Om); S->Om = NULL;      /* no more frames */
+    free(S->om); S->om = NULL;      /* no more frames */
+    free(S->zt); S->zt = NULL; free(S->yt); S->yt = NULL; free(S->zb); S->zb = NULL;
     /* Q = orth(Y): column-major n by k is Y^T row-major... transpose in */
     double *Qc = malloc(sizeof(double) * (size_t)n * k), *tau = malloc(sizeof(double) * k);
-    double *Psi = malloc(sizeof(double) * (size_t)n * s);
-    if (!Qc || !tau || !Psi) { free(Qc); free(tau); free(Psi); return cm_seterr("replib_sketch: out of memory"); }
+    if (!Qc || !tau) { free(Qc); free(tau); return cm_seterr("replib_sketch: out of memory"); }
     for (int i = 0; i < n; i++)
         for (int j = 0; j < k; j++) Qc[(size_t)j * n + i] = S->Y[(size_t)i * k + j];
     int lwork = -1;
@@ -238,62 +298,125 @@ int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
     dgeqrf_(&n, &r, Qc, &n, tau, &q, &lwork, &info);
     lwork = (int)q > k * 64 ? (int)q : k * 64;
     double *work = malloc(sizeof(double) * lwork);
-    if (!work) { free(Qc); free(tau); free(Psi); return cm_seterr("replib_sketch: out of memory"); }
+    if (!work) { free(Qc); free(tau); return cm_seterr("replib_sketch: out of memory"); }
     dgeqrf_(&n, &r, Qc, &n, tau, work, &lwork, &info);
     if (info == 0) dorgqr_(&n, &r, &r, Qc, &n, tau, work, &lwork, &info);
     free(work);
-    if (info != 0) { free(Qc); free(tau); free(Psi); return cm_seterr("replib_sketch: QR failed (%d)", info); }
-    /* M = Psi Q (s by r), column-major for dgels; Psi stored n by s row-major = s by n column-major */
-    for (int f = 0; f < n; f++) psi_col(S, f, Psi + (size_t)f * s);
-    double *M = malloc(sizeof(double) * (size_t)s * r);
-    if (!M) { free(Qc); free(tau); free(Psi); return cm_seterr("replib_sketch: out of memory"); }
-    /* M (col-major s x r) = Psi(col-major s x n) * Qc (col-major n x r) */
-    cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, s, r, n, 1.0, Psi, s, Qc, n, 0.0, M, s);
-    free(Psi);
-    /* B = M^+ W: W row-major s by 3#V is column-major 3#V by s; solve with
-     * the transposed right-hand side W^T: dgels wants s by nrhs column-major
-     * = row-major nrhs by s... transpose W into Wc (s by 3#V column-major). */
-    double *Wc = malloc(sizeof(double) * (size_t)s * m3);
-    if (!Wc) { free(Qc); free(tau); free(M); return cm_seterr("replib_sketch: out of memory"); }
-    for (int i = 0; i < s; i++)
-        for (int t = 0; t < m3; t++) Wc[(size_t)t * s + i] = S->W[(size_t)i * m3 + t];
-    free(S->W); S->W = NULL;
-    lwork = -1;
-    dgels_("N", &s, &r, &m3, M, &s, Wc, &s, &q, &lwork, &info);
-    lwork = (int)q > 1 ? (int)q : 1;
-    work = malloc(sizeof(double) * lwork);
-    if (!work) { free(Qc); free(tau); free(M); free(Wc); return cm_seterr("replib_sketch: out of memory"); }
-    dgels_("N", &s, &r, &m3, M, &s, Wc, &s, work, &lwork, &info);
-    free(work); free(M);
-    if (info != 0) { free(Qc); free(tau); free(Wc); return cm_seterr("replib_sketch: least squares failed (%d)", info); }
-    /* B (r by 3#V) = first r rows of each column of Wc; B^T (3#V by r, column-major) = V R */
-    double *Bt = malloc(sizeof(double) * (size_t)m3 * r);
-    if (!Bt) { free(Qc); free(tau); free(Wc); return cm_seterr("replib_sketch: out of memory"); }
-    for (int t = 0; t < m3; t++)
-        for (int j = 0; j < r; j++) Bt[(size_t)j * m3 + t] = Wc[(size_t)t * s + j];
-    free(Wc);
-    lwork = -1;
-    dgeqrf_(&m3, &r, Bt, &m3, tau, &q, &lwork, &info);
-    lwork = (int)q > r ? (int)q : r;
-    work = malloc(sizeof(double) * lwork);
-    double *Rt = calloc((size_t)r * r, sizeof(double));
-    if (!work || !Rt) { free(work); free(Rt); free(Qc); free(tau); free(Bt); return cm_seterr("replib_sketch: out of memory"); }
-    dgeqrf_(&m3, &r, Bt, &m3, tau, work, &lwork, &info);
-    for (int i = 0; i < r; i++)          /* Rt row-major r x r: Rt[i][j] = R[j][i] (j <= i) */
-        for (int j = 0; j <= i; j++) Rt[(size_t)i * r + j] = Bt[(size_t)j + (size_t)i * m3];
-    if (info == 0) dorgqr_(&m3, &r, &r, Bt, &m3, tau, work, &lwork, &info);
-    free(work); free(tau);
-    if (info != 0) { free(Rt); free(Qc); free(Bt); return cm_seterr("replib_sketch: QR failed (%d)", info); }
-    /* V (3#V by r row-major) from Bt (column-major 3#V by r) */
-    S->V = malloc(sizeof(double) * (size_t)m3 * r);
-    double *Zr = malloc(sizeof(double) * (size_t)n * r);
-    if (!S->V || !Zr) { free(Zr); free(Rt); free(Qc); free(Bt); return cm_seterr("replib_sketch: out of memory"); }
-    for (int t = 0; t < m3; t++)
-        for (int j = 0; j < r; j++) S->V[(size_t)t * r + j] = Bt[(size_t)j * m3 + t];
-    free(Bt);
-    /* Zr = Q R^T: Q column-major n x r = row-major Q^T (r x n) */
-    cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, n, r, r, 1.0, Qc, n, Rt, r, 0.0, Zr, r);
-    free(Qc); free(Rt);
+    if (info != 0) { free(Qc); free(tau); return cm_seterr("replib_sketch: QR failed (%d)", info); }
+    /* M = Psi Q (s by r, column-major): row i of Psi has the frames that
+     * were added to row i of W */
+    double *M = calloc((size_t)s * r, sizeof(double));
+    int *pc = malloc(sizeof(int) * S->zpsi);
+    if (!M || !pc) { free(Qc); free(tau); free(M); free(pc); return cm_seterr("replib_sketch: out of memory"); }
+    for (int f = 0; f < n; f++) {
+        psi_col(S, f, pc);
+        for (int i = 0; i < S->zpsi; i++) {
+            int row = pc[i] >> 1;
+            double sg = pc[i] & 1 ? -1 : 1;
+            for (int j = 0; j < r; j++) M[row + (size_t)j * s] += sg * Qc[f + (size_t)j * n];
+        }
+    }
+    free(pc);
+    double *Zr = NULL;
+    if (S->keeping) {
+        /* the frames are kept, so the basis V is not needed: any Zr with
+         * Zr Zr^T = Q B B^T Q^T will do.  B = M^+ W = R_M^-1 Q_M^T W
+         * (M = Q_M R_M), so B B^T = R_M^-1 Q_M^T (W W^T) Q_M R_M^-T: one
+         * DSYRK of W (s^2 3#V flops) and small matrices; with
+         * B B^T = U L U^T, Zr = Q U L^1/2. */
+        double *G = malloc(sizeof(double) * (size_t)s * s), *T1 = malloc(sizeof(double) * (size_t)s * r);
+        double *H = malloc(sizeof(double) * (size_t)r * r), *ev = malloc(sizeof(double) * r);
+        Zr = malloc(sizeof(double) * (size_t)n * r);
+        lwork = -1;
+        dgeqrf_(&s, &r, M, &s, tau, &q, &lwork, &info);
+        int lw2 = 3 * r;
+        lwork = (int)q > lw2 ? (int)q : lw2;
+        lwork = lwork > r * 64 ? lwork : r * 64;
+        work = malloc(sizeof(double) * lwork);
+        if (!G || !T1 || !H || !ev || !Zr || !work) {
+            free(G); free(T1); free(H); free(ev); free(Zr); free(work); free(Qc); free(tau); free(M);
+            return cm_seterr("replib_sketch: out of memory");
+        }
+        cblas_dsyrk(CblasColMajor, CblasUpper, CblasTrans, s, m3, 1.0, S->W, m3, 0.0, G, s);
+        free(S->W); S->W = NULL;
+        for (int i = 0; i < s; i++)
+            for (int j = 0; j < i; j++) G[i + (size_t)j * s] = G[j + (size_t)i * s];
+        dgeqrf_(&s, &r, M, &s, tau, work, &lwork, &info);
+        for (int j = 0; j < r; j++)          /* R_M (upper) into H's storage */
+            for (int i = 0; i < r; i++) H[i + (size_t)j * r] = i <= j ? M[i + (size_t)j * s] : 0;
+        if (info == 0) dorgqr_(&s, &r, &r, M, &s, tau, work, &lwork, &info);
+        if (info != 0) {
+            free(G); free(T1); free(H); free(ev); free(Zr); free(work); free(Qc); free(tau); free(M);
+            return cm_seterr("replib_sketch: QR failed (%d)", info);
+        }
+        double *Rm = malloc(sizeof(double) * (size_t)r * r);
+        if (!Rm) { free(G); free(T1); free(H); free(ev); free(Zr); free(work); free(Qc); free(tau); free(M); return cm_seterr("replib_sketch: out of memory"); }
+        memcpy(Rm, H, sizeof(double) * (size_t)r * r);
+        /* H = Q_M^T G Q_M */
+        cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, s, r, s, 1.0, G, s, M, s, 0.0, T1, s);
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, r, r, s, 1.0, M, s, T1, s, 0.0, H, r);
+        free(G); free(T1); free(M);
+        /* H <- R_M^-1 H R_M^-T */
+        cblas_dtrsm(CblasColMajor, CblasLeft, CblasUpper, CblasNoTrans, CblasNonUnit, r, r, 1.0, Rm, r, H, r);
+        cblas_dtrsm(CblasColMajor, CblasRight, CblasUpper, CblasTrans, CblasNonUnit, r, r, 1.0, Rm, r, H, r);
+        free(Rm);
+        for (int i = 0; i < r; i++)
+            for (int j = 0; j < i; j++) H[i + (size_t)j * r] = H[j + (size_t)i * r] = 0.5 * (H[i + (size_t)j * r] + H[j + (size_t)i * r]);
+        dsyev_("V", "U", &r, H, &r, ev, work, &lwork, &info);
+        free(work); free(tau);
+        if (info != 0) { free(H); free(ev); free(Zr); free(Qc); return cm_seterr("replib_sketch: eigenvalues failed (%d)", info); }
+        cblas_dgemm(CblasRowMajor, CblasTrans, CblasTrans, n, r, r, 1.0, Qc, n, H, r, 0.0, Zr, r);
+        for (int j = 0; j < r; j++) ev[j] = ev[j] > 0 ? sqrt(ev[j]) : 0;
+        for (int f = 0; f < n; f++)
+            for (int j = 0; j < r; j++) Zr[(size_t)f * r + j] *= ev[j];
+        free(H); free(ev); free(Qc);
+    } else {
+        /* B = M^+ W: W row-major s by 3#V is column-major 3#V by s; solve with
+         * the transposed right-hand side W^T: dgels wants s by nrhs column-major
+         * = row-major nrhs by s... transpose W into Wc (s by 3#V column-major). */
+        double *Wc = malloc(sizeof(double) * (size_t)s * m3);
+        if (!Wc) { free(Qc); free(tau); free(M); return cm_seterr("replib_sketch: out of memory"); }
+        for (int i = 0; i < s; i++)
+            for (int t = 0; t < m3; t++) Wc[(size_t)t * s + i] = S->W[(size_t)i * m3 + t];
+        free(S->W); S->W = NULL;
+        lwork = -1;
+        dgels_("N", &s, &r, &m3, M, &s, Wc, &s, &q, &lwork, &info);
+        lwork = (int)q > 1 ? (int)q : 1;
+        work = malloc(sizeof(double) * lwork);
+        if (!work) { free(Qc); free(tau); free(M); free(Wc); return cm_seterr("replib_sketch: out of memory"); }
+        dgels_("N", &s, &r, &m3, M, &s, Wc, &s, work, &lwork, &info);
+        free(work); free(M);
+        if (info != 0) { free(Qc); free(tau); free(Wc); return cm_seterr("replib_sketch: least squares failed (%d)", info); }
+        /* B (r by 3#V) = first r rows of each column of Wc; B^T (3#V by r, column-major) = V R */
+        double *Bt = malloc(sizeof(double) * (size_t)m3 * r);
+        if (!Bt) { free(Qc); free(tau); free(Wc); return cm_seterr("replib_sketch: out of memory"); }
+        for (int t = 0; t < m3; t++)
+            for (int j = 0; j < r; j++) Bt[(size_t)j * m3 + t] = Wc[(size_t)t * s + j];
+        free(Wc);
+        lwork = -1;
+        dgeqrf_(&m3, &r, Bt, &m3, tau, &q, &lwork, &info);
+        lwork = (int)q > r ? (int)q : r;
+        work = malloc(sizeof(double) * lwork);
+        double *Rt = calloc((size_t)r * r, sizeof(double));
+        if (!work || !Rt) { free(work); free(Rt); free(Qc); free(tau); free(Bt); return cm_seterr("replib_sketch: out of memory"); }
+        dgeqrf_(&m3, &r, Bt, &m3, tau, work, &lwork, &info);
+        for (int i = 0; i < r; i++)          /* Rt row-major r x r: Rt[i][j] = R[j][i] (j <= i) */
+            for (int j = 0; j <= i; j++) Rt[(size_t)i * r + j] = Bt[(size_t)j + (size_t)i * m3];
+        if (info == 0) dorgqr_(&m3, &r, &r, Bt, &m3, tau, work, &lwork, &info);
+        free(work); free(tau);
+        if (info != 0) { free(Rt); free(Qc); free(Bt); return cm_seterr("replib_sketch: QR failed (%d)", info); }
+        /* V (3#V by r row-major) from Bt (column-major 3#V by r) */
+        S->V = malloc(sizeof(double) * (size_t)m3 * r);
+        if (!S->V) { free(Rt); free(Qc); free(Bt); return cm_seterr("replib_sketch: out of memory"); }
+        for (int t = 0; t < m3; t++)
+            for (int j = 0; j < r; j++) S->V[(size_t)t * r + j] = Bt[(size_t)j * m3 + t];
+        free(Bt);
+        /* Zr = Q R^T: Q column-major n x r = row-major Q^T (r x n) */
+        Zr = malloc(sizeof(double) * (size_t)n * r);
+        if (!Zr) { free(Rt); free(Qc); return cm_seterr("replib_sketch: out of memory"); }
+        cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, n, r, r, 1.0, Qc, n, Rt, r, 0.0, Zr, r);
+        free(Qc); free(Rt);
+    }
     /* fill D as replib_prepare would */
     memset(D, 0, sizeof *D);
     D->n = D->N = n; D->nv = S->nv; D->m3 = m3; D->X = NULL;

@@ -26,6 +26,8 @@
  * turns the frames kept so far to floats (in place) and says so.  Exact norms |z_f|^2 and |z_{f+1} - z_f|^2 are accumulated
  * on the way, so the sketch's captured fraction of |Z|_F^2 is known.
  */
+#define REPLIB_SKETCH_ZETA 8     /* nonzeros per row of Omega and per column of Psi */
+
 #ifndef CM_REPLIB_SKETCH_H
 #define CM_REPLIB_SKETCH_H
 #include "replib.h"
@@ -43,7 +45,9 @@ struct replib_sketch {
     int keeping;                /* 1 while the frames are kept */
     double *ref;                /* 3#V first frame */
     double *sw;                 /* 3#V sqrt(w), or NULL */
-    double *Om;                 /* 3#V by k */
+    int zeta, zpsi;             /* nonzeros per row of Omega, per column of Psi */
+    int *om;                    /* 3#V by zeta: the nonzeros of row t of Omega, 2 column + (sign < 0) */
+    double *zt, *yt;            /* batch scratch: the frames transposed, Y_b transposed */
     double *Y;                  /* cap by k */
     double *W;                  /* s by 3#V */
     double *zz, *dd;            /* cap: exact |z_f|^2, |z_{f+1} - z_f|^2 (0 across cuts) */

@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static const char help[] =
 "Usage: dict-learn [options] [FILE]\n"
@@ -238,6 +239,15 @@ static void parse_sweep(const char *s, int *d1, int *d2, int *step)
     if (*d1 < 1 || *d2 < *d1 || *step < 1) usage_error("--sweep: need 1 <= D1 <= D2 and STEP >= 1");
 }
 
+/* -v: wall and CPU seconds of each stage since the previous call */
+static void stage(const char *what)
+{
+    static double w0 = -1, c0;
+    double w = now_seconds(), c = (double)clock() / CLOCKS_PER_SEC;
+    if (w0 >= 0 && what) info(1, "time: %s %.3f s wall, %.3f s cpu", what, w - w0, c - c0);
+    w0 = w; c0 = c;
+}
+
 /* Read the animation once, frame by frame: in memory (m->V, double) while
  * it is small, else (or with --stream on) into the one-pass sketch S, with
  * the frames buffered so far fed to it.  Weights are read once the vertex
@@ -308,7 +318,9 @@ int main(int argc, char **argv)
     struct mesh m;
     struct columns wc = {0};
     struct replib_sketch S = {0};
+    stage(NULL);
     int streamed = read_anim(&o, &m, &wc, &S);
+    stage(streamed ? "read + sketch" : "read");
     struct mesh fx = {0};
     if (o.fixed) {
         if (streamed) die("--fixed needs the animation in memory (--stream off)");
@@ -347,6 +359,7 @@ int main(int argc, char **argv)
             info(1, "low-rank test: input step %g, residual RMS %.3g per coordinate: %s (rank %d)", D.step,
                  D.lowrank_resid, D.lowrank ? "accepted" : "rejected, full Gram matrix", D.lowrank);
     }
+    stage(streamed ? "sketch finish" : "prepare");
     info(1, "%d frames, %d vertices, %d clips, %s back end%s (OpenBLAS %s), prepared in %.3f s", m.nframes, m.nv,
          mesh_nclips(&m), D.K ? "Gram" : "direct", streamed ? " (sketch)" : D.lowrank ? " (exact low rank)" : "", blas_corename(),
          D.prep_seconds);
@@ -407,6 +420,7 @@ int main(int argc, char **argv)
     } else {
         learn(&D, &o, d, init, &m, D.w, &best);
     }
+    stage("learn + evaluate");
 
     /* fewer swaps: the learned library relabelled with the swap term */
     int swaps = swap_count(best.res.labels, m.nframes, m.cut);
@@ -478,6 +492,7 @@ int main(int argc, char **argv)
     lib.cut = cut;
     if (mesh_write(out, &lib, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
     out_close(out);
+    stage("write");
     free(cut);
     replib_result_free(&best.res);
     replib_data_free(&D);
