@@ -673,15 +673,30 @@ static double dp_candidates(const struct chain *p, int K, int *l)
     int *cand = malloc(sizeof(int) * (size_t)n * W), *nc = malloc(sizeof(int) * n);
     double *hs = malloc(sizeof(double) * (size_t)n * W), *V = malloc(sizeof(double) * W);
     double *Vn = malloc(sizeof(double) * W);
-    if (!cand || !nc || !hs || !V || !Vn) {
-        free(cand); free(nc); free(hs); free(V); free(Vn);
+    int *pool_buf = malloc(sizeof(int) * d);
+    if (!cand || !nc || !hs || !V || !Vn || !pool_buf) {
+        free(cand); free(nc); free(hs); free(V); free(Vn); free(pool_buf);
         cm_seterr("replib: out of memory (%d frames, %d candidates)", n, W);
         return NAN;
     }
     for (int f = 0; f < n; f++) {
         const double *u = p->U + (size_t)f * d;
-        int *c = cand + (size_t)f * W, k = 0, in = 0;
-        for (int a = 0; a < d; a++) {
+        int *c = cand + (size_t)f * W, k = 0, in = 0, m = d;
+        const int *pool = NULL;
+        if (f > 0 && K < d) {
+            /* the previous frame's K candidates bound frame f's K-th
+             * smallest cost from above: only pieces at or below that bound
+             * can be among the K smallest (same set, same order) */
+            const int *pc = cand + (size_t)(f - 1) * W;
+            double tau = u[pc[0]];
+            for (int j = 1; j < K; j++) tau = u[pc[j]] > tau ? u[pc[j]] : tau;
+            m = 0;
+            for (int a = 0; a < d; a++) if (u[a] <= tau) pool_buf[m++] = a;
+            if (m >= K) pool = pool_buf;
+            else m = d;
+        }
+        for (int i = 0; i < m; i++) {
+            int a = pool ? pool[i] : i;
             if (k == K && !(u[a] < u[c[K - 1]])) continue;
             int j = k < K ? k++ : K - 1;
             while (j > 0 && u[c[j - 1]] > u[a]) { c[j] = c[j - 1]; j--; }
@@ -730,7 +745,7 @@ static double dp_candidates(const struct chain *p, int K, int *l)
         }
         start = end + 1;
     }
-    free(cand); free(nc); free(hs); free(V); free(Vn);
+    free(cand); free(nc); free(hs); free(V); free(Vn); free(pool_buf);
     return total;
 }
 
@@ -879,6 +894,31 @@ static void dcol(const struct replib_data *D, int g, double *kc, double *dist)
     }
 }
 
+/* dist (L by n, row c) = |z_f - z_{g[c]}|^2 for L frames or fixed pieces
+ * g at once: one GEMM on the reduced coordinates (or rows of K).  Returns
+ * 0 or -1 (allocation). */
+static int dcols(const struct replib_data *D, const int *g, int L, double *dist)
+{
+    int n = D->n, zd = D->zdim;
+    if (D->K) {
+        for (int c = 0; c < L; c++) memcpy(dist + (size_t)c * n, D->K + (size_t)g[c] * D->N, sizeof(double) * n);
+    } else {
+        double *Zc = malloc(sizeof(double) * (size_t)L * zd);
+        if (!Zc) return -1;
+        for (int c = 0; c < L; c++) memcpy(Zc + (size_t)c * zd, D->Z + (size_t)g[c] * zd, sizeof(double) * zd);
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, L, n, zd, 1.0, Zc, zd, D->Z, zd, 0.0, dist, n);
+        free(Zc);
+    }
+    for (int c = 0; c < L; c++) {
+        double *dc = dist + (size_t)c * n, zg = D->zz[g[c]];
+        for (int f = 0; f < n; f++) {
+            double v = D->zz[f] + zg - 2 * dc[f];
+            dc[f] = v > 0 ? v : 0;
+        }
+    }
+    return 0;
+}
+
 /* Sample a frame with probability proportional to max(wt[f], 0) among
  * frames with skip[f] == 0 (skip may be NULL); -1 if all weights are 0. */
 static int d2_sample(struct rng *r, const double *wt, const unsigned char *skip, int n)
@@ -906,10 +946,11 @@ static int seed_greedy(const struct replib_data *D, int d, struct rng *r, struct
     int n = D->n, nfix = D->nfix, L = 2 + (int)log((double)d);
     s->nfree = 0; s->nnz = 0;
     double *mind = malloc(sizeof(double) * n), *kc = malloc(sizeof(double) * n);
-    double *dc = malloc(sizeof(double) * n), *db = malloc(sizeof(double) * n);
+    double *dcl = malloc(sizeof(double) * (size_t)n * L), *db = malloc(sizeof(double) * n);
+    int *cands = malloc(sizeof(int) * L);
     unsigned char *used = calloc(n, 1);
-    if (!mind || !kc || !dc || !db || !used) {
-        free(mind); free(kc); free(dc); free(db); free(used);
+    if (!mind || !kc || !dcl || !db || !used || !cands) {
+        free(mind); free(kc); free(dcl); free(db); free(used); free(cands);
         return cm_seterr("replib: out of memory");
     }
     for (int f = 0; f < n; f++) mind[f] = INFINITY;
@@ -920,14 +961,24 @@ static int seed_greedy(const struct replib_data *D, int d, struct rng *r, struct
             dcol(D, g, kc, db);
         } else {
             if (a > 0) {
+                /* the L candidates are drawn before any distance is known
+                 * (mind does not change meanwhile), then measured by one GEMM */
                 double bestpot = INFINITY;
+                int nc = 0;
                 for (int t = 0; t < L; t++) {
                     int c = d2_sample(r, mind, used, n);
                     if (c < 0) break;
-                    dcol(D, c, kc, dc);
+                    cands[nc++] = c;
+                }
+                if (nc > 0 && dcols(D, cands, nc, dcl) < 0) {
+                    free(mind); free(kc); free(dcl); free(db); free(used); free(cands);
+                    return cm_seterr("replib: out of memory");
+                }
+                for (int t = 0; t < nc; t++) {
+                    const double *dct = dcl + (size_t)t * n;
                     double pot = 0;
-                    for (int f = 0; f < n; f++) pot += dc[f] < mind[f] ? dc[f] : mind[f];
-                    if (pot < bestpot) { bestpot = pot; g = c; memcpy(db, dc, sizeof(double) * n); }
+                    for (int f = 0; f < n; f++) pot += dct[f] < mind[f] ? dct[f] : mind[f];
+                    if (pot < bestpot) { bestpot = pot; g = cands[t]; memcpy(db, dct, sizeof(double) * n); }
                 }
             }
             if (g < 0) {        /* first centre, or every frame already fitted exactly */
@@ -942,7 +993,7 @@ static int seed_greedy(const struct replib_data *D, int d, struct rng *r, struct
         s->src[a] = g;
         for (int f = 0; f < n; f++) if (db[f] < mind[f]) mind[f] = db[f];
     }
-    free(mind); free(kc); free(dc); free(db); free(used);
+    free(mind); free(kc); free(dcl); free(db); free(used); free(cands);
     return 0;
 }
 
@@ -1012,13 +1063,14 @@ static int hartigan(const struct replib_data *D, struct work *w, int *l, double 
 struct scratch {
     int *l, *ln, *bl, *cnt;     /* n, n, n, d */
     double *cost, *kc, *dc, *cur, *rc;  /* n, n, n, n, d */
+    double *dcl;                /* (2 + ln d) by n: distances to split candidates */
     int *order;                 /* d */
 };
 
 static void scratch_free(struct scratch *x)
 {
     free(x->l); free(x->ln); free(x->bl); free(x->cnt);
-    free(x->cost); free(x->kc); free(x->dc); free(x->cur); free(x->rc); free(x->order);
+    free(x->cost); free(x->kc); free(x->dc); free(x->cur); free(x->rc); free(x->order); free(x->dcl);
     memset(x, 0, sizeof *x);
 }
 
@@ -1029,7 +1081,8 @@ static int scratch_init(struct scratch *x, int n, int d)
     x->cost = malloc(sizeof(double) * n); x->kc = malloc(sizeof(double) * n);
     x->dc = malloc(sizeof(double) * n); x->cur = malloc(sizeof(double) * n);
     x->rc = malloc(sizeof(double) * d);
-    if (!x->l || !x->ln || !x->bl || !x->cnt || !x->order || !x->cost || !x->kc || !x->dc || !x->cur || !x->rc) {
+    x->dcl = malloc(sizeof(double) * (size_t)n * (2 + (int)log((double)d)));
+    if (!x->dcl || !x->l || !x->ln || !x->bl || !x->cnt || !x->order || !x->cost || !x->kc || !x->dc || !x->cur || !x->rc) {
         scratch_free(x);
         return cm_seterr("replib: out of memory");
     }
@@ -1136,13 +1189,18 @@ static int split_merge(const struct replib_data *D, const struct replib_opts *o,
     }
     int g = -1;
     double bestgain = -1;
-    for (int t = 0; t < L; t++) {
+    int cands[64], nc = 0;
+    for (int t = 0; t < L && t < 64; t++) {
         int c = d2_sample(r, x->cur, NULL, n);
         if (c < 0) break;
-        dcol(D, c, x->kc, x->dc);
+        cands[nc++] = c;
+    }
+    if (nc > 0 && dcols(D, cands, nc, x->dcl) < 0) return -1;
+    for (int t = 0; t < nc; t++) {
+        const double *dct = x->dcl + (size_t)t * n;
         double gain = 0;
-        for (int f = 0; f < n; f++) if (x->dc[f] < x->cur[f]) gain += x->cur[f] - x->dc[f];
-        if (gain > bestgain) { bestgain = gain; g = c; memcpy(x->cost, x->dc, sizeof(double) * n); }
+        for (int f = 0; f < n; f++) if (dct[f] < x->cur[f]) gain += x->cur[f] - dct[f];
+        if (gain > bestgain) { bestgain = gain; g = cands[t]; memcpy(x->cost, dct, sizeof(double) * n); }
     }
     if (g < 0) return 0;
     for (int f = 0; f < n; f++) {
@@ -1196,7 +1254,9 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
     w->ncand = o->method == REPLIB_DP && mu > 0 && o->search > 0 ? REPLIB_TRIAL_CANDIDATES : 0;
     for (int t = 0; t < o->search; t++) {
         memcpy(x->ln, l, sizeof(int) * n);
-        if (!split_merge(D, o, w, x, &r)) break;
+        int sm = split_merge(D, o, w, x, &r);
+        if (sm < 0) { out->rc = cm_seterr("replib: out of memory"); return; }
+        if (!sm) break;
         double En = INFINITY;
         if (descend(D, o, w, s, x, &En, out, &it) < 0) { out->rc = -1; return; }
         if (En < out->E - 1e-12 * fabs(out->E)) {
