@@ -10,6 +10,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <thread>
 #include <vector>
@@ -26,42 +27,92 @@ typedef CGAL::AABB_tree<Traits> Tree;
 
 // CGAL's tree, flattened after the build into one array in depth-first
 // order for the nearest-point walk (the nodes of a query's path then sit
-// next to each other in memory): box lo[3] hi[3], and two children, each a
-// node index >= 0 or a face -1 - f.
-struct flat_node { float lo[3], hi[3]; int child[2]; };  // 32 bytes
+// next to each other in memory).  A node holds the boxes of its two
+// children (a child is a node index >= 0 or a face -1 - f; a face's box is
+// its triangle's), so a step of the walk reads one cache line and never
+// the children themselves: lo[s] hi[s] child[s], s = 0, 1.
+struct alignas(64) flat_node { float lo[2][3], hi[2][3]; int child[2]; };  // 56 (64) bytes
+
+// The same tree with four children a node (each node's grandchildren,
+// or its children where they are faces), for closest_points_batch(): the
+// four boxes in single precision side by side, so one set of vector
+// operations gives all four distances.  child[s]: a wide node >= 0, a
+// face -1 - f, or NONE (an empty slot, its box empty).
+struct alignas(64) wide_node { float lo[3][4], hi[3][4]; int child[4]; };  // 112 (128) bytes
+enum { NONE = -2147483647 - 1 };
 
 struct closest_point_tree {
     std::vector<Triangle> tris;
+    std::vector<wide_node> wide;
     std::vector<double> P;      // #F by 9: the corners again, as plain doubles
     std::vector<flat_node> nodes;
+    float root_lo[3], root_hi[3];   // the root's box
     Tree tree;
 };
 
 typedef CGAL::AABB_node<Traits> Node;
+// single precision, rounded outward: the boxes still contain their triangles
+static void float_box(const CGAL::Bbox_3 &b, float lo[3], float hi[3])
+{
+    double l[3] = {b.xmin(), b.ymin(), b.zmin()}, h[3] = {b.xmax(), b.ymax(), b.zmax()};
+    for (int d = 0; d < 3; d++) {
+        lo[d] = std::nextafter((float)l[d], -HUGE_VALF);
+        hi[d] = std::nextafter((float)h[d], HUGE_VALF);
+    }
+}
+// node n with np primitives into T->nodes (depth first); returns its index
 static int flatten(closest_point_tree *T, const Node &n, std::size_t np)
 {
     int k = (int)T->nodes.size();
     T->nodes.emplace_back();
-    const CGAL::Bbox_3 &b = n.bbox();
     flat_node x;
-    // single precision, rounded outward: the boxes still contain their triangles
-    double lo[3] = {b.xmin(), b.ymin(), b.zmin()}, hi[3] = {b.xmax(), b.ymax(), b.zmax()};
-    for (int d = 0; d < 3; d++) {
-        x.lo[d] = std::nextafter((float)lo[d], -HUGE_VALF);
-        x.hi[d] = std::nextafter((float)hi[d], HUGE_VALF);
-    }
-    auto face = [&](const Primitive &p) { return -1 - (int)(p.id() - T->tris.begin()); };
+    auto face = [&](int s, const Primitive &p) {
+        float_box(p.datum().bbox(), x.lo[s], x.hi[s]);
+        x.child[s] = -1 - (int)(p.id() - T->tris.begin());
+    };
+    auto node = [&](int s, const Node &c, std::size_t m) {
+        float_box(c.bbox(), x.lo[s], x.hi[s]);
+        x.child[s] = flatten(T, c, m);
+    };
     if (np == 2) {
-        x.child[0] = face(n.left_data()); x.child[1] = face(n.right_data());
+        face(0, n.left_data()); face(1, n.right_data());
     } else if (np == 3) {
-        x.child[0] = face(n.left_data());
-        x.child[1] = flatten(T, n.right_child(), 2);
+        face(0, n.left_data());
+        node(1, n.right_child(), 2);
     } else {
-        x.child[0] = flatten(T, n.left_child(), np / 2);
-        x.child[1] = flatten(T, n.right_child(), np - np / 2);
+        node(0, n.left_child(), np / 2);
+        node(1, n.right_child(), np - np / 2);
     }
     T->nodes[k] = x;
     return k;
+}
+
+// flat node k and its children as wide node(s); returns its index
+static int widen(closest_point_tree *T, int k)
+{
+    int w = (int)T->wide.size();
+    T->wide.emplace_back();
+    wide_node x;
+    int ns = 0, sub[4];
+    const flat_node &n = T->nodes[k];
+    auto put = [&](const float *lo, const float *hi, int child, int flat) {
+        for (int d = 0; d < 3; d++) { x.lo[d][ns] = lo[d]; x.hi[d][ns] = hi[d]; }
+        x.child[ns] = child; sub[ns] = flat; ns++;
+    };
+    for (int s = 0; s < 2; s++) {
+        int c = n.child[s];
+        if (c < 0) { put(n.lo[s], n.hi[s], c, -1); continue; }
+        const flat_node &m = T->nodes[c];
+        for (int t = 0; t < 2; t++) put(m.lo[t], m.hi[t], m.child[t] < 0 ? m.child[t] : 0, m.child[t]);
+    }
+    for (; ns < 4; ns++) {
+        for (int d = 0; d < 3; d++) { x.lo[d][ns] = HUGE_VALF; x.hi[d][ns] = -HUGE_VALF; }
+        x.child[ns] = NONE; sub[ns] = -1;
+    }
+    for (int s = 0; s < 4; s++)
+        if (sub[s] >= 0) x.child[s] = widen(T, sub[s]);
+    T->wide[w] = x;
+    return w;
 }
 
 // The closest point to p on triangle a b c (Ericson, Real-Time Collision
@@ -133,44 +184,102 @@ struct Nearest {
     const closest_point_tree *T;
     double q[3], best, c[3], b[3];
     int face;
-    void test(int f)
+    void start(const closest_point_tree *t, const double p[3])
     {
+        T = t; q[0] = p[0]; q[1] = p[1]; q[2] = p[2];
+        best = HUGE_VAL; face = -1;
+    }
+    // face f; its box (in the parent node) is dd away: most leaves end there
+    void test(int f, double dd)
+    {
+        if (face >= 0 && dd >= best) return;
         const double *t = &T->P[9 * (size_t)f];
-        if (face >= 0) {
-            // the triangle's box first: most leaves end here
-            double lo[3], hi[3];
-            for (int d = 0; d < 3; d++) {
-                lo[d] = std::min(t[d], std::min(t[3 + d], t[6 + d]));
-                hi[d] = std::max(t[d], std::max(t[3 + d], t[6 + d]));
-            }
-            if (box_d2(q, lo, hi) >= best) return;
-        }
         double cc[3], bb[3], d2 = tri_closest(t, q, cc, bb);
         if (d2 < best || face < 0) {
             best = d2; face = f;
             for (int d = 0; d < 3; d++) { c[d] = cc[d]; b[d] = bb[d]; }
         }
     }
+    // the walk of the wide tree (the same answer as walk(); of faces
+    // equally near, maybe another one)
+    void walk4()
+    {
+        typedef float v4 __attribute__((vector_size(16)));
+        const std::vector<wide_node> &N = T->wide;
+        if (N.empty()) { test(0, 0); return; }
+        // q rounded down and up to single precision: the box distances
+        // below are then never larger than the exact ones, less rounding
+        v4 qd[3], qu[3];
+        for (int d = 0; d < 3; d++) {
+            float f = (float)q[d], lo = f, hi = f;
+            if ((double)f > q[d]) lo = std::nextafter(f, -HUGE_VALF);
+            if ((double)f < q[d]) hi = std::nextafter(f, HUGE_VALF);
+            qd[d] = (v4){lo, lo, lo, lo}; qu[d] = (v4){hi, hi, hi, hi};
+        }
+        const v4 zero = {0, 0, 0, 0};
+        int stack[128], top = 0;
+        double sd[128];
+        stack[top] = 0; sd[top++] = 0;
+        while (top > 0) {
+            --top;
+            if (sd[top] >= best && face >= 0) continue;
+            const wide_node &n = N[stack[top]];
+            v4 s2 = zero;
+            for (int d = 0; d < 3; d++) {
+                v4 lo, hi;
+                memcpy(&lo, n.lo[d], sizeof lo); memcpy(&hi, n.hi[d], sizeof hi);
+                v4 a = lo - qu[d], b = qd[d] - hi;
+                v4 e = a > b ? a : b;
+                e = e > zero ? e : zero;
+                s2 += e * e;
+            }
+            // a lower bound of each box's squared distance (the float
+            // rounding of the sums above is far below 1e-5 relative)
+            double lb[4];
+            int idx[4], m = 0;
+            for (int s = 0; s < 4; s++) {
+                lb[s] = n.child[s] == NONE ? HUGE_VAL : (double)s2[s] * (1 - 1e-5);
+                if (n.child[s] != NONE && (lb[s] < best || face < 0)) {
+                    // insertion by distance
+                    int j = m++;
+                    while (j > 0 && lb[idx[j - 1]] > lb[s]) { idx[j] = idx[j - 1]; j--; }
+                    idx[j] = s;
+                }
+            }
+            for (int j = 0; j < m; j++)
+                if (n.child[idx[j]] < 0) test(-1 - n.child[idx[j]], lb[idx[j]]);
+            for (int j = m - 1; j >= 0; j--) {
+                int s = idx[j];
+                if (n.child[s] >= 0 && (lb[s] < best || face < 0) && top < 128) {
+                    stack[top] = n.child[s]; sd[top++] = lb[s];
+                }
+            }
+        }
+    }
     void walk()
     {
         const std::vector<flat_node> &N = T->nodes;
-        if (N.empty()) { test(0); return; }
+        if (N.empty()) { test(0, 0); return; }
+        // the stack holds nodes with their box distances at the push
         int stack[128], top = 0;
-        stack[top++] = 0;
+        double sd[128];
+        stack[top] = 0; sd[top++] = box_d2(q, T->root_lo, T->root_hi);
         while (top > 0) {
-            const flat_node &n = N[stack[--top]];
-            if (box_d2(q, n.lo, n.hi) >= best && face >= 0) continue;
+            --top;
+            if (sd[top] >= best && face >= 0) continue;
+            const flat_node &n = N[stack[top]];
             double dd[2];
             for (int s = 0; s < 2; s++) {
-                int k = n.child[s];
-                if (k < 0) { test(-1 - k); dd[s] = HUGE_VAL; }
-                else dd[s] = box_d2(q, N[k].lo, N[k].hi);
+                dd[s] = box_d2(q, n.lo[s], n.hi[s]);
+                if (n.child[s] < 0) { test(-1 - n.child[s], dd[s]); dd[s] = HUGE_VAL; }
             }
             // push the farther child first, so the nearer one comes next
             int first = dd[1] < dd[0] ? 1 : 0;
             for (int s = 1; s >= 0; s--) {
                 int w = s == 0 ? first : 1 - first;
-                if (n.child[w] >= 0 && (dd[w] < best || face < 0) && top < 128) stack[top++] = n.child[w];
+                if (n.child[w] >= 0 && (dd[w] < best || face < 0) && top < 128) {
+                    stack[top] = n.child[w]; sd[top++] = dd[w];
+                }
             }
         }
     }
@@ -205,33 +314,33 @@ extern "C" struct closest_point_tree *closest_point_tree_new(const double *V, in
     T->tree.do_not_accelerate_distance_queries();
     if (nf >= 2) {
         T->nodes.reserve(nf);
+        float_box(T->tree.root_node()->bbox(), T->root_lo, T->root_hi);
         flatten(T, *T->tree.root_node(), (std::size_t)nf);
+        T->wide.reserve(nf / 2 + 1);
+        widen(T, 0);
     }
     return T;
 }
 
 extern "C" void closest_point_tree_free(struct closest_point_tree *T) { delete T; }
 
-// the nearest point to p, starting from face h (-1: none)
-static double query_hinted(const closest_point_tree *T, const double p[3], int h, double c[3],
-                           int *face, double bary[3])
+// the nearest point to p, starting from face h (-1: none), into r
+static void query_hinted(const closest_point_tree *T, const double p[3], int h, Nearest &r)
 {
-    Nearest n;
-    n.T = T; n.q[0] = p[0]; n.q[1] = p[1]; n.q[2] = p[2];
-    n.best = HUGE_VAL; n.face = -1;
-    if (h >= 0 && h < (int)T->tris.size()) n.test(h);
-    n.walk();
-    if (c) { c[0] = n.c[0]; c[1] = n.c[1]; c[2] = n.c[2]; }
-    if (face) *face = n.face;
-    if (bary) { bary[0] = n.b[0]; bary[1] = n.b[1]; bary[2] = n.b[2]; }
-    return std::sqrt(n.best);
+    r.start(T, p);
+    if (h >= 0 && h < (int)T->tris.size()) r.test(h, 0);
+    r.walk();
 }
 
 extern "C" double closest_point_query(const struct closest_point_tree *T, const double p[3],
                                       double c[3], int *face, double bary[3])
 {
-    double cc[3];
-    return query_hinted(T, p, -1, c ? c : cc, face, bary);
+    Nearest r;
+    query_hinted(T, p, -1, r);
+    if (c) { c[0] = r.c[0]; c[1] = r.c[1]; c[2] = r.c[2]; }
+    if (face) *face = r.face;
+    if (bary) { bary[0] = r.b[0]; bary[1] = r.b[1]; bary[2] = r.b[2]; }
+    return std::sqrt(r.best);
 }
 
 extern "C" void closest_points(const struct closest_point_tree *T, const double *P, int n,
@@ -254,11 +363,10 @@ static unsigned morton(const double *p, const double lo[3], double ext)
     return m;
 }
 
-extern "C" void closest_points_hinted(const struct closest_point_tree *T, const double *P, int n,
-                                      const int *H, double *C, int *I, double *B, double *D)
+// the queries P (n by 3) in Morton order: neighbours one after another
+// walk the same tree nodes, which then stay in the cache
+static std::vector<int> morton_order(const double *P, int n)
 {
-    // the queries in Morton order: neighbours one after another walk the
-    // same tree nodes, which then stay in the cache
     std::vector<std::pair<unsigned, int>> order(n);
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (int i = 0; i < n; i++)
@@ -269,22 +377,120 @@ extern "C" void closest_points_hinted(const struct closest_point_tree *T, const 
     double ext = std::max(hi[0] - lo[0], std::max(hi[1] - lo[1], hi[2] - lo[2]));
     for (int i = 0; i < n; i++) order[i] = std::make_pair(morton(P + 3 * (size_t)i, lo, ext), i);
     std::sort(order.begin(), order.end());
-    auto work = [&](int lo, int hi) {
-        for (int j = lo; j < hi; j++) {
-            int i = order[j].second;
-            double c[3], b[3];
-            int f;
-            double d = query_hinted(T, P + 3 * (size_t)i, H ? H[i] : -1, c, &f, b);
-            if (C) { C[3 * (size_t)i] = c[0]; C[3 * (size_t)i + 1] = c[1]; C[3 * (size_t)i + 2] = c[2]; }
-            if (I) I[i] = f;
-            if (B) { B[3 * (size_t)i] = b[0]; B[3 * (size_t)i + 1] = b[1]; B[3 * (size_t)i + 2] = b[2]; }
-            if (D) D[i] = d;
-        }
-    };
+    std::vector<int> o(n);
+    for (int i = 0; i < n; i++) o[i] = order[i].second;
+    return o;
+}
+
+namespace {
+// where the answers of a batch go (each array may be NULL)
+struct answers {
+    double *C, *B, *D; int *I;
+    void put(int i, const Nearest &r) const
+    {
+        if (C) for (int d = 0; d < 3; d++) C[3 * (size_t)i + d] = r.c[d];
+        if (I) I[i] = r.face;
+        if (B) for (int d = 0; d < 3; d++) B[3 * (size_t)i + d] = r.b[d];
+        if (D) D[i] = std::sqrt(r.best);
+    }
+};
+}
+
+// run work(lo, hi) over 0..n, on two threads when n is large
+template <typename W> static void split2(int n, W work)
+{
     if (n < 2000) { work(0, n); return; }
     std::thread th(work, 0, n / 2);
     work(n / 2, n);
     th.join();
+}
+
+extern "C" void closest_points_hinted(const struct closest_point_tree *T, const double *P, int n,
+                                      const int *H, double *C, int *I, double *B, double *D)
+{
+    std::vector<int> order = morton_order(P, n);
+    answers A = {C, B, D, I};
+    split2(n, [&](int lo, int hi) {
+        for (int j = lo; j < hi; j++) {
+            int i = order[j];
+            Nearest r;
+            query_hinted(T, P + 3 * (size_t)i, H ? H[i] : -1, r);
+            A.put(i, r);
+        }
+    });
+}
+
+// The batch search: queries near each other in Morton order share one
+// walk of the tree.  Each query i of a group has an upper bound u_i of its
+// distance (from its hint face, or from the answer of the group's first
+// query); a face closer to q_i than u_i has its box within u_i + |q_i - c|
+// of the group's centre c, so the faces whose boxes are within
+// R = max_i (u_i + |q_i - c|) of c (one walk) hold every query's answer.
+namespace {
+struct Batch {
+    const closest_point_tree *T;
+    // candidate faces: (distance of the box to the centre, face)
+    // and the face's box lo[3] hi[3], nearest first after gather()
+    struct cand { double d; int face; float lo[3], hi[3]; };   // d: the distance
+    std::vector<cand> C;
+    int cap;
+    // the faces whose boxes are within sqrt(r2) of c; false past cap of them
+    bool gather(const double c[3], double r2)
+    {
+        C.clear();
+        const std::vector<flat_node> &N = T->nodes;
+        if (N.empty()) { C.push_back(cand{0, 0, {0, 0, 0}, {0, 0, 0}}); return true; }
+        if (box_d2(c, T->root_lo, T->root_hi) > r2) return true;
+        int stack[128], top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const flat_node &n = N[stack[--top]];
+            for (int s = 1; s >= 0; s--) {
+                double e = box_d2(c, n.lo[s], n.hi[s]);
+                if (e > r2) continue;
+                if (n.child[s] >= 0) { if (top < 128) stack[top++] = n.child[s]; continue; }
+                if ((int)C.size() >= cap) return false;
+                cand x;
+                x.d = std::sqrt(e); x.face = -1 - n.child[s];
+                for (int d = 0; d < 3; d++) { x.lo[d] = n.lo[s][d]; x.hi[d] = n.hi[s][d]; }
+                C.push_back(x);
+            }
+        }
+        std::sort(C.begin(), C.end(), [](const cand &a, const cand &b) {
+            return a.d < b.d || (a.d == b.d && a.face < b.face);
+        });
+        return true;
+    }
+};
+}
+
+extern "C" void closest_points_order(const double *P, int n, int *O)
+{
+    std::vector<int> o = morton_order(P, n);
+    std::copy(o.begin(), o.end(), O);
+}
+
+extern "C" void closest_points_batch(const struct closest_point_tree *T, const double *P, int n,
+                                     const int *H, const int *O, double *C, int *I, double *B,
+                                     double *D)
+{
+    std::vector<int> own;
+    if (!O) { own = morton_order(P, n); O = own.data(); }
+    answers A = {C, B, D, I};
+    int nf = (int)T->tris.size();
+    split2(n, [&](int lo, int hi) {
+        int prev = -1;   // without a hint: the previous query's answer
+        for (int j = lo; j < hi; j++) {
+            int i = O[j], h = H ? H[i] : -1;
+            if (h < 0 || h >= nf) h = prev;
+            Nearest r;
+            r.start(T, P + 3 * (size_t)i);
+            if (h >= 0) r.test(h, 0);
+            r.walk4();
+            A.put(i, r);
+            prev = r.face;
+        }
+    });
 }
 
 extern "C" int closest_point_faces_within(const struct closest_point_tree *T, const double p[3],

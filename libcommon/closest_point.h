@@ -52,6 +52,23 @@ double closest_point_on_face(const struct closest_point_tree *T, int f, const do
 void closest_points_hinted(const struct closest_point_tree *T, const double *P, int n,
                            const int *H, double *C, int *I, double *B, double *D);
 
+/* As closest_points_hinted() (H may be NULL), faster for many queries
+ * (the samples of a surface): a walk of the tree with four children a
+ * node, their boxes tested together; a query without a hint starts from
+ * the answer of the query before it.  O (n, may be NULL): the order in
+ * which to answer the queries, a permutation of 0..n-1 with near queries
+ * one after another (closest_points_order(); the order of an earlier call
+ * on points that have moved a little is as good); NULL: computed here.
+ * The distances are those of closest_points(); where several faces are
+ * equally near (a query on an edge or a vertex) I and B may name another
+ * of them.  I may be H. */
+void closest_points_batch(const struct closest_point_tree *T, const double *P, int n,
+                          const int *H, const int *O, double *C, int *I, double *B, double *D);
+
+/* P: n by 3 points; O (n, out): them in Morton order (a permutation of
+ * 0..n-1), for closest_points_batch(). */
+void closest_points_order(const double *P, int n, int *O);
+
 #ifdef __cplusplus
 }
 #endif

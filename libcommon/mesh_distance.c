@@ -129,10 +129,12 @@ struct frame_compare {
     struct topology tr;
     double *SR, *NR; int nsr;           /* the reference's samples, face normals */
     int *HC;                            /* nsr: closest frame face of each reference sample */
+    int *OR;                            /* nsr: the order of the reference's samples */
     /* the frame side, kept while the connectivity stays the same */
     int nv, nf, nsx, have; int *F;
     struct topology tx;
     int *HX;                            /* nsx: closest reference face of each frame sample */
+    int *OX, have_order;                /* nsx: an order of the frame's samples (the first frame's) */
     double *SX, *BX, *DX, *DC, *NX;
 };
 
@@ -159,11 +161,13 @@ struct frame_compare *frame_compare_new(const double *VR, int nvr, const int *FR
     C->NR = malloc((size_t)nfr * 3 * sizeof *C->NR);
     C->HC = malloc((size_t)C->nsr * sizeof *C->HC);
     C->DC = malloc((size_t)C->nsr * sizeof *C->DC);
-    if (!C->FR || !C->SR || !C->NR || !C->HC || !C->DC) {
+    C->OR = malloc((size_t)C->nsr * sizeof *C->OR);
+    if (!C->FR || !C->SR || !C->NR || !C->HC || !C->DC || !C->OR) {
         cm_seterr("out of memory"); frame_compare_free(C); return NULL;
     }
     memcpy(C->FR, FR, (size_t)nfr * 3 * sizeof *FR);
     samples(VR, nvr, FR, nfr, &C->tr, C->SR);
+    closest_points_order(C->SR, C->nsr, C->OR);
     face_normals(VR, FR, nfr, C->NR);
     return C;
 }
@@ -174,7 +178,8 @@ void frame_compare_free(struct frame_compare *C)
     closest_point_tree_free(C->TR);
     topology_free(&C->tr);
     topology_free(&C->tx);
-    free(C->FR); free(C->SR); free(C->NR); free(C->HC); free(C->DC);
+    free(C->FR); free(C->SR); free(C->NR); free(C->HC); free(C->DC); free(C->OR);
+    free(C->OX);
     free(C->F); free(C->HX); free(C->SX); free(C->BX); free(C->DX); free(C->NX);
     free(C);
 }
@@ -185,9 +190,9 @@ static int frame_side(struct frame_compare *C, int nv, const int *F, int nf)
     if (C->have && nv == C->nv && nf == C->nf && !memcmp(F, C->F, (size_t)nf * 3 * sizeof *F))
         return 0;
     topology_free(&C->tx);
-    free(C->F); free(C->HX); free(C->SX); free(C->BX); free(C->DX); free(C->NX);
-    C->F = NULL; C->HX = NULL; C->SX = C->BX = C->DX = C->NX = NULL;
-    C->have = 0;
+    free(C->F); free(C->HX); free(C->SX); free(C->BX); free(C->DX); free(C->NX); free(C->OX);
+    C->F = NULL; C->HX = C->OX = NULL; C->SX = C->BX = C->DX = C->NX = NULL;
+    C->have = C->have_order = 0;
     if (topology_build(F, nf, nv, &C->tx) < 0) return -1;
     C->nv = nv; C->nf = nf; C->nsx = nv + nf + C->tx.ne;
     C->F = malloc((size_t)nf * 3 * sizeof *C->F);
@@ -196,7 +201,8 @@ static int frame_side(struct frame_compare *C, int nv, const int *F, int nf)
     C->BX = malloc((size_t)C->nsx * 3 * sizeof *C->BX);
     C->DX = malloc((size_t)C->nsx * sizeof *C->DX);
     C->NX = malloc((size_t)nf * 3 * sizeof *C->NX);
-    if (!C->F || !C->HX || !C->SX || !C->BX || !C->DX || !C->NX) { cm_seterr("out of memory"); return -1; }
+    C->OX = malloc((size_t)C->nsx * sizeof *C->OX);
+    if (!C->F || !C->HX || !C->SX || !C->BX || !C->DX || !C->NX || !C->OX) { cm_seterr("out of memory"); return -1; }
     memcpy(C->F, F, (size_t)nf * 3 * sizeof *F);
     /* first hints: the same-numbered face when the frame has the
      * reference's connectivity; otherwise the tree's own search */
@@ -222,8 +228,9 @@ int frame_compare_run(struct frame_compare *C, const double *X, int nv, const in
     /* the frame's samples to the reference (fit), the reference's samples
      * to the frame (cover); each query starts from the previous frame's
      * answer, which for a coherent animation is at or next to the new one */
-    closest_points_hinted(C->TR, C->SX, C->nsx, C->HX, NULL, C->HX, C->BX, C->DX);
-    closest_points_hinted(TX, C->SR, C->nsr, C->HC, NULL, C->HC, NULL, C->DC);
+    if (!C->have_order) { closest_points_order(C->SX, C->nsx, C->OX); C->have_order = 1; }
+    closest_points_batch(C->TR, C->SX, C->nsx, C->HX, C->OX, NULL, C->HX, C->BX, C->DX);
+    closest_points_batch(TX, C->SR, C->nsr, C->HC, C->OR, NULL, C->HC, NULL, C->DC);
     struct one_sided *o[2] = {&out->fit, &out->cover};
     const double *Dd[2] = {C->DX, C->DC};
     int n[2] = {C->nsx, C->nsr};

@@ -87,6 +87,41 @@ int main(void)
     badh = 0;
     for (int i = 0; i < n; i++) if (Dh[i] != D[i]) badh++;
     ok(badh == 0, "the answers as hints (I aliasing H), same distances (%d differ)", badh);
+    /* the wide-tree batch walk: the same distances bit for bit, with poor
+     * hints, without hints, with a given order and with its own; the face
+     * and barycentrics it names give the closest point */
+    {
+        double *Db = malloc(sizeof(double) * n), *Bb = malloc(sizeof(double) * 3 * n);
+        double *Cb = malloc(sizeof(double) * 3 * n);
+        int *Ib = malloc(sizeof(int) * n), *O = malloc(sizeof(int) * n), bd = 0, bf = 0;
+        closest_points_order(P, n, O);
+        for (int pass = 0; pass < 3; pass++) {
+            for (int i = 0; i < n; i++) H[i] = pass == 0 ? (i * 7919) % nf : -1;
+            closest_points_batch(T, P, n, pass == 1 ? NULL : H, pass == 2 ? NULL : O, Cb, Ib, Bb, Db);
+            for (int i = 0; i < n; i++) {
+                if (Db[i] != D[i]) bd++;
+                double q[3] = {0, 0, 0}, e = 0;
+                for (int k = 0; k < 3; k++)
+                    for (int d = 0; d < 3; d++) q[d] += Bb[3 * i + k] * V[3 * F[3 * Ib[i] + k] + d];
+                for (int d = 0; d < 3; d++) e += (q[d] - Cb[3 * i + d]) * (q[d] - Cb[3 * i + d]);
+                if (e > 1e-20) bf++;
+            }
+        }
+        ok(bd == 0, "closest_points_batch: the same distances (%d of %d differ)", bd, 3 * n);
+        ok(bf == 0, "closest_points_batch: face and barycentrics give the closest point (%d differ)", bf);
+        /* one face, and points on the surface itself (distance 0 ties) */
+        struct closest_point_tree *T1 = closest_point_tree_new(V, nv, F, 1);
+        closest_points_batch(T1, P, 10, NULL, NULL, NULL, NULL, NULL, Db);
+        bd = 0;
+        for (int i = 0; i < 10; i++) if (Db[i] != closest_point_query(T1, P + 3 * i, Cb, NULL, NULL)) bd++;
+        ok(bd == 0, "closest_points_batch on a one-face tree (%d differ)", bd);
+        closest_point_tree_free(T1);
+        closest_points_batch(T, V, nv, NULL, NULL, NULL, NULL, NULL, Db);
+        bd = 0;
+        for (int i = 0; i < nv; i++) if (Db[i] > 1e-15) bd++;
+        ok(bd == 0, "closest_points_batch: the mesh's own vertices are on it (%d are not)", bd);
+        free(Db); free(Bb); free(Cb); free(Ib); free(O);
+    }
 
     /* frame_compare against the one-shot functions, over two frames */
     double *X = malloc(sizeof(double) * 3 * nv);
