@@ -177,8 +177,9 @@ static inline double box_d2(const double *q, const R *lo, const R *hi)
     return s;
 }
 
-// the nearest triangle: a walk of the flat tree, nearer child first,
-// skipping every box (and triangle box) no nearer than the best so far
+// the nearest triangle: a walk of the flat tree (or of the wide one),
+// nearer child first, skipping every box (and triangle box) no nearer than
+// the best so far
 namespace {
 struct Nearest {
     const closest_point_tree *T;
@@ -234,11 +235,13 @@ struct Nearest {
                 s2 += e * e;
             }
             // a lower bound of each box's squared distance (the float
-            // rounding of the sums above is far below 1e-5 relative)
+            // rounding of the sums above is far below 1e-5 relative; past
+            // the float range, no bound)
             double lb[4];
             int idx[4], m = 0;
             for (int s = 0; s < 4; s++) {
-                lb[s] = n.child[s] == NONE ? HUGE_VAL : (double)s2[s] * (1 - 1e-5);
+                lb[s] = n.child[s] == NONE ? HUGE_VAL
+                        : s2[s] < HUGE_VALF ? (double)s2[s] * (1 - 1e-5) : 0;
                 if (n.child[s] != NONE && (lb[s] < best || face < 0)) {
                     // insertion by distance
                     int j = m++;
@@ -418,50 +421,6 @@ extern "C" void closest_points_hinted(const struct closest_point_tree *T, const 
             A.put(i, r);
         }
     });
-}
-
-// The batch search: queries near each other in Morton order share one
-// walk of the tree.  Each query i of a group has an upper bound u_i of its
-// distance (from its hint face, or from the answer of the group's first
-// query); a face closer to q_i than u_i has its box within u_i + |q_i - c|
-// of the group's centre c, so the faces whose boxes are within
-// R = max_i (u_i + |q_i - c|) of c (one walk) hold every query's answer.
-namespace {
-struct Batch {
-    const closest_point_tree *T;
-    // candidate faces: (distance of the box to the centre, face)
-    // and the face's box lo[3] hi[3], nearest first after gather()
-    struct cand { double d; int face; float lo[3], hi[3]; };   // d: the distance
-    std::vector<cand> C;
-    int cap;
-    // the faces whose boxes are within sqrt(r2) of c; false past cap of them
-    bool gather(const double c[3], double r2)
-    {
-        C.clear();
-        const std::vector<flat_node> &N = T->nodes;
-        if (N.empty()) { C.push_back(cand{0, 0, {0, 0, 0}, {0, 0, 0}}); return true; }
-        if (box_d2(c, T->root_lo, T->root_hi) > r2) return true;
-        int stack[128], top = 0;
-        stack[top++] = 0;
-        while (top > 0) {
-            const flat_node &n = N[stack[--top]];
-            for (int s = 1; s >= 0; s--) {
-                double e = box_d2(c, n.lo[s], n.hi[s]);
-                if (e > r2) continue;
-                if (n.child[s] >= 0) { if (top < 128) stack[top++] = n.child[s]; continue; }
-                if ((int)C.size() >= cap) return false;
-                cand x;
-                x.d = std::sqrt(e); x.face = -1 - n.child[s];
-                for (int d = 0; d < 3; d++) { x.lo[d] = n.lo[s][d]; x.hi[d] = n.hi[s][d]; }
-                C.push_back(x);
-            }
-        }
-        std::sort(C.begin(), C.end(), [](const cand &a, const cand &b) {
-            return a.d < b.d || (a.d == b.d && a.face < b.face);
-        });
-        return true;
-    }
-};
 }
 
 extern "C" void closest_points_order(const double *P, int n, int *O)

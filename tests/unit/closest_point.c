@@ -1,6 +1,7 @@
 /* closest_point.c -- unit tests of the nearest-triangle walk (against brute
  * force over every triangle, with and without hints, degenerate triangles)
- * and of frame_compare (against one_sided_distance and flipped_face_flags). */
+ * and of frame_compare (against one_sided_distance and flipped_face_flags);
+ * closest_points_batch against closest_points, bit for bit. */
 #include "tap.h"
 #include "testmesh.h"
 #include "closest_point.h"
@@ -120,6 +121,19 @@ int main(void)
         bd = 0;
         for (int i = 0; i < nv; i++) if (Db[i] > 1e-15) bd++;
         ok(bd == 0, "closest_points_batch: the mesh's own vertices are on it (%d are not)", bd);
+        /* beyond the single-precision range: no box may be pruned on an
+         * overflowed bound (a mesh at 1e20, queries 1e20 further out) */
+        double *Vf = malloc(sizeof(double) * 3 * nv), Pf[6];
+        for (int i = 0; i < 3 * nv; i++) Vf[i] = 1e20 * V[i];
+        for (int d = 0; d < 3; d++) { Pf[d] = 1e20 * P[d]; Pf[3 + d] = 1e20 * (P[3 + d] + 3); }
+        struct closest_point_tree *Tf = closest_point_tree_new(Vf, nv, F, nf);
+        int hf[2] = {nf - 1, nf / 2};
+        closest_points_batch(Tf, Pf, 2, hf, NULL, NULL, NULL, NULL, Db);
+        bd = 0;
+        for (int i = 0; i < 2; i++) if (Db[i] != closest_point_query(Tf, Pf + 3 * i, Cb, NULL, NULL)) bd++;
+        ok(bd == 0, "closest_points_batch at 1e20 (%d differ)", bd);
+        closest_point_tree_free(Tf);
+        free(Vf);
         free(Db); free(Bb); free(Cb); free(Ib); free(O);
     }
 
