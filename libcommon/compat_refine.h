@@ -9,6 +9,13 @@
  *   flips      an interior edge is flipped if the flipped pair is
  *              positively oriented in all N shapes (exact orientation
  *              predicate) and its smallest angle over the shapes is larger.
+ *   MIPS       (pa->mips > 0) shape by shape, every interior vertex takes
+ *              gradient steps on the sum over its star of (S / (4 sqrt3 A))^2
+ *              (S: sum of squared edge lengths, A: area; 1 for an
+ *              equilateral triangle, unbounded as one degenerates, so it is
+ *              a barrier: no step inverts a triangle, checked exactly).
+ *              Spreads the distortion between shapes over the whole mesh,
+ *              which the local smoothing below cannot.
  *   smoothing  each interior vertex is moved, shape by shape, to the best
  *              of a few candidate positions (mean of the points that make
  *              each incident triangle equilateral on its opposite edge,
@@ -52,6 +59,9 @@ struct compat_refine_params {
                           size bound) */
     int max_nv;        /* stop splitting once the mesh has this many vertices */
     int rounds;        /* at most this many rounds (flips + smoothing + splits) */
+    int mips;          /* sweeps of MIPS smoothing per round before the
+                          smallest-angle smoothing (0: none, the paper's
+                          smoothing only; e.g. 20) */
 };
 
 /* Refine c in place.

@@ -406,9 +406,16 @@ static int seg_inside(const struct sub *p, int i, const double *P, int j, const 
  * other corners, as an angle: the smallest over corners v of the smaller
  * of the angles v-P-Q and v-Q-P (a corner close to the segment makes a
  * sliver in one of the pieces) */
-static double clearance(const struct sub *p, int i, const double *P, int j, const double *Q)
+static double clearance_cut(const struct sub *p, int i, const double *P, int j, const double *Q, double cut)
 {
-    double ux = Q[0] - P[0], uy = Q[1] - P[1], q = M_PI;
+    /* below the pseudo-angle of cut (with a margin for rounding): a value
+     * below cut is all the caller needs */
+    double pcut = -1;
+    if (cut > 0 && cut < M_PI) pcut = (1 - cos(cut) / (fabs(cos(cut)) + sin(cut))) * (1 - 1e-9);
+    double ux = Q[0] - P[0], uy = Q[1] - P[1];
+    /* the smallest angle by a pseudo-angle 1 - x / (|x| + y) (monotone in
+     * atan2(y, x) for y >= 0): one atan2 per call instead of two per corner */
+    double pmin = INFINITY, my = 0, mx = -1;
     int m = p->m;
     for (int v = 0; v < m; v++) {
         if (v == i || v == j) continue;
@@ -417,11 +424,20 @@ static double clearance(const struct sub *p, int i, const double *P, int j, cons
         if (j >= 0 && (v == (j + 1) % m || v == (j + m - 1) % m)) continue;
         const double *x = V(p, v);
         double ax = x[0] - P[0], ay = x[1] - P[1], bx = x[0] - Q[0], by = x[1] - Q[1];
-        double cr = fabs(ux * ay - uy * ax);
-        double aP = atan2(cr, ux * ax + uy * ay), aQ = atan2(fabs(ux * by - uy * bx), -(ux * bx + uy * by));
-        q = fmin(q, fmin(aP, aQ));
+        double y1 = fabs(ux * ay - uy * ax), x1 = ux * ax + uy * ay;
+        double y2 = fabs(ux * by - uy * bx), x2 = -(ux * bx + uy * by);
+        double d1 = fabs(x1) + y1, d2 = fabs(x2) + y2;
+        double p1 = d1 > 0 ? 1 - x1 / d1 : 0, p2 = d2 > 0 ? 1 - x2 / d2 : 0;
+        if (p1 < pmin) { pmin = p1; my = y1; mx = x1; }
+        if (p2 < pmin) { pmin = p2; my = y2; mx = x2; }
+        if (pmin < pcut) break;
     }
-    return q;
+    return pmin == INFINITY ? M_PI : atan2(my, mx);
+}
+
+static double clearance(const struct sub *p, int i, const double *P, int j, const double *Q)
+{
+    return clearance_cut(p, i, P, j, Q, 0);
 }
 
 /* a Steiner point near the middle of the inside segment a-b (a is corner
@@ -566,12 +582,16 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                 if (qq < STAGE1_MIN && c->split_mode != COMPAT_LINKPATH) { all = 0; break; }
                 /* a pair that cannot beat the best score needs no edge tests */
                 if (pair_score(fmin(q, qq), i, j, m) <= best) { all = 0; break; }
-                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) {
-                    double cl = clearance(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j));
-                    /* a diagonal grazing another corner makes a sliver piece */
-                    if (cl < CLEARANCE_MIN && c->split_mode != COMPAT_LINKPATH) all = 0;
-                    q = fmin(q, fmin(qq, cl));
-                } else all = 0;
+                /* the clearance first, cut short where the pair cannot win
+                 * (score <= best), then the edge tests */
+                double cut = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
+                if (cut >= M_PI / 3) cut = 0;
+                double cl = clearance_cut(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j), cut);
+                if (cut > 0 && cl <= cut) { all = 0; break; }
+                /* a diagonal grazing another corner makes a sliver piece */
+                if (cl < CLEARANCE_MIN && c->split_mode != COMPAT_LINKPATH) { all = 0; break; }
+                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) q = fmin(q, fmin(qq, cl));
+                else all = 0;
             }
             if (all) {
                 double sc = pair_score(q, i, j, m);
@@ -878,15 +898,17 @@ int compat_triangulate(struct compat *c)
 
 static double tri_min_angle(const double *a, const double *b, const double *d)
 {
+    /* the smallest angle is opposite the shortest edge: one atan2 */
     const double *P[3] = {a, b, d};
-    double mn = INFINITY;
+    double l[3];
     for (int k = 0; k < 3; k++) {
-        const double *o = P[k], *u = P[(k + 1) % 3], *v = P[(k + 2) % 3];
-        double ux = u[0] - o[0], uy = u[1] - o[1], vx = v[0] - o[0], vy = v[1] - o[1];
-        double an = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
-        if (an < mn) mn = an;
+        const double *u = P[(k + 1) % 3], *v = P[(k + 2) % 3];
+        l[k] = (v[0] - u[0]) * (v[0] - u[0]) + (v[1] - u[1]) * (v[1] - u[1]);
     }
-    return mn;
+    int k = l[0] <= l[1] && l[0] <= l[2] ? 0 : l[1] <= l[2] ? 1 : 2;
+    const double *o = P[k], *u = P[(k + 1) % 3], *v = P[(k + 2) % 3];
+    double ux = u[0] - o[0], uy = u[1] - o[1], vx = v[0] - o[0], vy = v[1] - o[1];
+    return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 
 /* min angle over shapes of triangle (a,b,d); -1 if inverted in some shape */

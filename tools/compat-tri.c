@@ -60,9 +60,11 @@ static const char help[] =
 "                        (-l and -s: --refine none, and holes/pieces)\n"
 "      --refine MODE     'refine' (default: compatible refinement, Surazhsky-\n"
 "                        Gotsman: edge splits in all poses, compatible flips,\n"
-"                        per-pose smoothing, until every angle of every pose\n"
-"                        reaches --min-angle or --max-vertices is reached;\n"
-"                        one outer ring only) or 'none' (-l and -s)\n"
+"                        per-pose MIPS and smallest-angle smoothing, until\n"
+"                        every angle of every pose reaches --min-angle or\n"
+"                        --max-vertices is reached; one outer ring only),\n"
+"                        'sg' (the same without the MIPS smoothing: the\n"
+"                        paper's local smoothing only) or 'none' (-l and -s)\n"
 "  -a, --min-angle DEG   goal of --refine (default 20)\n"
 "      --max-vertices K  --refine stops splitting at K vertices (default 10\n"
 "                        times the simplified outline's vertex count)\n"
@@ -119,8 +121,9 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'Q':
             if (!strcmp(optarg, "refine")) o->refine = 1;
+            else if (!strcmp(optarg, "sg")) o->refine = 2;
             else if (!strcmp(optarg, "none")) o->refine = 0;
-            else usage_error("--refine must be 'refine' or 'none'");
+            else usage_error("--refine must be 'refine', 'sg' or 'none'");
             break;
         case 'a': o->min_angle = arg_double(optarg, "--min-angle"); break;
         case 'X': o->max_nv = arg_int(optarg, "--max-vertices"); break;
@@ -303,7 +306,6 @@ static void build_single(struct options *o, struct rings *R, struct compat *cp)
     }
     info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
             "largest two-sided Hausdorff distance %.3g, in %s)", M, cp->nb, o->err, hmax, o->shapes[hs]);
-    if (compat_triangulate(cp) < 0) die("%s", cm_errmsg());
     free(keep); free(corr); free(want); columns_free(&C);
     free(P); free(n); free(flipped);
 }
@@ -385,6 +387,7 @@ int main(int argc, char **argv)
     if (multi && !o.corr) die("several rings or interior points need -c CORR (the matching handles one outer ring)");
     if (multi) build_multi(&o, R, &cp);
     else build_single(&o, R, &cp);
+    if (!multi && compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
     double ma0, q0 = compat_min_angle(&cp, &ma0);
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
@@ -412,7 +415,8 @@ int main(int argc, char **argv)
     if (!o.refine || cp.nrings > 0 || cp.npts > 0) {
         if (compat_improve(&cp, target, o.smooth) < 0) die("%s", cm_errmsg());
     } else {
-        struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : 10 * cp.nb, 200};
+        struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : 10 * cp.nb, 200,
+                                          o.refine == 2 ? 0 : 20};
         struct compat_refine_stats rs;
         if (compat_refine(&cp, &pa, &rs) < 0) die("%s", cm_errmsg());
         info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d flips, %d moves; "
