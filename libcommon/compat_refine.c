@@ -12,25 +12,6 @@
 /* ------------------------------------------------------------------ */
 /* per-triangle measures */
 
-/* sine of the smallest angle of (a, b, d) (the smallest angle is at most
- * 60 degrees, so its sine orders triangles the same way); <= 0 when the
- * floating-point area is not positive */
-static double sin_min(const double *a, const double *b, const double *d)
-{
-    double e0x = b[0] - a[0], e0y = b[1] - a[1];
-    double e1x = d[0] - b[0], e1y = d[1] - b[1];
-    double e2x = a[0] - d[0], e2y = a[1] - d[1];
-    double l0 = e0x * e0x + e0y * e0y, l1 = e1x * e1x + e1y * e1y, l2 = e2x * e2x + e2y * e2y;
-    double area2 = e0x * (d[1] - a[1]) - e0y * (d[0] - a[0]);
-    if (!(area2 > 0)) return area2 > 0 ? 0 : -1;
-    /* the two longer edges meet at the smallest angle */
-    double p;
-    if (l0 <= l1 && l0 <= l2) p = l1 * l2;
-    else if (l1 <= l2) p = l0 * l2;
-    else p = l0 * l1;
-    return area2 / sqrt(p);
-}
-
 /* angle at corner o of the triangle (o, u, v) */
 static double corner_angle(const double *o, const double *u, const double *v)
 {
@@ -196,7 +177,7 @@ static double star_min(const struct compat *c, const struct topology *t, int s, 
 /* sin_min, -1 if the triangle is not positive (exact) */
 static double sin_min_valid(const double *a, const double *b, const double *d)
 {
-    double x = sin_min(a, b, d);
+    double x = compat_sin_min_angle(a, b, d);
     /* a sine above 1e-9 cannot come from a wrongly signed area */
     if (x <= 0 || (x < 1e-9 && orient2_sign(a, b, d) <= 0)) return -1;
     return x;
@@ -209,12 +190,24 @@ static double star_quality(const struct compat *c, const struct topology *t, int
     return star_min(c, t, s, v, p, sin_min_valid);
 }
 
-static int smooth_pass(struct compat *c, const struct topology *t, const unsigned char *bnd)
+/* mark v and its neighbours for the next visit (dirty: #V flags of one shape) */
+static void touch_star(const struct topology *t, int v, unsigned char *dirty)
+{
+    dirty[v] = 1;
+    for (int k = t->VVs[v]; k < t->VVs[v + 1]; k++) dirty[t->VV[k]] = 1;
+}
+
+/* dirty: N by #V flags; a vertex is visited only if it or a neighbour moved
+ * since its last visit (else the visit would find the same: no move) */
+static int smooth_pass(struct compat *c, const struct topology *t, const unsigned char *bnd, unsigned char *dirty)
 {
     int moves = 0;
     for (int s = 0; s < c->N; s++) {
         double *X = c->X[s];
+        unsigned char *dy = dirty + (size_t)s * c->nv;
         for (int v = 0; v < c->nv; v++) {
+            if (!dy[v]) continue;
+            dy[v] = 0;
             if (bnd[v] || t->VFs[v + 1] == t->VFs[v]) continue;
             double old = star_quality(c, t, s, v, X + 2 * v);
             /* candidates: mean of the equilateral apexes, neighbour centroid */
@@ -244,7 +237,7 @@ static int smooth_pass(struct compat *c, const struct topology *t, const unsigne
                 double q = star_quality(c, t, s, v, cand[k]);
                 if (q > bq * (1 + 1e-9) + 1e-15) { bq = q; best = k; }
             }
-            if (best >= 0) { X[2 * v] = cand[best][0]; X[2 * v + 1] = cand[best][1]; moves++; }
+            if (best >= 0) { X[2 * v] = cand[best][0]; X[2 * v + 1] = cand[best][1]; moves++; touch_star(t, v, dy); }
         }
     }
     return moves;
@@ -402,6 +395,13 @@ static int renumber(struct work *w, int nb0, int nv0)
         memcpy(X, tmp, 2 * (size_t)nv * sizeof *X);
     }
     for (int f = 0; f < 3 * c->nf; f++) c->F[f] = map[c->F[f]];
+    /* several rings: each ring now starts where its first vertex went; the
+     * interior points (after the last ring) keep their order */
+    if (c->nrings > 0) {
+        int end = c->ring_start[c->nrings];
+        for (int r = 0; r < c->nrings; r++) c->ring_start[r] = map[c->ring_start[r]];
+        c->ring_start[c->nrings] = c->npts > 0 ? map[end] : nb;
+    }
     c->nrefine += (nv - nv0) - (nb - nb0);
     c->nb = nb;
     free(map); free(tmp);
@@ -410,11 +410,17 @@ static int renumber(struct work *w, int nb0, int nv0)
 
 /* ------------------------------------------------------------------ */
 
-struct snapshot { int nv, nf, nb, nrefine; double **X; int *F; };
+struct snapshot { int nv, nf, nb, nrefine; double **X; int *F; int *ring_start; };
 
 static int snap_take(const struct compat *c, struct snapshot *p)
 {
     p->nv = c->nv; p->nf = c->nf; p->nb = c->nb; p->nrefine = c->nrefine;
+    p->ring_start = NULL;
+    if (c->nrings > 0) {
+        p->ring_start = malloc((c->nrings + 1) * sizeof *p->ring_start);
+        if (!p->ring_start) return cm_seterr("out of memory");
+        memcpy(p->ring_start, c->ring_start, (c->nrings + 1) * sizeof *p->ring_start);
+    }
     p->X = calloc(c->N, sizeof *p->X);
     p->F = malloc(3 * (size_t)c->nf * sizeof *p->F);
     if (!p->X || !p->F) return cm_seterr("out of memory");
@@ -430,6 +436,7 @@ static int snap_take(const struct compat *c, struct snapshot *p)
 static void snap_restore(struct compat *c, struct snapshot *p)
 {
     c->nv = p->nv; c->nf = p->nf; c->nb = p->nb; c->nrefine = p->nrefine;
+    if (p->ring_start) memcpy(c->ring_start, p->ring_start, (c->nrings + 1) * sizeof *p->ring_start);
     memcpy(c->F, p->F, 3 * (size_t)c->nf * sizeof *p->F);
     for (int s = 0; s < c->N; s++) memcpy(c->X[s], p->X[s], 2 * (size_t)c->nv * sizeof **p->X);
 }
@@ -437,19 +444,36 @@ static void snap_restore(struct compat *c, struct snapshot *p)
 static void snap_free(int N, struct snapshot *p)
 {
     if (p->X) for (int s = 0; s < N; s++) free(p->X[s]);
-    free(p->X); free(p->F);
+    free(p->X); free(p->F); free(p->ring_start);
 }
 
-static int smooth_sweeps(struct compat *c, const unsigned char *bnd, int sweeps)
+/* dirty flags of one shape from seed (#V flags, NULL: every vertex): the
+ * seeded vertices and their neighbours */
+static void seed_dirty(const struct topology *t, int nv, const unsigned char *seed, unsigned char *dy)
+{
+    if (!seed) { memset(dy, 1, nv); return; }
+    memset(dy, 0, nv);
+    for (int v = 0; v < nv; v++)
+        if (seed[v]) touch_star(t, v, dy);
+}
+
+/* seed: #V flags of the vertices whose neighbourhood changed since the last
+ * smoothing (NULL: all); only they and whatever their moves disturb are
+ * visited */
+static int smooth_sweeps(struct compat *c, const unsigned char *bnd, int sweeps, const unsigned char *seed)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
     int moves = 0;
+    unsigned char *dirty = malloc((size_t)c->N * c->nv);
+    if (!dirty) { topology_free(&t); return cm_seterr("out of memory"); }
+    for (int s = 0; s < c->N; s++) seed_dirty(&t, c->nv, seed, dirty + (size_t)s * c->nv);
     for (int k = 0; k < sweeps; k++) {
-        int m = smooth_pass(c, &t, bnd);
+        int m = smooth_pass(c, &t, bnd, dirty);
         moves += m;
         if (!m) break;
     }
+    free(dirty);
     topology_free(&t);
     return moves;
 }
@@ -493,16 +517,21 @@ static double star_mips(const struct compat *c, const struct topology *t, int s,
  * it evens out the triangles of each shape as a whole, where the
  * smallest-angle smoothing only moves one vertex to a few candidates.
  * Returns the number of moves, -1 on error. */
-static int mips_sweeps(struct compat *c, const unsigned char *bnd, int sweeps)
+static int mips_sweeps(struct compat *c, const unsigned char *bnd, int sweeps, const unsigned char *seed)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
     int moves = 0;
+    unsigned char *dy = malloc(c->nv);
+    if (!dy) { topology_free(&t); return cm_seterr("out of memory"); }
     for (int s = 0; s < c->N; s++) {
         double *X = c->X[s];
+        seed_dirty(&t, c->nv, seed, dy);
         for (int k = 0; k < sweeps; k++) {
             int m = 0;
             for (int v = 0; v < c->nv; v++) {
+                if (!dy[v]) continue;
+                dy[v] = 0;
                 if (bnd[v] || t.VFs[v + 1] == t.VFs[v]) continue;
                 double g[2], *x = X + 2 * v;
                 double E0 = star_mips(c, &t, s, v, x, g), gn = hypot(g[0], g[1]);
@@ -516,6 +545,10 @@ static int mips_sweeps(struct compat *c, const unsigned char *bnd, int sweeps)
                     double p[2] = {x[0] - h * g[0] / gn, x[1] - h * g[1] / gn};
                     if (star_mips(c, &t, s, v, p, NULL) < E0 * (1 - 1e-6)) {
                         x[0] = p[0]; x[1] = p[1]; m++;
+                        /* a step under 1% of the mean edge does not wake
+                         * the neighbours (nor v): the sweeps stay where
+                         * something changed */
+                        if (h >= 0.01 * L) touch_star(&t, v, dy);
                         break;
                     }
                 }
@@ -524,6 +557,7 @@ static int mips_sweeps(struct compat *c, const unsigned char *bnd, int sweeps)
             if (!m) break;
         }
     }
+    free(dy);
     topology_free(&t);
     return moves;
 }
@@ -536,7 +570,7 @@ static void shape_score(const struct compat *c, int s, double sgoal, double *mn,
     *mn = INFINITY; *nbad = 0;
     for (int f = 0; f < c->nf; f++) {
         const int *F = c->F + 3 * f;
-        double q = sin_min(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]);
+        double q = compat_sin_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]);
         *mn = fmin(*mn, q);
         *nbad += q < sgoal;
     }
@@ -637,6 +671,8 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
     double q0 = compat_min_angle(c, NULL);
     struct work w = {c, NULL, NULL, NULL, 0};
     int nb0 = c->nb, nv0 = c->nv, rc = -1;
+    int *Fsave = NULL;
+    unsigned char *seed = NULL;
     w.diag = malloc(c->N * sizeof *w.diag);
     if (!w.diag) { cm_seterr("out of memory"); goto out; }
     for (int s = 0; s < c->N; s++) {
@@ -660,29 +696,59 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
             w.bsucc[a] = b;
         }
         topology_free(&t);
+        /* interior correspondence points (compat_holes) never move either */
+        for (int v = 0; v < c->nb; v++) w.bnd[v] = 1;
     }
+    /* after the first round only what splits and flips changed is smoothed
+     * (seed: vertices of faces that differ from Fsave, the faces after the
+     * last smoothing; new vertices) */
+    int nfsave = 0, nvsave = 0, full = 1;
     for (int r = 0; r < rounds; r++) {
         st->rounds++;
         if (flips_until_done(c, &st->flips) < 0) goto out;
-        int m = pa->mips > 0 ? mips_sweeps(c, w.bnd, pa->mips) : 0;
+        free(seed);
+        seed = NULL;
+        if (!full) {
+            seed = calloc(c->nv, 1);
+            if (!seed) { cm_seterr("out of memory"); goto out; }
+            for (int f = 0; f < c->nf; f++) {
+                const int *F = c->F + 3 * f;
+                if (f < nfsave && F[0] == Fsave[3 * f] && F[1] == Fsave[3 * f + 1] && F[2] == Fsave[3 * f + 2])
+                    continue;
+                seed[F[0]] = seed[F[1]] = seed[F[2]] = 1;
+            }
+            for (int v = nvsave; v < c->nv; v++) seed[v] = 1;
+        }
+        int m = pa->mips > 0 ? mips_sweeps(c, w.bnd, pa->mips, seed) : 0;
         if (m < 0) goto out;
         st->moves += m;
-        m = smooth_sweeps(c, w.bnd, 8);
+        m = smooth_sweeps(c, w.bnd, 8, seed);
         if (m < 0) goto out;
         st->moves += m;
-        if (transfer(c, w.bnd, goal, &st->moves) < 0) goto out;
-        m = smooth_sweeps(c, w.bnd, 8);
-        if (m < 0) goto out;
-        st->moves += m;
+        /* the ARAP transfer between shapes: with the MIPS smoothing it was
+         * never kept (creature and elephant poses), so it runs without */
+        int tc = pa->mips > 0 ? 0 : transfer(c, w.bnd, goal, &st->moves);
+        if (tc < 0) goto out;
+        if (tc > 0) {   /* whole shapes moved */
+            m = smooth_sweeps(c, w.bnd, 8, NULL);
+            if (m < 0) goto out;
+            st->moves += m;
+        }
+        full = 0;
         if (flips_until_done(c, &st->flips) < 0) goto out;
         if (c->nv >= max_nv) break;
+        int *Fn = realloc(Fsave, 3 * (size_t)c->nf * sizeof *Fn);
+        if (!Fn) { cm_seterr("out of memory"); goto out; }
+        Fsave = Fn;
+        memcpy(Fsave, c->F, 3 * (size_t)c->nf * sizeof *Fsave);
+        nfsave = c->nf; nvsave = c->nv;
         int n = split_pass(&w, pa, &st->splits, &st->bsplits);
         if (n < 0) goto out;
         if (n == 0) break;
     }
     /* final polish */
     for (int k = 0; k < 4; k++) {
-        int m = smooth_sweeps(c, w.bnd, 8);
+        int m = smooth_sweeps(c, w.bnd, 8, NULL);
         if (m < 0) goto out;
         st->moves += m;
         int f0 = st->flips;
@@ -698,7 +764,7 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
     rc = 0;
 out:
     snap_free(c->N, &snap);
-    free(w.bnd); free(w.bsucc); free(w.diag);
+    free(w.bnd); free(w.bsucc); free(w.diag); free(Fsave); free(seed);
     return rc;
 }
 

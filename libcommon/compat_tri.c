@@ -911,14 +911,26 @@ static double tri_min_angle(const double *a, const double *b, const double *d)
     return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 
-/* min angle over shapes of triangle (a,b,d); -1 if inverted in some shape */
+double compat_sin_min_angle(const double *a, const double *b, const double *d)
+{
+    double e0x = b[0] - a[0], e0y = b[1] - a[1], e1x = d[0] - b[0], e1y = d[1] - b[1];
+    double e2x = a[0] - d[0], e2y = a[1] - d[1];
+    double l0 = e0x * e0x + e0y * e0y, l1 = e1x * e1x + e1y * e1y, l2 = e2x * e2x + e2y * e2y;
+    double area2 = e0x * (d[1] - a[1]) - e0y * (d[0] - a[0]);
+    if (!(area2 > 0)) return 0;
+    double p = l0 <= l1 && l0 <= l2 ? l1 * l2 : l1 <= l2 ? l0 * l2 : l0 * l1;
+    return area2 / sqrt(p);
+}
+
+/* smallest angle over shapes of triangle (a,b,d) as its sine; -1 if
+ * inverted in some shape (exact) */
 static double face_quality(const struct compat *c, int a, int b, int d)
 {
     double q = INFINITY;
     for (int s = 0; s < c->N; s++) {
         const double *X = c->X[s];
         if (orient2_sign(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
-        q = fmin(q, tri_min_angle(X + 2 * a, X + 2 * b, X + 2 * d));
+        q = fmin(q, compat_sin_min_angle(X + 2 * a, X + 2 * b, X + 2 * d));
     }
     return q;
 }

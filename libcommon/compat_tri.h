@@ -125,6 +125,12 @@ int compat_flip_pass(struct compat *c);
  * (> 0 iff every triangle is positively oriented in every shape). */
 double compat_min_angle(const struct compat *c, double *minarea);
 
+/* Sine of the smallest angle of the triangle (a, b, d) (points of 2
+ * coordinates); the smallest angle is at most 60 degrees, so the sine
+ * orders triangles as the angle does.  0 if the floating-point signed area
+ * is not positive (counter-clockwise is positive). */
+double compat_sin_min_angle(const double *a, const double *b, const double *d);
+
 void compat_free(struct compat *c);
 
 #ifdef __cplusplus

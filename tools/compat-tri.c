@@ -409,10 +409,7 @@ int main(int argc, char **argv)
         }
         target = o.edge * target / N;
     }
-    if (o.refine && (cp.nrings > 0 || cp.npts > 0))
-        warn("holes, pieces or interior points: --refine refine handles one outer ring only; "
-                "using the edge-length refinement (--refine none)");
-    if (!o.refine || cp.nrings > 0 || cp.npts > 0) {
+    if (!o.refine) {
         if (compat_improve(&cp, target, o.smooth) < 0) die("%s", cm_errmsg());
     } else {
         struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : 10 * cp.nb, 200,
