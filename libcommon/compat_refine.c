@@ -659,6 +659,126 @@ static int flips_until_done(struct compat *c, int *nflips)
     return 0;
 }
 
+/* smallest sine of the smallest angle of face (a, b, d) over the shapes; -1
+ * if it is not positive in some shape (exact) */
+static double face_sin(const struct compat *c, int a, int b, int d)
+{
+    double q = INFINITY;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        double x = sin_min_valid(X + 2 * a, X + 2 * b, X + 2 * d);
+        if (x < 0) return -1;
+        q = fmin(q, x);
+    }
+    return q;
+}
+
+/* One pass of compatible edge collapses: an interior vertex v in a
+ * triangle below goal (in some shape) is merged into the neighbour u that
+ * gives the best result, if the link condition holds (u and v share
+ * exactly two neighbours), every changed triangle stays positive in every
+ * shape (exact) and the smallest angle over the changed triangles and
+ * shapes is larger than that of v's star.  Undoes the tiny pieces that
+ * overlays leave.  Vertices near a collapse wait for the next pass
+ * (the topology is stale there).  dead: #V flags of removed vertices.
+ * Returns the number of collapses, -1 on error. */
+static int collapse_pass(struct work *w, unsigned char *dead, double goal)
+{
+    struct compat *c = w->c;
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    unsigned char *lock = calloc(c->nv, 1);
+    if (!lock) { topology_free(&t); return cm_seterr("out of memory"); }
+    double sg = sin(goal);
+    int n = 0;
+    for (int v = 0; v < c->nv; v++) {
+        if (w->bnd[v] || dead[v] || lock[v] || t.VFs[v + 1] == t.VFs[v]) continue;
+        double old = INFINITY;
+        for (int k = t.VFs[v]; k < t.VFs[v + 1]; k++) {
+            const int *F = c->F + 3 * t.VF[k];
+            old = fmin(old, face_sin(c, F[0], F[1], F[2]));
+        }
+        if (!(old < sg)) continue;
+        int bu = -1;
+        double bq = old;
+        for (int i = t.VVs[v]; i < t.VVs[v + 1]; i++) {
+            int u = t.VV[i];
+            if (dead[u] || lock[u]) continue;
+            /* link condition: exactly two common neighbours */
+            int common = 0;
+            for (int j = t.VVs[v]; j < t.VVs[v + 1]; j++)
+                if (topology_edge(&t, u, t.VV[j]) >= 0) common++;
+            if (common != 2) continue;
+            double q = INFINITY;
+            for (int k = t.VFs[v]; k < t.VFs[v + 1] && q > bq; k++) {
+                const int *F = c->F + 3 * t.VF[k];
+                if (F[0] == u || F[1] == u || F[2] == u) continue;
+                int G[3];
+                for (int j = 0; j < 3; j++) G[j] = F[j] == v ? u : F[j];
+                q = fmin(q, face_sin(c, G[0], G[1], G[2]));
+            }
+            if (q > bq) { bq = q; bu = u; }
+        }
+        if (bu < 0) continue;
+        for (int k = t.VFs[v]; k < t.VFs[v + 1]; k++) {
+            int *F = c->F + 3 * t.VF[k];
+            if (F[0] == bu || F[1] == bu || F[2] == bu) { F[0] = F[1] = F[2] = -1; continue; }
+            for (int j = 0; j < 3; j++) if (F[j] == v) F[j] = bu;
+        }
+        dead[v] = 1;
+        lock[v] = lock[bu] = 1;
+        for (int i = t.VVs[v]; i < t.VVs[v + 1]; i++) lock[t.VV[i]] = 1;
+        n++;
+    }
+    /* drop the collapsed faces */
+    int nf = 0;
+    for (int f = 0; f < c->nf; f++)
+        if (c->F[3 * f] >= 0) {
+            memmove(c->F + 3 * nf, c->F + 3 * f, 3 * sizeof *c->F);
+            nf++;
+        }
+    c->nf = nf;
+    free(lock);
+    topology_free(&t);
+    return n;
+}
+
+/* collapses until none helps, then the removed vertices are dropped
+ * (vertices keep their order, so the fixed ones 0..nb-1 keep their
+ * numbers).  Returns the number of vertices removed, -1 on error. */
+static int collapse_all(struct work *w, double goal)
+{
+    struct compat *c = w->c;
+    unsigned char *dead = calloc(c->nv ? c->nv : 1, 1);
+    if (!dead) return cm_seterr("out of memory");
+    int total = 0;
+    for (int pass = 0; pass < 50; pass++) {
+        int n = collapse_pass(w, dead, goal);
+        if (n < 0) { free(dead); return -1; }
+        total += n;
+        if (!n) break;
+    }
+    if (total) {
+        int *map = malloc(c->nv * sizeof *map), k = 0;
+        if (!map) { free(dead); return cm_seterr("out of memory"); }
+        for (int v = 0; v < c->nv; v++) map[v] = dead[v] ? -1 : k++;
+        for (int v = 0; v < c->nv; v++) {
+            if (dead[v]) continue;
+            for (int s = 0; s < c->N; s++) {
+                c->X[s][2 * map[v]] = c->X[s][2 * v];
+                c->X[s][2 * map[v] + 1] = c->X[s][2 * v + 1];
+            }
+            w->bnd[map[v]] = w->bnd[v];
+            w->bsucc[map[v]] = w->bsucc[v] >= 0 ? map[w->bsucc[v]] : -1;
+        }
+        for (int f = 0; f < 3 * c->nf; f++) c->F[f] = map[c->F[f]];
+        c->nv = k;
+        free(map);
+    }
+    free(dead);
+    return total;
+}
+
 int compat_refine(struct compat *c, const struct compat_refine_params *pa, struct compat_refine_stats *st)
 {
     double goal = pa->goal;
@@ -703,6 +823,13 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
      * (seed: vertices of faces that differ from Fsave, the faces after the
      * last smoothing; new vertices) */
     int nfsave = 0, nvsave = 0, full = 1;
+    if (pa->mips > 0) {
+        int k = collapse_all(&w, goal);
+        if (k < 0) goto out;
+        st->collapses = k;
+        c->nsteiner = c->nsteiner > k ? c->nsteiner - k : 0;
+        nv0 = c->nv;
+    }
     for (int r = 0; r < rounds; r++) {
         st->rounds++;
         if (flips_until_done(c, &st->flips) < 0) goto out;

@@ -5,6 +5,11 @@
  * flips and per-shape smoothing, until every angle of every triangle in
  * every shape reaches a goal (or nothing helps any more).
  *
+ * First (with MIPS smoothing, pa->mips > 0) compatible edge collapses:
+ * an interior vertex of a triangle below the goal is merged into the
+ * neighbour that makes its star better in every shape (link condition,
+ * every changed triangle positive in every shape, exact); this undoes the
+ * tiny pieces overlays leave.
  * One round:
  *   flips      an interior edge is flipped if the flipped pair is
  *              positively oriented in all N shapes (exact orientation
@@ -48,6 +53,7 @@ struct compat_refine_stats {
     int bsplits;       /* boundary edges bisected */
     int flips;         /* compatible flips */
     int moves;         /* accepted smoothing moves (vertex x shape) */
+    int collapses;     /* interior vertices removed by edge collapses */
     int kept_input;    /* 1 if the refined mesh was worse than the input and
                           the input was kept */
 };
