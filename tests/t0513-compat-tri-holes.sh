@@ -82,6 +82,16 @@ test_expect_success 'all six with refinement and smoothing: positive, interior p
 	grep -q "1 piece, 3 holes" log && grep -q "2 rings without a correspondence row" log &&
 	grep -q "2 interior points" log
 '
+test_expect_success 'holes and interior points are refined too: worst angle >= 18 degrees over all six poses (measured 20.1; --refine none 0.02)' '
+	make_inputs q 0 1 2 3 4 5 &&
+	compat-tri -v -c q.corr -i q.pts $mi_files >q.mesh 2>q.log &&
+	compat-tri -v --refine none -c q.corr -i q.pts $mi_files >qn.mesh 2>qn.log &&
+	check_holes q.mesh q.corr q.pts 0.02 1 1 $mi_files &&
+	! grep -q "one outer ring only" q.log &&
+	w=$(sed -n "s/.*result: .* min angle \([0-9.]*\) deg.*/\1/p" q.log) &&
+	wn=$(sed -n "s/.*result: .* min angle \([0-9.]*\) deg.*/\1/p" qn.log) &&
+	echo "refine $w deg, none $wn deg" && test_le 18 $w && test_le $wn $w
+'
 test_expect_success '-e 0: every input vertex of every ring is a mesh vertex, areas exact' '
 	make_inputs e0 0 3 5 &&
 	compat-tri -e 0 -l 0 -s 0 -c e0.corr -i e0.pts $mi_files >e0.mesh &&
