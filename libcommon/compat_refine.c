@@ -99,6 +99,10 @@ struct work {
     double *diag;         /* N bounding-box diagonals of the boundary */
     unsigned char *bnd;   /* cap: 1 for boundary (fixed) vertices */
     int *bsucc;           /* cap: next boundary vertex along the outline */
+    int *seg;             /* cap by 2: for a vertex made by splitting an
+                             outline edge, the outline vertices at the ends
+                             of the input segment it lies on (it may slide
+                             along it, shape by shape); -1 -1 otherwise */
     int vcap;
 };
 
@@ -114,6 +118,9 @@ static int grow_v(struct work *w, int nv)
         int *n = realloc(w->bsucc, cap * sizeof *n);
         if (!n) return cm_seterr("out of memory");
         w->bsucc = n;
+        int *g = realloc(w->seg, 2 * (size_t)cap * sizeof *g);
+        if (!g) return cm_seterr("out of memory");
+        w->seg = g;
         w->vcap = cap;
     }
     return 0;
@@ -296,7 +303,12 @@ static int bisect(struct work *w, int f1, int f2, int a, int b)
     c->nv++;
     w->bnd[m] = f2 < 0;
     w->bsucc[m] = -1;
-    if (f2 < 0) { w->bsucc[m] = b; w->bsucc[a] = m; }
+    w->seg[2 * m] = w->seg[2 * m + 1] = -1;
+    if (f2 < 0) {
+        w->bsucc[m] = b; w->bsucc[a] = m;
+        w->seg[2 * m] = w->seg[2 * a] >= 0 ? w->seg[2 * a] : a;
+        w->seg[2 * m + 1] = w->seg[2 * b + 1] >= 0 ? w->seg[2 * b + 1] : b;
+    }
     set_face(c, f1, a, m, p);
     set_face(c, c->nf++, m, b, p);
     if (f2 >= 0) {
@@ -517,7 +529,8 @@ static double star_mips(const struct compat *c, const struct topology *t, int s,
  * it evens out the triangles of each shape as a whole, where the
  * smallest-angle smoothing only moves one vertex to a few candidates.
  * Returns the number of moves, -1 on error. */
-static int mips_sweeps(struct compat *c, const unsigned char *bnd, int sweeps, const unsigned char *seed)
+static int mips_sweeps(struct compat *c, const unsigned char *bnd, const int *seg, int sweeps,
+                       const unsigned char *seed)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
@@ -532,7 +545,8 @@ static int mips_sweeps(struct compat *c, const unsigned char *bnd, int sweeps, c
             for (int v = 0; v < c->nv; v++) {
                 if (!dy[v]) continue;
                 dy[v] = 0;
-                if (bnd[v] || t.VFs[v + 1] == t.VFs[v]) continue;
+                int sl = seg && seg[2 * v] >= 0;   /* slides along its outline segment */
+                if ((bnd[v] && !sl) || t.VFs[v + 1] == t.VFs[v]) continue;
                 double g[2], *x = X + 2 * v;
                 double E0 = star_mips(c, &t, s, v, x, g), gn = hypot(g[0], g[1]);
                 if (!(gn > 0) || !isfinite(E0)) continue;
@@ -541,8 +555,23 @@ static int mips_sweeps(struct compat *c, const unsigned char *bnd, int sweeps, c
                 for (int i = t.VVs[v]; i < t.VVs[v + 1]; i++)
                     L += hypot(X[2 * t.VV[i]] - x[0], X[2 * t.VV[i] + 1] - x[1]);
                 L /= nn;
+                const double *A = sl ? X + 2 * seg[2 * v] : NULL, *B = sl ? X + 2 * seg[2 * v + 1] : NULL;
+                double ux = 0, uy = 0, tv = 0, lab = 1;
+                if (sl) {   /* the gradient along the segment A-B; v = A + tv (B - A) */
+                    ux = B[0] - A[0]; uy = B[1] - A[1];
+                    lab = hypot(ux, uy);
+                    if (!(lab > 0)) continue;
+                    tv = ((x[0] - A[0]) * ux + (x[1] - A[1]) * uy) / (lab * lab);
+                    gn = (g[0] * ux + g[1] * uy) / lab;
+                    if (gn == 0) continue;
+                }
                 for (double h = 0.25 * L; h > 1e-4 * L; h *= 0.5) {
                     double p[2] = {x[0] - h * g[0] / gn, x[1] - h * g[1] / gn};
+                    if (sl) {
+                        double tn = tv - h / lab * (gn > 0 ? 1 : -1);
+                        if (!(tn > 0 && tn < 1)) continue;
+                        p[0] = A[0] + tn * ux; p[1] = A[1] + tn * uy;
+                    }
                     if (star_mips(c, &t, s, v, p, NULL) < E0 * (1 - 1e-6)) {
                         x[0] = p[0]; x[1] = p[1]; m++;
                         /* a step under 1% of the mean edge does not wake
@@ -789,7 +818,7 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
     struct snapshot snap;
     memset(&snap, 0, sizeof snap);
     double q0 = compat_min_angle(c, NULL);
-    struct work w = {c, NULL, NULL, NULL, 0};
+    struct work w = {c, NULL, NULL, NULL, NULL, 0};
     int nb0 = c->nb, nv0 = c->nv, rc = -1;
     int *Fsave = NULL;
     unsigned char *seed = NULL;
@@ -804,7 +833,7 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
     if (snap_take(c, &snap) < 0 || grow_v(&w, c->nv) < 0) goto out;
     /* boundary flags and successors from the faces */
     memset(w.bnd, 0, c->nv);
-    for (int v = 0; v < c->nv; v++) w.bsucc[v] = -1;
+    for (int v = 0; v < c->nv; v++) w.bsucc[v] = w.seg[2 * v] = w.seg[2 * v + 1] = -1;
     {
         struct topology t;
         if (topology_build(c->F, c->nf, c->nv, &t) < 0) goto out;
@@ -846,7 +875,7 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
             }
             for (int v = nvsave; v < c->nv; v++) seed[v] = 1;
         }
-        int m = pa->mips > 0 ? mips_sweeps(c, w.bnd, pa->mips, seed) : 0;
+        int m = pa->mips > 0 ? mips_sweeps(c, w.bnd, w.seg, pa->mips, seed) : 0;
         if (m < 0) goto out;
         st->moves += m;
         m = smooth_sweeps(c, w.bnd, 8, seed);
@@ -891,7 +920,7 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
     rc = 0;
 out:
     snap_free(c->N, &snap);
-    free(w.bnd); free(w.bsucc); free(w.diag); free(Fsave); free(seed);
+    free(w.bnd); free(w.bsucc); free(w.seg); free(w.diag); free(Fsave); free(seed);
     return rc;
 }
 
@@ -1024,15 +1053,15 @@ int compat_remesh(struct compat *c, int ref, const struct compat_refine_params *
      * bisected, giving interior vertices that can be placed per shape */
     {
         double *BP = malloc(2 * (size_t)N * nb1 * sizeof *BP);
-        struct work w1 = {&c1, NULL, NULL, NULL, 0};
-        if (!BP || grow_v(&w1, c1.nv) < 0) { free(BP); free(w1.bnd); free(w1.bsucc); cm_seterr("out of memory"); goto out; }
+        struct work w1 = {&c1, NULL, NULL, NULL, NULL, 0};
+        if (!BP || grow_v(&w1, c1.nv) < 0) { free(BP); free(w1.bnd); free(w1.bsucc); free(w1.seg); cm_seterr("out of memory"); goto out; }
         for (int s = 0; s < N; s++)
             for (int k = 0; k < nb1; k++) {
                 const double *S = c->X[s], *a = S + 2 * seg[k], *b = S + 2 * ((seg[k] + 1) % nb);
                 BP[2 * ((size_t)s * nb1 + k)] = tpar[k] == 0 ? a[0] : a[0] + tpar[k] * (b[0] - a[0]);
                 BP[2 * ((size_t)s * nb1 + k) + 1] = tpar[k] == 0 ? a[1] : a[1] + tpar[k] * (b[1] - a[1]);
             }
-        for (int v = 0; v < c1.nv; v++) { w1.bnd[v] = v < nb1; w1.bsucc[v] = -1; }
+        for (int v = 0; v < c1.nv; v++) { w1.bnd[v] = v < nb1; w1.bsucc[v] = w1.seg[2 * v] = w1.seg[2 * v + 1] = -1; }
         int err = 0;
         for (int guard = 0; guard < 4 * nb1 && !err; guard++) {
             int fa = -1, ea = -1, eb = -1;
@@ -1058,7 +1087,7 @@ int compat_remesh(struct compat *c, int ref, const struct compat_refine_params *
             topology_free(&t1);
             if (f2 < 0 || bisect(&w1, fa, f2, ea, eb) <= 0) err = 1;
         }
-        free(BP); free(w1.bnd); free(w1.bsucc);
+        free(BP); free(w1.bnd); free(w1.bsucc); free(w1.seg);
         if (err) { rc = 0; goto out; }
     }
     int nv = c1.nv;

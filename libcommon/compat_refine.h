@@ -20,7 +20,9 @@
  *              equilateral triangle, unbounded as one degenerates, so it is
  *              a barrier: no step inverts a triangle, checked exactly).
  *              Spreads the distortion between shapes over the whole mesh,
- *              which the local smoothing below cannot.
+ *              which the local smoothing below cannot.  Outline vertices
+ *              made by splits slide along their input segment (shape by
+ *              shape), so the outline is unchanged.
  *   smoothing  each interior vertex is moved, shape by shape, to the best
  *              of a few candidate positions (mean of the points that make
  *              each incident triangle equilateral on its opposite edge,
@@ -35,7 +37,7 @@
  *              triangles are positive in every shape.  Boundary edges are
  *              split too: the new vertex lies on the outline segment in
  *              every shape, so the outline is unchanged.
- * Boundary vertices never move.  Angles at a boundary corner whose
+ * Input boundary vertices and interior points never move.  Angles at a boundary corner whose
  * opening is below twice the goal count as good when they are all the
  * corner can give (its opening divided by its triangle count).
  * Deterministic: no randomness, fixed visiting order.

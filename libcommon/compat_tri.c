@@ -352,6 +352,14 @@ static double ccw_angle(double ux, double uy, double vx, double vy)
     return a < 0 ? a + 2 * M_PI : a;
 }
 
+/* a number in [0, 4) that grows with the ccw angle atan2(y, x) mod 2 pi */
+static double ccw_pseudo(double y, double x)
+{
+    double d = fabs(x) + fabs(y);
+    if (!(d > 0)) return 0;
+    return y >= 0 ? 1 - x / d : 3 + x / d;
+}
+
 struct sub {
     int m;            /* polygon size */
     const int *poly;  /* m vertex ids */
@@ -375,9 +383,12 @@ static int incone(const struct sub *p, int i, const double *q)
 static double cone_quality(const struct sub *p, int i, const double *q)
 {
     const double *a = V(p, i), *pr = V(p, (i + p->m - 1) % p->m), *nx = V(p, (i + 1) % p->m);
-    double a1 = ccw_angle(nx[0] - a[0], nx[1] - a[1], q[0] - a[0], q[1] - a[1]);
-    double a2 = ccw_angle(q[0] - a[0], q[1] - a[1], pr[0] - a[0], pr[1] - a[1]);
-    return fmin(a1, a2);
+    /* the smaller by pseudo-angles (monotone in the ccw angle), then one atan2 */
+    double ux = nx[0] - a[0], uy = nx[1] - a[1], qx = q[0] - a[0], qy = q[1] - a[1];
+    double vx = pr[0] - a[0], vy = pr[1] - a[1];
+    double p1 = ccw_pseudo(ux * qy - uy * qx, ux * qx + uy * qy);
+    double p2 = ccw_pseudo(qx * vy - qy * vx, qx * vx + qy * vy);
+    return p1 <= p2 ? ccw_angle(ux, uy, qx, qy) : ccw_angle(qx, qy, vx, vy);
 }
 
 /* segment from P (corner i, or a free interior point if i < 0) to Q (corner
@@ -433,11 +444,6 @@ static double clearance_cut(const struct sub *p, int i, const double *P, int j, 
         if (pmin < pcut) break;
     }
     return pmin == INFINITY ? M_PI : atan2(my, mx);
-}
-
-static double clearance(const struct sub *p, int i, const double *P, int j, const double *Q)
-{
-    return clearance_cut(p, i, P, j, Q, 0);
 }
 
 /* a Steiner point near the middle of the inside segment a-b (a is corner
@@ -630,23 +636,28 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
             if (i == 0 && j == m - 1) continue;
             double q = INFINITY;
             int all = 1;
+            /* a pair whose quality is at most qcut cannot beat the best:
+             * clearances are cut short there (same choice, less work) */
+            double qcut = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
+            if (qcut >= M_PI / 3) qcut = 0;
             for (int s = 0; s < N && all; s++) {
                 double bq = -1;
                 if (vis[((size_t)s * m + i) * m + j]) {
                     const double *A = V(&sp[s], i), *B = V(&sp[s], j);
                     double mid[2];
                     if (bent_point(&sp[s], i, A, j, B, mid) == 0) {
-                        bq = fmin(path_quality(&sp[s], i, j, mid, 1),
-                                  fmin(clearance(&sp[s], i, A, -1, mid), clearance(&sp[s], -1, mid, j, B)));
+                        bq = path_quality(&sp[s], i, j, mid, 1);
+                        if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], i, A, -1, mid, qcut));
+                        if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], -1, mid, j, B, qcut));
                         tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
                     }
                 }
                 for (int a = 0; a < nc[s]; a++)
                     if (cv[s][(size_t)a * m + i] && cv[s][(size_t)a * m + j]) {
                         const double *x = C[s] + 2 * a;
-                        double pq = path_quality(&sp[s], i, j, x, 1);
-                        if (pq > bq) pq = fmin(pq, fmin(clearance(&sp[s], i, V(&sp[s], i), -1, x),
-                                                        clearance(&sp[s], -1, x, j, V(&sp[s], j))));
+                        double pq = path_quality(&sp[s], i, j, x, 1), cut = fmax(bq, qcut);
+                        if (pq > cut) pq = fmin(pq, clearance_cut(&sp[s], i, V(&sp[s], i), -1, x, cut));
+                        if (pq > cut) pq = fmin(pq, clearance_cut(&sp[s], -1, x, j, V(&sp[s], j), cut));
                         if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
                     }
                 if (bq < 0) all = 0;
