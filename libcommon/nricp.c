@@ -313,3 +313,23 @@ done:
     free(uok); free(tok);
     return rc;
 }
+
+double nricp_stretch(const double *R, const double *X, const int *F, int nf)
+{
+    double sum = 0;
+    long n = 0;
+    for (int f = 0; f < nf; f++)
+        for (int k = 0; k < 3; k++) {
+            int a = F[3 * f + k], b = F[3 * f + (k + 1) % 3];
+            double l0 = 0, l = 0;
+            for (int d = 0; d < 3; d++) {
+                double u = R[3 * a + d] - R[3 * b + d], v = X[3 * a + d] - X[3 * b + d];
+                l0 += u * u;
+                l += v * v;
+            }
+            if (!(l0 > 0)) continue;
+            sum += fabs(sqrt(l / l0) - 1);
+            n++;
+        }
+    return n ? sum / n : 0;
+}

@@ -80,6 +80,14 @@ int nricp_register(const double *VS, const double *RS, const int *FS, int nvs, i
                    const int *lm_src, const double *lm_dst, int nl,
                    const struct nricp_params *p, double *X, nricp_step_fn cb, void *ctx);
 
+/* How much a registration X stretched its rest shape R (both #V by 3, faces
+ * F #F by 3): the mean over the faces' edges of |l_X / l_R - 1|
+ * (dimensionless; edges of zero rest length skipped).  A registration that
+ * slid along the target, the wrong correspondence under a right-looking
+ * surface, stretches one side and squeezes the other: nricp --start auto
+ * weighs it against the distance to the target. */
+double nricp_stretch(const double *R, const double *X, const int *F, int nf);
+
 #ifdef __cplusplus
 }
 #endif

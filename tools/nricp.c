@@ -44,6 +44,14 @@ static const char help[] =
 "                        (optional: without it landmark-auto(1) proposes them)\n"
 "      --landmark-mesh M the mesh whose vertices dst_vertex names, if not TARGET\n"
 "                        (e.g. the scan before mesh-clean renumbered it)\n"
+"      --start S         without -l, how each key starts: landmarks (automatic ones,\n"
+"                        ARAP clay start), shell (the same with the thesis' thin\n"
+"                        shell), none (no landmarks), or auto (default): landmarks,\n"
+"                        and unless that ends within 1% of the diagonal with at most\n"
+"                        10 flipped faces also none and shell, the best kept\n"
+"      --paper           the thesis' method: thin-shell clay start, Amberg's NRICP\n"
+"                        (closest points, 10 iterations per stiffness), no backward\n"
+"                        term, no search, no ARAP fit\n"
 "      --no-auto         without -l: no landmarks at all (small motions only)\n"
 "      --landmarks-out F write the landmarks used (automatic ones too) to F\n"
 "      --align KIND      rigid | similarity | none: Procrustes on the landmarks\n"
@@ -82,12 +90,33 @@ static const char help[] =
 "\n"
 "Example: nricp -v -l marks-01-02.txt camel-01.mesh camel-02.mesh > camel-02-reg.mesh\n";
 
+/* how a key starts without -l: the automatic landmarks with the ARAP clay
+ * start, the same with the thesis' thin shell, no landmarks at all, or
+ * auto: the first, and where it ends worse than START_ACCEPT the other two,
+ * the best kept */
+enum { START_AUTO, START_LANDMARKS, START_SHELL, START_NONE };
+/* auto keeps the landmark start if it ends at most this far (fraction of
+ * the target's diagonal, symmetric Hausdorff) with at most START_FLIPS
+ * flipped faces */
+#define START_ACCEPT 0.01
+#define START_FLIPS 10
+/* the score of a start: symmetric Hausdorff distance (fraction of the
+ * diagonal) + START_FLIP_COST per flipped face + START_STRETCH_COST times
+ * the mean edge stretch from SOURCE (nricp_stretch: 10% stretch counts as
+ * 1% of the diagonal; a start that slid along the target ends near the
+ * surface but stretched) */
+#define START_FLIP_COST 1e-4
+#define START_STRETCH_COST 0.1
+
 struct options {
     const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness, *lm_mesh;
     const char *lm_out, *rest;
     const char **targets;
     int ntargets, chain, chain_prev;
     int raw, init_deform, init_shell, no_auto, no_init;
+    int start;             /* START_* */
+    int start_given;       /* --start on the command line */
+    int paper;             /* --paper: the thesis' method */
     struct nricp_params p;
 };
 
@@ -95,12 +124,13 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
-           O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST };
+           O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
+        {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
@@ -126,6 +156,15 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_INIT: o->init_deform = 1; break;
         case O_NOAUTO: o->no_auto = 1; break;
         case O_CHAIN: o->chain = 1; break;
+        case O_START:
+            o->start_given = 1;
+            if (!strcmp(optarg, "auto")) o->start = START_AUTO;
+            else if (!strcmp(optarg, "landmarks")) o->start = START_LANDMARKS;
+            else if (!strcmp(optarg, "shell")) o->start = START_SHELL;
+            else if (!strcmp(optarg, "none")) o->start = START_NONE;
+            else usage_error("--start must be auto, landmarks, shell or none");
+            break;
+        case O_PAPER: o->paper = 1; break;
         case O_REST: o->rest = optarg; break;
         case O_CREST:
             if (!strcmp(optarg, "previous")) o->chain_prev = 1;
@@ -176,7 +215,26 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->no_auto && o->landmarks) usage_error("--no-auto and --landmarks exclude each other");
     if (o->no_init && o->init_deform) usage_error("--no-init-deform and --init-deform/--init-model exclude each other");
     if (o->lm_out && o->no_auto) usage_error("--landmarks-out with --no-auto: there are none");
-    if (!o->landmarks && !o->no_auto && !o->no_init) o->init_deform = 1;
+    if (o->start_given && (o->landmarks || o->no_auto || o->no_init || o->init_deform))
+        usage_error("--start chooses the start without -l: not with -l, --no-auto, --init-deform, "
+                    "--no-init-deform, --init-model or --init-stiffness");
+    if (o->paper) {
+        /* the thesis' method (Algorithm 3 with Amberg's NRICP): the thin
+         * shell toward the landmarks, closest points without the backward
+         * term or the search, iterated per stiffness, no ARAP fit */
+        if (o->start_given && o->start != START_SHELL && o->start != START_NONE)
+            usage_error("--paper starts with the thin shell (--start shell or none)");
+        o->p.fit = 0;
+        o->p.backward = 0;
+        o->p.search = 0;
+        o->p.max_inner = 10;
+        if (!o->landmarks && !o->no_auto && !o->no_init && !o->start_given) o->start = START_SHELL;
+        if (o->landmarks && !o->no_init) o->init_deform = o->init_shell = 1;
+    }
+    if (o->no_auto) o->start = START_NONE;
+    /* one fixed start: given landmarks, or a start option given */
+    if (o->landmarks || o->no_init || o->init_deform) o->start = START_LANDMARKS;
+    if (!o->landmarks && !o->no_auto && !o->no_init && o->start != START_NONE) o->init_deform = 1;
     if (o->p.fit < 0 || o->p.fit > 1000) usage_error("--fit must be in 0..1000");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
@@ -244,8 +302,8 @@ static void check_surface(const struct mesh *M, const char *name, int is_target)
 
 /* landmark-auto: matched geodesic extremities and limb points, between the
  * pose V of the source and the target T */
-static void auto_landmarks(const double *V, const struct mesh *S, const struct mesh *T,
-                           struct landmarks *L)
+static int auto_landmarks(const double *V, const struct mesh *S, const struct mesh *T,
+                          struct landmarks *L, int may_fail)
 {
     {
         /* landmark-auto: matched geodesic extremities and limb points */
@@ -253,8 +311,13 @@ static void auto_landmarks(const double *V, const struct mesh *S, const struct m
         struct landmark_pairs lpairs;
         landmark_auto_defaults(&lp);
         double ta = now_seconds();
-        if (landmark_auto(V, S->F, S->nv, S->nf, T->V, T->F, T->nv, T->nf, &lp, &lpairs) < 0)
+        if (landmark_auto(V, S->F, S->nv, S->nf, T->V, T->F, T->nv, T->nf, &lp, &lpairs) < 0) {
+            if (may_fail) {
+                warn("no automatic landmarks: %s; registering without", cm_errmsg());
+                return -1;
+            }
             die("no landmarks given and none found: %s (give -l, or --no-auto)", cm_errmsg());
+        }
         L->n = lpairs.n;
         L->src = malloc((size_t)L->n * sizeof *L->src);
         L->dst = malloc((size_t)L->n * sizeof *L->dst);
@@ -270,12 +333,30 @@ static void auto_landmarks(const double *V, const struct mesh *S, const struct m
              now_seconds() - ta);
         landmark_pairs_free(&lpairs);
     }
+    return 0;
+}
+
+/* how well X (SOURCE's connectivity) lies on T: the symmetric Hausdorff
+ * distance over T's diagonal and the flipped faces (mesh-metrics' test) */
+static void measure(const double *X, const struct mesh *S, const struct mesh *T, double *hrel,
+                    int *flips)
+{
+    struct closest_point_tree *TS = closest_point_tree_new(X, S->nv, S->F, S->nf);
+    struct closest_point_tree *TT = closest_point_tree_new(T->V, T->nv, T->F, T->nf);
+    double h, rms, diag = bbox_diagonal(T->V, T->nv);
+    if (!TS || !TT || symmetric_distance(X, S->nv, S->F, S->nf, TS, T->V, T->nv, T->F, T->nf, TT,
+                                         &h, &rms) < 0)
+        die("cannot measure the registration: %s", cm_errmsg());
+    *hrel = h / diag;
+    *flips = flipped_faces(X, S->F, S->nf, T->V, T->nv, T->F, T->nf, TT, FLIP_THIN_TOL * diag);
+    closest_point_tree_free(TS);
+    closest_point_tree_free(TT);
 }
 
 /* one key: align SOURCE's pose START (#V by 3) on the landmarks L, the clay
  * start, NRICP with the ARAP fit relative to REST (NULL: START); X (out) */
 static void register_key(const struct options *op, const struct mesh *S, const double *start,
-                         const double *rest, const struct mesh *T, const char *tname,
+                         const double *rest, const struct mesh *T,
                          const struct landmarks *Lp, struct steps *st, double *X)
 {
     const struct options o = *op;
@@ -349,22 +430,6 @@ static void register_key(const struct options *op, const struct mesh *S, const d
                        &o.p, X, on_step, st) < 0)
         die("%s", cm_errmsg());
     progress_end(&st->pr);
-    double t1 = now_seconds();
-    if (verbose) {
-        struct closest_point_tree *TS = closest_point_tree_new(X, S->nv, S->F, S->nf);
-        struct closest_point_tree *TT = closest_point_tree_new(T->V, T->nv, T->F, T->nf);
-        double h, rms;
-        if (TS && TT && symmetric_distance(X, S->nv, S->F, S->nf, TS, T->V, T->nv, T->F, T->nf, TT, &h, &rms) == 0) {
-            double diag = bbox_diagonal(T->V, T->nv);
-            info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), RMS %.4g, "
-                 "%d flipped faces", o.chain ? tname : "", o.chain ? ": " : "", t1 - t0, h,
-                 100 * h / diag, rms,
-                 flipped_faces(X, S->F, S->nf, T->V, T->nv, T->F, T->nf, TT,
-                               FLIP_THIN_TOL * diag));
-        }
-        closest_point_tree_free(TS);
-        closest_point_tree_free(TT);
-    }
     free(VS);
 }
 
@@ -407,16 +472,77 @@ int main(int argc, char **argv)
      * key k starts from key k - 1, the fit keeps the source's shape */
     double *K = malloc((size_t)(o.ntargets + 1) * S.nv * 3 * sizeof *K);
     memcpy(K, S.V, (size_t)S.nv * 3 * sizeof *K);
+    /* --start auto: up to three starts per key, the best kept (with its
+     * landmarks and steps) */
+    double *Xc = malloc((size_t)S.nv * 3 * sizeof *Xc);
+    double *Fc = o.steps_out ? malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *Fc) : NULL;
+    struct landmarks Lbest = {0};
+    static const char *const start_name[] = {"auto", "landmarks", "shell", "none"};
     for (int k = 0; k < o.ntargets; k++) {
         const double *start = K + (size_t)k * S.nv * 3;
+        const double *rest = o.chain && k > 0 && !o.chain_prev ? S.V : o.rest ? R.V : NULL;
         double *X = K + (size_t)(k + 1) * S.nv * 3;
-        if (!o.landmarks && !o.no_auto) {
+        int have_lm = o.landmarks != NULL;
+        if (!o.landmarks && o.start != START_NONE) {
             landmarks_free(&L);
-            auto_landmarks(start, &S, &T[k], &L);
+            have_lm = auto_landmarks(start, &S, &T[k], &L, o.start == START_AUTO) == 0;
         }
-        register_key(&o, &S, start, o.chain && k > 0 && !o.chain_prev ? S.V : o.rest ? R.V : NULL, &T[k],
-                     o.targets[k], &L, &st, X);
+        int cand[3], nc = 0;
+        if (o.start == START_AUTO) {
+            if (have_lm) cand[nc++] = START_LANDMARKS;
+            cand[nc++] = START_NONE;
+            if (have_lm) cand[nc++] = START_SHELL;     /* only if neither ends well */
+        } else
+            cand[nc++] = o.start;
+        double best = INFINITY;
+        int bestc = -1, bestn = 0, bfl = 0;
+        double bh = 0;
+        for (int c = 0; c < nc; c++) {
+            struct options oc = o;
+            struct landmarks none = {0};
+            if (cand[c] == START_SHELL) oc.init_deform = oc.init_shell = 1;
+            if (cand[c] == START_NONE) oc.init_deform = 0;
+            double t0 = now_seconds();
+            register_key(&oc, &S, start, rest, &T[k], cand[c] == START_NONE ? &none : &L,
+                         &st, Xc);
+            double dt = now_seconds() - t0;
+            double h = 0, str = 0;
+            int fl = 0;
+            if (verbose || nc > 1) {
+                measure(Xc, &S, &T[k], &h, &fl);
+                str = nricp_stretch(S.V, Xc, S.F, S.nf);
+                info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), "
+                     "%d flipped faces, edge stretch %.3f (start %s)", o.chain ? o.targets[k] : "",
+                     o.chain ? ": " : "", dt, h * bbox_diagonal(T[k].V, T[k].nv), 100 * h, fl, str,
+                     start_name[cand[c]]);
+            }
+            double score = h + START_FLIP_COST * fl + START_STRETCH_COST * str;
+            if (score < best) {
+                best = score;
+                bestc = cand[c];
+                memcpy(X, Xc, (size_t)S.nv * 3 * sizeof *X);
+                if (Fc) memcpy(Fc, st.frames, (size_t)st.n * S.nv * 3 * sizeof *Fc);
+                bestn = st.n;
+                bh = h;
+                bfl = fl;
+            }
+            if (cand[c] == START_NONE && bh <= START_ACCEPT && bfl <= START_FLIPS) break;
+        }
+        if (nc > 1) info(1, "%s%skept start %s", o.chain ? o.targets[k] : "", o.chain ? ": " : "",
+                         start_name[bestc]);
+        if (Fc) {
+            memcpy(st.frames, Fc, (size_t)bestn * S.nv * 3 * sizeof *Fc);
+            st.n = bestn;
+        }
+        if (k == o.ntargets - 1 && bestc != START_NONE) {
+            Lbest = L;
+            L = (struct landmarks){0};
+        }
     }
+    free(Xc);
+    free(Fc);
+    landmarks_free(&L);
+    L = Lbest;
     double *X = K + (size_t)o.ntargets * S.nv * 3;
     if (o.steps_out) {
         FILE *f = out_open(o.steps_out);
