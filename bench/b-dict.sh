@@ -7,10 +7,12 @@
 # = 2.  The whole tool is timed (read, sketch or Gram matrix, learn, write),
 # wall and CPU seconds and peak memory (/usr/bin/time; the machine may be
 # shared: CPU is the honest number).  Baselines in the same run: the
-# paper's reported time (Xeon 2.4 GHz, "labeling and update steps") and the
-# release before this work (dict-learn at commit $OLDREV, built here from
-# git), run with the same options (it has no --search: its method is the
-# plain descent).  Lines: default options (5 restarts,
+# paper's reported time (Xeon 2.4 GHz, "labeling and update steps": compare
+# it with "learning alone", replib_learn's wall time), the release before
+# the current speed work (dict-learn at $PREREV, same options) and the one
+# before issue 12 (dict-learn at commit $OLDREV, built here from git, run
+# with the same options; it has no --search: its method is the plain
+# descent).  Lines: default options (5 restarts,
 # greedy start, local search) and -r 1 --search 0 (one plain descent, the
 # cheapest run); after each default run a "kept frames" line gives the
 # largest rounding of the frames kept beside the sketch (int32 of the
@@ -19,6 +21,7 @@
 # 10,000-vertex part piped from dict-tile, against 5,000 frames).
 set -u
 OLDREV=361189f
+PREREV=4e9d84a
 SHARED=${SHARED_DATA:-$ROOT/../shared/data}
 T=$BENCH_TMP/dict
 mkdir -p "$T"
@@ -33,43 +36,56 @@ src() { # name archive
     mesh-import --raw "$T/x/*/frame_*.obj" >"$T/$1.mesh" && rm -rf "$T/x"
 }
 src elephant elephant-walk-457 && src facecap facecap-335 || exit 1
-# the release before this work, from git (old replib + old tool over today's libcommon)
-OLD=$T/dict-learn-$OLDREV
-if [ ! -x "$OLD" ] && git -C "$ROOT" cat-file -e $OLDREV 2>/dev/null; then
-    mkdir -p "$T/old" &&
-    for f in tools/dict-learn.c libcommon/replib.c libcommon/replib.h; do
-        git -C "$ROOT" show $OLDREV:$f >"$T/old/$(basename $f)" || exit 1
-    done &&
-    ${CC:-cc} -O2 -std=c11 -pthread -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -I"$T/old" -I"$ROOT/libcommon" \
-        -o "$OLD" "$T/old/dict-learn.c" "$T/old/replib.c" "$ROOT/build/libcommon.a" \
-        -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow -lOpenMeshCore -lassimp -lpng -lz \
-        -lgmp -lmpfr -lstdc++ -lm || { echo "b-dict: cannot build the $OLDREV release"; OLD=; }
-fi
-timed() { # prints "wall cpu peak_MB energy" of dict-learn-like command "$@" --report
-    /usr/bin/time -f "%e %U %S %M" -o "$T/time" "$@" --report "$T/rep" >/dev/null 2>"$T/err" ||
+# earlier releases, from git: dict-learn and replib as they were, built over
+# today's libcommon (their own headers first).  $OLDREV: before issue 12;
+# $PREREV: the release before the sparse sketch and the batched candidates
+# (the "current release" of the speed lines).
+build_rev() { # rev -> path of the binary, or empty
+    b=$T/dict-learn-$1
+    if [ ! -x "$b" ] && git -C "$ROOT" cat-file -e $1 2>/dev/null; then
+        mkdir -p "$T/src-$1" &&
+        for f in tools/dict-learn.c libcommon/replib.c libcommon/replib.h libcommon/replib_sketch.c libcommon/replib_sketch.h; do
+            git -C "$ROOT" show $1:$f >"$T/src-$1/$(basename $f)" 2>/dev/null || rm -f "$T/src-$1/$(basename $f)"
+        done &&
+        ${CC:-cc} -O2 -std=c11 -pthread -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -I"$T/src-$1" -I"$ROOT/libcommon" \
+            -o "$b" "$T/src-$1/dict-learn.c" "$T/src-$1/replib.c" $(ls "$T/src-$1/replib_sketch.c" 2>/dev/null) "$ROOT/build/libcommon.a" \
+            -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow -lOpenMeshCore -lassimp -lpng -lz \
+            -lgmp -lmpfr -lstdc++ -lm >&2 || { echo "b-dict: cannot build release $1" >&2; b=; }
+    fi
+    [ -x "$b" ] && echo "$b"
+}
+OLD=$(build_rev $OLDREV)
+PRE=$(build_rev $PREREV)
+timed() { # prints "wall cpu peak_MB energy learn_wall" of dict-learn-like command "$@" --report
+    /usr/bin/time -f "%e %U %S %M" -o "$T/time" "$@" -v --report "$T/rep" >/dev/null 2>"$T/err" ||
         { sed 's/^/   /' "$T/err" | tail -3 >&2; return 1; }
     e=$(awk '/^energy /{print $2}' "$T/rep")
-    awk -v e="$e" '{ printf "%s %.2f %.0f %s", $1, $2 + $3, $4 / 1024, e }' "$T/time"
+    l=$(sed -n 's/.*best restart [0-9]*, \([0-9.]*\) s$/\1/p' "$T/err" | tail -1)
+    awk -v e="$e" -v l="${l:--}" '{ printf "%s %.2f %.0f %s %s", $1, $2 + $3, $4 / 1024, e, l }' "$T/time"
 }
 line() { # name V F d paper_s old(0/1) file
     name=$1 V=$2 F=$3 d=$4 paper=$5 runold=$6 f=$7
     for opts in "" "-r 1 --search 0"; do
-        new=$(timed dict-learn -v -d $d -l 2 $opts "$f") || { echo "table1 $name: dict-learn failed"; continue; }
+        new=$(timed dict-learn -d $d -l 2 $opts "$f") || { echo "table1 $name: dict-learn failed"; continue; }
         # the frames kept beside the sketch: their largest rounding against
         # half the input's decimal step (what the input can represent)
         [ -z "$opts" ] && sed -n 's/.*frames kept exactly as integers of the input.s step \([^ ]*\) (largest rounding \([^ ]*\) .*/\1 \2/p; s/.*single-precision frames: largest rounding \([^ ]*\) .*/0 \1 float/p' "$T/err" |
             awk -v n="$name" '{ kind = NF == 3 ? "floats" : "int32 of the input step " $1;
                 printf "kept frames %s (stream): largest rounding %.3g model units (%s) | baseline half the input step %s | ratio %.3g\n",
                     n, $2, kind, ($1 > 0 ? $1 / 2 : "-"), ($1 > 0 ? ($1 / 2) / ($2 > 0 ? $2 : 1e-300) : 0) }'
-        old="- - - -"
+        pre="- - - - -"
+        [ -n "$PRE" ] && { pre=$(timed "$PRE" -d $d -l 2 $opts "$f") || pre="- - - - -"; }
+        old="- - - - -"
         if [ -n "$OLD" ] && [ "$runold" = 1 ]; then
-            old=$(timed "$OLD" -d $d -l 2 ${opts%--search 0} "$f") || old="- - - -"
+            old=$(timed "$OLD" -d $d -l 2 ${opts%--search 0} "$f") || old="- - - - -"
         fi
-        echo "$new $old" | awk -v n="$name" -v V=$V -v F=$F -v d=$d -v p=$paper -v o="${opts:-defaults}" -v rev=$OLDREV '{
-            printf "table1 %s (%s v x %s f x %d pieces, lambda 2, %s): %.2f s wall (%.2f s cpu, %d MB, energy %.6g) | baseline paper %s s; release %s %s s wall (%s s cpu, %s MB, energy %s) | ratio paper %.1f (cpu-based %.1f), release %s (cpu %s), energy %s\n",
-                n, V, F, d, o, $1, $2, $3, $4, p, rev, $5, $6, $7, $8, p / $1, p / ($2 / 2),
-                ($5 == "-" ? "-" : sprintf("%.1f", $5 / $1)), ($6 == "-" ? "-" : sprintf("%.1f", $6 / $2)),
-                ($8 == "-" ? "-" : sprintf("%.4f", $4 / $8)) }'
+        echo "$new $pre $old" | awk -v n="$name" -v V=$V -v F=$F -v d=$d -v p=$paper -v o="${opts:-defaults}" -v rev=$OLDREV -v prev=$PREREV '
+            function r(a, b) { return (a == "-" || b == "-" || b == 0) ? "-" : sprintf("%.2f", a / b) }
+            {
+            printf "table1 %s (%s v x %s f x %d pieces, lambda 2, %s): %.2f s wall (%.2f s cpu, %d MB, energy %.6g; learning alone %s s wall) | baseline paper %s s (learning alone); release %s %s s wall (%s s cpu, %s MB, energy %s; learning %s s); release %s %s s wall (%s s cpu, %s MB, energy %s) | ratio paper %.1f (cpu-based %.1f; learning alone %s), release %s %s (cpu %s), release %s %s (cpu %s), energy vs %s %s\n",
+                n, V, F, d, o, $1, $2, $3, $4, $5, p, prev, $6, $7, $8, $9, $10, rev, $11, $12, $13, $14,
+                p / $1, p / ($2 / 2), r(p, $5), prev, r($6, $1), r($7, $2), rev, r($11, $1), r($12, $2),
+                prev, ($9 == "-" ? "-" : sprintf("%.4f", $4 / $9)) }'
     done
 }
 [ -s "$T/monkey.mesh" ] || "$TILE" 9971 2653 1 "$T/elephant.mesh" "$T/facecap.mesh" >"$T/monkey.mesh" || exit 1
