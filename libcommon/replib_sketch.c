@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <pthread.h>
 
 extern void dgeqrf_(const int *m, const int *n, double *a, const int *lda, double *tau, double *work,
                     const int *lwork, int *info);
@@ -19,6 +20,7 @@ extern void dgels_(const char *trans, const int *m, const int *n, const int *nrh
 
 #define BATCH 256         /* frames per co-range update (W is read and written once per batch) */
 #define STRIP 256         /* columns of W per cache block */
+#define TILE 64           /* coordinates of the batch transposed at a time */
 
 void replib_sketch_free(struct replib_sketch *S)
 {
@@ -57,7 +59,7 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     S->om = malloc(sizeof(int) * (size_t)m3 * S->zeta);
     S->W = calloc((size_t)S->s * m3, sizeof(double));
     S->zb = malloc(sizeof(double) * (size_t)BATCH * m3);
-    S->zt = malloc(sizeof(double) * (size_t)BATCH * m3);
+    S->zt = malloc(sizeof(double) * (size_t)BATCH * TILE);
     S->yt = malloc(sizeof(double) * (size_t)BATCH * k);
     S->zprev = malloc(sizeof(double) * 3 * (size_t)m3);     /* previous z, then keep_chunk's scratch */
     if (!S->ref || !S->om || !S->W || !S->zb || !S->zt || !S->yt || !S->zprev) goto oom;
@@ -102,38 +104,64 @@ static void psi_col(const struct replib_sketch *S, int f, int *p)
  * transposed batch, one vector add of nb values per nonzero of Omega) and
  * W += Psi_b Z_b (every frame added to zpsi rows of W, by strips of
  * columns that stay in cache). */
-static int flush(struct replib_sketch *S)
+/* W += Psi_b Z_b for the batch: every frame added to zpsi rows of W, by
+ * strips of columns that stay in cache */
+struct wjob { struct replib_sketch *S; const int *pc; int nb; };
+
+static void *w_update(void *arg)
 {
-    int nb = S->nb, m3 = S->m3, k = S->k, f0 = S->n - nb, zeta = S->zeta, zp = S->zpsi;
-    if (nb == 0) return 0;
-    double *zt = S->zt, *yt = S->yt;
-    for (int t0 = 0; t0 < m3; t0 += 16)       /* transpose by 16 x 16 tiles */
-        for (int b0 = 0; b0 < nb; b0 += 16) {
-            int t1 = t0 + 16 < m3 ? t0 + 16 : m3, b1 = b0 + 16 < nb ? b0 + 16 : nb;
-            for (int t = t0; t < t1; t++)
-                for (int b = b0; b < b1; b++) zt[(size_t)t * nb + b] = S->zb[(size_t)b * m3 + t];
-        }
-    memset(yt, 0, sizeof(double) * (size_t)k * nb);
-    for (int t = 0; t < m3; t++) {
-        const double *zc = zt + (size_t)t * nb;
-        const int *o = S->om + (size_t)t * zeta;
-        for (int i = 0; i < zeta; i++) vadd(yt + (size_t)(o[i] >> 1) * nb, zc, nb, o[i] & 1);
-    }
-    for (int b = 0; b < nb; b++)
-        for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b) * k + j] = yt[(size_t)j * nb + b];
-    int *pc = malloc(sizeof(int) * (size_t)nb * zp);
-    if (!pc) return cm_seterr("replib_sketch: out of memory");
-    for (int b = 0; b < nb; b++) psi_col(S, f0 + b, pc + (size_t)b * zp);
+    struct wjob *j = arg;
+    struct replib_sketch *S = j->S;
+    int m3 = S->m3, zp = S->zpsi, nb = j->nb;
     for (int t0 = 0; t0 < m3; t0 += STRIP) {
         int len = m3 - t0 < STRIP ? m3 - t0 : STRIP;
         for (int b = 0; b < nb; b++) {
             const double *z = S->zb + (size_t)b * m3 + t0;
             for (int i = 0; i < zp; i++) {
-                int e = pc[(size_t)b * zp + i];
+                int e = j->pc[(size_t)b * zp + i];
                 vadd(S->W + (size_t)(e >> 1) * m3 + t0, z, len, e & 1);
             }
         }
     }
+    return NULL;
+}
+
+/* The buffered frames into the sketches: Y_b = Z_b Omega (on the batch
+ * transposed by tiles, one vector add of nb values per nonzero of Omega)
+ * here, and W += Psi_b Z_b on a second thread meanwhile (they write
+ * disjoint arrays; each is summed in a fixed order: the bytes do not
+ * depend on the threads). */
+static int flush(struct replib_sketch *S)
+{
+    int nb = S->nb, m3 = S->m3, k = S->k, f0 = S->n - nb, zeta = S->zeta, zp = S->zpsi;
+    if (nb == 0) return 0;
+    int *pc = malloc(sizeof(int) * (size_t)nb * zp);
+    if (!pc) return cm_seterr("replib_sketch: out of memory");
+    for (int b = 0; b < nb; b++) psi_col(S, f0 + b, pc + (size_t)b * zp);
+    struct wjob job = {S, pc, nb};
+    pthread_t th;
+    int threaded = pthread_create(&th, NULL, w_update, &job) == 0;
+    if (!threaded) w_update(&job);
+    double *zt = S->zt, *yt = S->yt;
+    memset(yt, 0, sizeof(double) * (size_t)k * nb);
+    for (int t0 = 0; t0 < m3; t0 += TILE) {
+        /* coordinates t0 .. t1-1 of the batch, transposed (TILE by nb) */
+        int t1 = t0 + TILE < m3 ? t0 + TILE : m3;
+        for (int u0 = t0; u0 < t1; u0 += 16)
+            for (int b0 = 0; b0 < nb; b0 += 16) {
+                int u1 = u0 + 16 < t1 ? u0 + 16 : t1, b1 = b0 + 16 < nb ? b0 + 16 : nb;
+                for (int t = u0; t < u1; t++)
+                    for (int b = b0; b < b1; b++) zt[(size_t)(t - t0) * nb + b] = S->zb[(size_t)b * m3 + t];
+            }
+        for (int t = t0; t < t1; t++) {
+            const double *zc = zt + (size_t)(t - t0) * nb;
+            const int *o = S->om + (size_t)t * zeta;
+            for (int i = 0; i < zeta; i++) vadd(yt + (size_t)(o[i] >> 1) * nb, zc, nb, o[i] & 1);
+        }
+    }
+    for (int b = 0; b < nb; b++)
+        for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b) * k + j] = yt[(size_t)j * nb + b];
+    if (threaded) pthread_join(th, NULL);
     free(pc);
     S->nb = 0;
     return 0;
