@@ -147,7 +147,8 @@ $(BUILD)/libcommon/geodesic.o: ALL_CXXFLAGS += $(SAN_CGAL_FLAGS_ON)
 SAN_ENV    = ASAN_OPTIONS=exitcode=86:detect_leaks=1:abort_on_error=0:allocator_may_return_null=1 \
              LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
              UBSAN_OPTIONS=exitcode=86:halt_on_error=1:print_stacktrace=1:suppressions=$(CURDIR)/tests/sanitize/ubsan.supp \
-             STOPMO_SANITIZE=1 STOPMO_BIN=$(CURDIR)/bin-asan STOPMO_TRASH=$(CURDIR)/build-asan/trash
+             STOPMO_SANITIZE=1 STOPMO_BIN=$(CURDIR)/bin-asan STOPMO_TRASH=$(CURDIR)/build-asan/trash \
+             STOPMO_BUILD=$(CURDIR)/build-asan STOPMO_LINKFLAGS="$(SAN_FLAGS)"
 SANITIZE_TESTS ?= tests/t[0-9]*.sh
 check-sanitize: deps
 	$(MAKE) BUILD=build-asan BINDIR=bin-asan OPT=-O1 EXTRA_CFLAGS="$(SAN_FLAGS)" \

@@ -12,9 +12,9 @@ test_expect_success 'setup: web assets synced without node_modules/three' '
 '
 test_expect_success 'anim-view links with the empty assets' '
 	ldlibs=$(make -s -C "$STOPMO_ROOT" --eval "print-ldlibs: ; @echo \$(LDLIBS)" print-ldlibs) &&
-	(cd scratch && ${CC:-cc} -std=c11 -c -I"$STOPMO_ROOT/libcommon" -o web_assets.o "$STOPMO_ROOT/libcommon/web_assets.c") &&
-	${CC:-cc} -pthread -o anim-view-no-three "$STOPMO_ROOT/build/tools/anim-view.o" scratch/web_assets.o \
-	  "$STOPMO_ROOT/build/libcommon.a" $ldlibs
+	(cd scratch && ${CC:-cc} -std=c11 $STOPMO_LINKFLAGS -c -I"$STOPMO_ROOT/libcommon" -o web_assets.o "$STOPMO_ROOT/libcommon/web_assets.c") &&
+	${CC:-cc} -pthread $STOPMO_LINKFLAGS -o anim-view-no-three "$STOPMO_BUILD/tools/anim-view.o" scratch/web_assets.o \
+	  "$STOPMO_BUILD/libcommon.a" $ldlibs
 '
 test_expect_success 'it refuses to write a page: exit 1, one line naming make deps, nothing written' '
 	mesh-gen grid >g.mesh &&

@@ -25,6 +25,10 @@ export STOPMO_BIN
 PATH="$STOPMO_BIN:$PATH"
 export PATH
 SHARED_DATA=${STOPMO_SHARED_DATA:-$STOPMO_ROOT/../shared/data}
+# the object tree the tools were built from, and the flags to link against
+# it (make check-sanitize: build-asan and the sanitizer flags)
+STOPMO_BUILD=${STOPMO_BUILD:-$STOPMO_ROOT/build}
+STOPMO_LINKFLAGS=${STOPMO_LINKFLAGS:-}
 export STOPMO_PROGRESS=0
 unset STOPMO_RAW
 test_count=0

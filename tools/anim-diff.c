@@ -117,6 +117,11 @@ int main(int argc, char **argv)
     printf("%smean %.6g\n%smax %.6g\n%srms %.6g\n%sframes %d\n", summary ? "" : "# ",
            n ? scale * sum / n : 0, summary ? "" : "# ", scale * mx, summary ? "" : "# ",
            n ? scale * sqrt(sum2 / n) : 0, summary ? "" : "# ", k);
+    free(rows);
+    free(X);
+    free(Y);
+    mesh_reader_close(&a);
+    mesh_reader_close(&b);
     if (fclose(stdout) != 0) die("cannot write output");
     return 0;
 }

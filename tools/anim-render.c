@@ -577,11 +577,27 @@ int main(int argc, char **argv)
              sheet.h, C, nrows, 1e3 * (t2 - t1), o.r.format, 1e3 * (now_seconds() - t2));
         image_free(&sheet);
     }
-    for (int j = 0; j < o.ninputs; j++)
+    for (int j = 0; j < o.ninputs; j++) {
         if (in[j].streaming) {
             if (in[j].open2) mesh_reader_close(&in[j].r2);
             mesh_spool_free(&in[j].sp);
-        }
+        } else
+            for (int i = 0; i < in[j].nsel; i++) {  /* a frame chosen twice is kept once */
+                int seen = 0;
+                for (int k = 0; k < i && !seen; k++) seen = in[j].X[k] == in[j].X[i];
+                if (!seen) free(in[j].X[i]);
+            }
+        free((char *)in[j].name);
+        free(in[j].F);
+        free(in[j].sel);
+        free(in[j].X);
+        free(in[j].bounds);
+        free(in[j].cur);
+    }
+    free(in);
+    free(o.list);
+    for (int i = 0; i < o.ntitles; i++) free(o.titles[i]);
+    free(o.titles);
     mesh_colors_free(&mc);
     return 0;
 }

@@ -380,6 +380,8 @@ int main(int argc, char **argv)
         progress_end(&pg);
         out_close(out);
         replib_data_free(&D);
+        free(init); free(o.swap_sweep);
+        columns_free(&wc); if (o.fixed) mesh_free(&fx); mesh_free(&m);
         return 0;
     }
 

@@ -186,5 +186,19 @@ int main(int argc, char **argv)
     out_close(f);
     info(1, "%d frames, %d parts, largest seam gap %.3g", nframes, np, gap);
     mesh_reader_close(&base);
+    for (int p = 0; p < np; p++) {
+        mesh_free(&P[p].lib);
+        free(P[p].map);
+        free(P[p].labels);
+        free(lib_path[p]);   /* the strdup'ed spec; lab_path and map_path point into it */
+    }
+    free(P);
+    free(lib_path);
+    free(lab_path);
+    free(map_path);
+    free(X0);
+    free(X);
+    free(cnt);
+    free(first);
     return 0;
 }

@@ -326,6 +326,7 @@ int main(int argc, char **argv)
     parse_args(argc, argv, &o);
     if (o.np) {
         write_gltf_pieces(&o);
+        free(o.pieces);
         return 0;
     }
 
@@ -382,5 +383,6 @@ int main(int argc, char **argv)
     mesh_reader_close(&r);
     free(X);
     free(Y);
+    free(o.pieces);
     return 0;
 }

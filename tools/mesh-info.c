@@ -262,10 +262,14 @@ int main(int argc, char **argv)
                 die("'%s': not a solid: %d pairs of faces intersect", name, si.self_intersections);
         }
         mesh_reader_close(&r);
+        free(X);
+        free(X0);
         return 0;
     }
     if (o.quiet) {
         mesh_reader_close(&r);
+        free(X);
+        free(X0);
         return 0;
     }
 

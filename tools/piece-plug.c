@@ -588,8 +588,8 @@ int main(int argc, char **argv)
             struct trimesh cut = {0};
             cut.nv = cut.capv = A->cut.nv; cut.nf = cut.capf = A->cut.nf;
             cut.V = malloc(sizeof(double) * 3 * (A->cut.nv + 1)); cut.F = malloc(sizeof(int) * 3 * (A->cut.nf + 1));
-            memcpy(cut.V, A->cut.V, sizeof(double) * 3 * A->cut.nv);
-            memcpy(cut.F, A->cut.F, sizeof(int) * 3 * A->cut.nf);
+            if (A->cut.nv) memcpy(cut.V, A->cut.V, sizeof(double) * 3 * A->cut.nv);
+            if (A->cut.nf) memcpy(cut.F, A->cut.F, sizeof(int) * 3 * A->cut.nf);
             if (o.label && nseamcap) {
                 /* on the first seam cap of this part, at its centre, read from outside */
                 int sj = 0;

@@ -223,5 +223,6 @@ int main(int argc, char **argv)
     out_close(f);
     image_free(&im);
     columns_free(&c);
+    free(o.ycols);
     return 0;
 }
