@@ -150,8 +150,11 @@ SAN_ENV    = ASAN_OPTIONS=exitcode=86:detect_leaks=1:abort_on_error=0:allocator_
              STOPMO_SANITIZE=1 STOPMO_BIN=$(CURDIR)/bin-asan STOPMO_TRASH=$(CURDIR)/build-asan/trash \
              STOPMO_BUILD=$(CURDIR)/build-asan STOPMO_LINKFLAGS="$(SAN_FLAGS)"
 SANITIZE_TESTS ?= tests/t[0-9]*.sh
+# the sanitized build is long (CGAL's Booleans under ASan: about 10 min a file
+# on a loaded machine), so it runs on every core unless SAN_JOBS says otherwise
+SAN_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 check-sanitize: deps
-	$(MAKE) BUILD=build-asan BINDIR=bin-asan OPT=-O1 EXTRA_CFLAGS="$(SAN_FLAGS)" \
+	$(MAKE) -j$(SAN_JOBS) BUILD=build-asan BINDIR=bin-asan OPT=-O1 EXTRA_CFLAGS="$(SAN_FLAGS)" \
 	  EXTRA_CXXFLAGS="$(SAN_FLAGS)" EXTRA_LDFLAGS="$(SAN_FLAGS)" \
 	  SAN_CGAL_FLAGS_ON="$(SAN_CGAL_FLAGS)" all
 	$(SAN_ENV) prove -j2 --timer $(SANITIZE_TESTS) $(patsubst $(BUILD)/%,build-asan/%,$(UNITS))
