@@ -568,6 +568,7 @@ int main(int argc, char **argv)
     struct mesh W = S;
     W.V = o.chain ? K : X;
     W.nframes = o.chain ? o.ntargets + 1 : 1;
+    W.cut = NULL;   /* one clip; S.cut has S's one frame only (ASan: read past it with --chain) */
     if (mesh_write(out, &W, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
     if (lf) out_close(lf);
     out_close(out);
