@@ -85,30 +85,6 @@ struct compat_refine_params {
 int compat_refine(struct compat *c, const struct compat_refine_params *pa,
                   struct compat_refine_stats *st);
 
-/* Remeshing by transfer: the outline of shape ref alone is triangulated
- * and refined (compat_refine with N = 1), every other shape gets the same
- * triangles with its boundary vertices on its own outline (new boundary
- * vertices at the same fraction of the same input segment) and its
- * interior vertices placed by as-rigid-as-possible deformation of the
- * reference mesh with all boundary vertices as handles (arap_deform2d);
- * triangles left inverted are untangled by moving interior vertices.  If
- * every shape is then positive, the result is refined compatibly
- * (compat_refine) and replaces c (interior vertices of c, e.g. the
- * Steiner points of compat_triangulate, are dropped: c->nsteiner = 0).
- * c        compatible boundary (and triangulation) of N shapes; only the
- *          boundary vertices 0..c->nb-1 are used
- * ref      reference shape, 0..N-1
- * pa, st   as for compat_refine (the size bound applies to the
- *          reference mesh only)
- * Returns 1 (c replaced), 0 (some shape keeps an inverted triangle; c is
- * unchanged), -1 on error (cm_errmsg). */
-int compat_remesh(struct compat *c, int ref, const struct compat_refine_params *pa,
-                  struct compat_refine_stats *st);
-
-/* Deep copy of c (positions, faces, the matched boundary); dst is
- * overwritten.  Returns -1 on out of memory. */
-int compat_copy(const struct compat *src, struct compat *dst);
-
 /* Quality of shape s: smallest angle (radians) of any triangle, and the
  * share of triangles (0..1) whose smallest angle is below 10 and below 20
  * degrees.  Any output pointer may be NULL. */
