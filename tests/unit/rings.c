@@ -5,23 +5,18 @@
 #include "tap.h"
 #include <math.h>
 
-static int test_degenerate(const double *pts, int n, double s)
+/* ring pts (n points) scaled by s: rings_degenerate (what 0) or
+ * rings_orientation (what 1) of it */
+static int scaled(int what, const double *pts, int n, double s)
 {
     double P[64];
     int start[2] = {0, n};
     for (int i = 0; i < 2 * n; i++) P[i] = pts[i] * s;
     struct rings r = {.nrings = 1, .start = start, .P = P};
-    return rings_degenerate(&r, 0);
+    return what ? rings_orientation(&r, 0) : rings_degenerate(&r, 0);
 }
-
-static int test_orientation(const double *pts, int n, double s)
-{
-    double P[64];
-    int start[2] = {0, n};
-    for (int i = 0; i < 2 * n; i++) P[i] = pts[i] * s;
-    struct rings r = {.nrings = 1, .start = start, .P = P};
-    return rings_orientation(&r, 0);
-}
+#define test_degenerate(p, n, s) scaled(0, p, n, s)
+#define test_orientation(p, n, s) scaled(1, p, n, s)
 
 int main(void)
 {
