@@ -95,4 +95,9 @@ test_expect_success 'glTF/FBX: content that is not the named format never reache
 	printf "{\"asset\":{\"version\":\"2.0\"}}" >j.fbx &&
 	test_fails_cleanly mesh-import j.fbx 2>err && grep "j.fbx.: the file is glTF, not FBX" err
 '
+test_expect_success 'glTF: an animation channel without a target is refused before assimp dereferences it' '
+	cp "$STOPMO_ROOT/tests/fuzz/regress/gltf/channel-without-target" c.gltf &&
+	test_fails_cleanly mesh-import c.gltf 2>err &&
+	grep "c.gltf.: animation 0 channel 0: it has no target" err
+'
 test_done
