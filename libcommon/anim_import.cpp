@@ -317,8 +317,8 @@ struct Gltf {
         return true;
     }
 
-    /* Every animation channel has a target with a path, its node (if
-     * given) and sampler exist, and every sampler names existing input and
+    /* Every animation channel has a target with a path and a node, its
+     * node and sampler exist, and every sampler names existing input and
      * output accessors (glTF 2.0, 3.11).  Checked before assimp sees the
      * file: assimp 5.2 dereferences a missing target (SIGSEGV, found by
      * fuzz_gltf).  false with *why = "animation A channel C: ...". */
@@ -328,7 +328,7 @@ struct Gltf {
         if (!anims) return true;
         size_t nnodes = root.get("nodes") ? root.get("nodes")->arr.size() : 0;
         size_t nacc = root.get("accessors") ? root.get("accessors")->arr.size() : 0;
-        char buf[160];
+        char buf[320];
         for (size_t ai = 0; ai < anims->arr.size(); ai++) {
             const JVal &an = anims->arr[ai];
             const JVal *chs = an.get("channels"), *sms = an.get("samplers");
@@ -345,10 +345,12 @@ struct Gltf {
                 const JVal &ch = chs->arr[ci];
                 const JVal *tg = ch.get("target");
                 const char *bad = nullptr;
-                if (ch.size("sampler", -1) >= nsm) bad = "its sampler is not one of the animation's";
-                else if (!tg || tg->t != JVal::OBJ) bad = "it has no target";
-                else if (!tg->get("path") || tg->get("path")->t != JVal::STR) bad = "its target has no path";
-                else if (tg->get("node") && tg->size("node", -1) >= nnodes) bad = "its target node is not a node of the file";
+                if (ch.size("sampler", -1) >= nsm) bad = "its sampler is not one of the animation's (glTF 2.0 requires it)";
+                else if (!tg || tg->t != JVal::OBJ) bad = "it has no target (glTF 2.0 requires one)";
+                else if (!tg->get("path") || tg->get("path")->t != JVal::STR) bad = "its target has no path (glTF 2.0 requires one)";
+                else if (!tg->get("node"))  /* allowed by glTF (for extensions), but assimp 5.2 crashes on it */
+                    bad = "its target names no node; stopmo reads the morph weights of a node's mesh (assimp 5.2 crashes on such channels)";
+                else if (tg->size("node", -1) >= nnodes) bad = "its target node is not a node of the file";
                 if (bad) {
                     snprintf(buf, sizeof buf, "animation %zu channel %zu: %s", ai, ci, bad);
                     *why = buf;
@@ -528,7 +530,7 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
                              "(byteOffset, byteStride, count or byteLength is wrong)", path, bad);
         std::string why;
         if (pre.root.t == JVal::OBJ && !pre.animations_well_formed(&why))
-            return cm_seterr("cannot read '%s': %s (glTF 2.0 requires it)", path, why.c_str());
+            return cm_seterr("cannot read '%s': %s", path, why.c_str());
     }
     Assimp::Importer imp;
     /* no post-processing that merges or splits vertices: the file's vertex

@@ -95,9 +95,11 @@ test_expect_success 'glTF/FBX: content that is not the named format never reache
 	printf "{\"asset\":{\"version\":\"2.0\"}}" >j.fbx &&
 	test_fails_cleanly mesh-import j.fbx 2>err && grep "j.fbx.: the file is glTF, not FBX" err
 '
-test_expect_success 'glTF: an animation channel without a target is refused before assimp dereferences it' '
+test_expect_success 'glTF: an animation channel without a target, or a target without a node, is refused before assimp crashes on it' '
 	cp "$STOPMO_ROOT/tests/fuzz/regress/gltf/channel-without-target" c.gltf &&
 	test_fails_cleanly mesh-import c.gltf 2>err &&
-	grep "c.gltf.: animation 0 channel 0: it has no target" err
+	grep "c.gltf.: animation 0 channel 0: it has no target" err &&
+	cp "$STOPMO_ROOT/tests/fuzz/regress/gltf/target-without-node" n.gltf &&
+	test_fails_cleanly mesh-import n.gltf 2>err && grep "n.gltf.: animation 0 channel 0: its target names no node" err
 '
 test_done
