@@ -1093,7 +1093,9 @@ static void smooth_pass(struct compat *c, const struct topology *t, int relaxed)
             for (int tries = 0; tries < 3; tries++) {
                 X[2 * v] = cx; X[2 * v + 1] = cy;
                 double nq = INFINITY;
-                for (int k = t->VFs[v]; k < t->VFs[v + 1] && nq > 0; k++) {
+                /* every incident triangle is tested (nq >= 0, not > 0: a sliver
+                 * whose angle rounds to 0 must not end the test early; fuzz_compat) */
+                for (int k = t->VFs[v]; k < t->VFs[v + 1] && nq >= 0; k++) {
                     const int *F = c->F + 3 * t->VF[k];
                     if (orient2_sign(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) <= 0) nq = -1;
                     else nq = fmin(nq, tri_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]));
