@@ -591,6 +591,98 @@ static int mips_sweeps(struct compat *c, const unsigned char *bnd, const int *se
     return moves;
 }
 
+/* Max-min polish of one vertex v in shape s: a pattern search (eight
+ * directions, or the two along its outline segment for a vertex that
+ * slides) on the smallest angle of v's star, from a fifth of the mean edge
+ * length down to 1/1000 of it; every step keeps the star positive (exact).
+ * The MIPS and candidate smoothing above optimise proxies (energy, a few
+ * fixed candidates); this raises the one angle that is worst.  Returns 1 if
+ * v moved. */
+static int polish_vertex(struct compat *c, const struct topology *t, int s, int v, const int *seg)
+{
+    double *X = c->X[s], *x = X + 2 * v;
+    int sl = seg && seg[2 * v] >= 0;
+    double q = star_quality(c, t, s, v, x);
+    if (!(q > 0)) return 0;
+    int nn = t->VVs[v + 1] - t->VVs[v];
+    if (!nn) return 0;
+    double L = 0;
+    for (int i = t->VVs[v]; i < t->VVs[v + 1]; i++)
+        L += hypot(X[2 * t->VV[i]] - x[0], X[2 * t->VV[i] + 1] - x[1]);
+    L /= nn;
+    const double *A = sl ? X + 2 * seg[2 * v] : NULL, *B = sl ? X + 2 * seg[2 * v + 1] : NULL;
+    double ux = 0, uy = 0, lab = 1;
+    if (sl) {
+        ux = B[0] - A[0]; uy = B[1] - A[1];
+        lab = hypot(ux, uy);
+        if (!(lab > 0)) return 0;
+    }
+    static const double D[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
+                                   {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
+                                   {-0.7071067811865476, -0.7071067811865476}, {0, -1},
+                                   {0.7071067811865476, -0.7071067811865476}};
+    double p[2] = {x[0], x[1]};
+    int moved = 0;
+    for (double h = 0.2 * L; h > 1e-3 * L;) {
+        double bq = q, bp[2] = {0, 0};
+        int nd = sl ? 2 : 8, found = 0;
+        for (int k = 0; k < nd; k++) {
+            double cp[2];
+            if (sl) {
+                double tv = ((p[0] - A[0]) * ux + (p[1] - A[1]) * uy) / (lab * lab);
+                double tn = tv + (k ? -h : h) / lab;
+                if (!(tn > 0 && tn < 1)) continue;
+                cp[0] = A[0] + tn * ux; cp[1] = A[1] + tn * uy;
+            } else {
+                cp[0] = p[0] + h * D[k][0]; cp[1] = p[1] + h * D[k][1];
+            }
+            double cq = star_quality(c, t, s, v, cp);
+            if (cq > bq * (1 + 1e-9)) { bq = cq; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; }
+        }
+        if (found) { q = bq; p[0] = bp[0]; p[1] = bp[1]; moved = 1; }
+        else h *= 0.5;
+    }
+    if (moved) { x[0] = p[0]; x[1] = p[1]; }
+    return moved;
+}
+
+/* Polish every shape: the movable vertices of triangles whose smallest
+ * angle in that shape is below goal (and their neighbours) get
+ * polish_vertex, in sweeps while something moves.  Returns the number of
+ * moves, -1 on error. */
+static int polish(struct compat *c, const unsigned char *bnd, const int *seg, double goal, int sweeps)
+{
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    unsigned char *dy = malloc(c->nv ? c->nv : 1);
+    if (!dy) { topology_free(&t); return cm_seterr("out of memory"); }
+    double sg = sin(goal);
+    int moves = 0;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        for (int k = 0; k < sweeps; k++) {
+            memset(dy, 0, c->nv);
+            int any = 0;
+            for (int f = 0; f < c->nf; f++) {
+                const int *F = c->F + 3 * f;
+                if (compat_sin_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) >= sg) continue;
+                for (int j = 0; j < 3; j++) { touch_star(&t, F[j], dy); any = 1; }
+            }
+            if (!any) break;
+            int m = 0;
+            for (int v = 0; v < c->nv; v++) {
+                if (!dy[v] || (bnd[v] && !(seg && seg[2 * v] >= 0)) || t.VFs[v + 1] == t.VFs[v]) continue;
+                m += polish_vertex(c, &t, s, v, seg);
+            }
+            moves += m;
+            if (!m) break;
+        }
+    }
+    free(dy);
+    topology_free(&t);
+    return moves;
+}
+
 /* quality of shape s for acceptance: smallest sin_min and the number of
  * triangles whose smallest angle is below the goal */
 static void shape_score(const struct compat *c, int s, double sgoal, double *mn, int *nbad)
@@ -881,6 +973,12 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
         m = smooth_sweeps(c, w.bnd, 8, seed);
         if (m < 0) goto out;
         st->moves += m;
+        if (pa->mips > 0) {
+            if (flips_until_done(c, &st->flips) < 0) goto out;
+            m = polish(c, w.bnd, w.seg, goal, 4);
+            if (m < 0) goto out;
+            st->moves += m;
+        }
         /* the ARAP transfer between shapes: with the MIPS smoothing it was
          * never kept (creature and elephant poses), so it runs without */
         int tc = pa->mips > 0 ? 0 : transfer(c, w.bnd, goal, &st->moves);
@@ -907,6 +1005,12 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
         int m = smooth_sweeps(c, w.bnd, 8, NULL);
         if (m < 0) goto out;
         st->moves += m;
+        if (pa->mips > 0) {
+            int m2 = polish(c, w.bnd, w.seg, goal, 4);
+            if (m2 < 0) goto out;
+            st->moves += m2;
+            m += m2;
+        }
         int f0 = st->flips;
         if (flips_until_done(c, &st->flips) < 0) goto out;
         if (st->flips == f0 && m == 0) break;

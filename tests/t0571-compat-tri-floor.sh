@@ -1,0 +1,60 @@
+#!/bin/sh
+test_description='compat-tri: worst angle >= 20 degrees over every triangle of every pose, on every 4-pose subset of the elephant poses (the max-min polish; before it 15.0-20.1, 2 of 15 subsets >= 20)'
+. "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/morph2d-lib.sh"
+
+# smallest angle (degrees) over every triangle of every frame of a MESH
+# stream, measured here, not taken from compat-tri -v
+worst_angle() {
+	awk 'function ang(ax, ay, bx, by, cx, cy,  ux, uy, vx, vy, cr) {
+		ux = bx - ax; uy = by - ay; vx = cx - ax; vy = cy - ay; cr = ux * vy - uy * vx
+		return atan2(cr < 0 ? -cr : cr, ux * vx + uy * vy) * 57.29577951308232 }
+	BEGIN { nf = 0 }
+	$1 == "f" { A[nf] = $2; B[nf] = $3; C[nf] = $4; nf++; next }
+	$1 == "frame" { fr++; k = 0; next }
+	fr > 0 && NF == 3 { X[fr, k] = $1; Y[fr, k] = $2; k++ }
+	END { m = 180; for (f = 1; f <= fr; f++) for (t = 0; t < nf; t++) {
+		a = A[t]; b = B[t]; c = C[t]
+		q = ang(X[f,a], Y[f,a], X[f,b], Y[f,b], X[f,c], Y[f,c])
+		r = ang(X[f,b], Y[f,b], X[f,c], Y[f,c], X[f,a], Y[f,a]); if (r < q) q = r
+		r = ang(X[f,c], Y[f,c], X[f,a], Y[f,a], X[f,b], Y[f,b]); if (r < q) q = r
+		if (q < m) m = q }
+	      printf "%.4f\n", m }' "$1"
+}
+
+test_expect_success 'made-up creature, six poses: worst angle >= 19.99 degrees (measured 20.01), positive' '
+	for k in 0 1 2 3 4 5; do
+		awk -v pose=$k -v tips=tips$k -f "$TEST_DIRECTORY/t0511-creature.awk" >p$k.rings || return 1
+	done &&
+	cat tips0 tips1 tips2 tips3 tips4 tips5 | awk "{ for (i = 1; i <= NF; i++) r[i] = r[i] \" \" \$i }
+		END { for (i = 1; i <= 5; i++) print substr(r[i], 2) }" >corr.txt &&
+	compat-tri -v -c corr.txt p0.rings p1.rings p2.rings p3.rings p4.rings p5.rings >c6.mesh 2>c6.log &&
+	test_le 1e-12 $(min_area c6.mesh) &&
+	test_le 19.99 $(worst_angle c6.mesh)
+'
+test_expect_success '-v reports the worst angle that the mesh has' '
+	v=$(sed -n "s/.*result: .* min angle \([0-9.]*\) deg.*/\1/p" c6.log) &&
+	awk -v a="$v" -v b="$(worst_angle c6.mesh)" "BEGIN { d = a - b; exit !(d < 0.006 && d > -0.006) }"
+'
+
+need_shared_data shapes2d/poses/elephant-pose6.rings.txt
+P="$SHARED_DATA/shapes2d/poses"
+test_expect_success 'elephant, every 4 of the 6 poses: worst angle >= 19.99 degrees, positive (measured 20.00-20.11 in 0.1-0.3 s; before the polish 15.0-20.1)' '
+	for cols in 1,2,3,4 1,2,3,5 1,2,3,6 1,2,4,5 1,2,4,6 1,2,5,6 1,3,4,5 1,3,4,6 1,3,5,6 1,4,5,6 \
+	            2,3,4,5 2,3,4,6 2,3,5,6 2,4,5,6 3,4,5,6; do
+		files=
+		for k in $(echo $cols | tr , " "); do files="$files $P/elephant-pose$k.rings.txt"; done
+		grep -v "^#" "$STOPMO_ROOT/examples/morph2d/corr6.txt" | cut -d" " -f$cols >c.txt &&
+		compat-tri -c c.txt $files >e.mesh &&
+		test_le 1e-12 $(min_area e.mesh) &&
+		test_le 19.99 $(worst_angle e.mesh) || { echo "poses $cols: $(worst_angle e.mesh) deg" >&2; return 1; }
+	done
+'
+test_expect_success 'elephant, all six poses: worst angle >= 19.99 degrees (measured 20.01; before 15.9)' '
+	compat-tri -c "$STOPMO_ROOT/examples/morph2d/corr6.txt" $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
+		$P/elephant-pose3.rings.txt $P/elephant-pose4.rings.txt $P/elephant-pose5.rings.txt \
+		$P/elephant-pose6.rings.txt >e6.mesh &&
+	test_le 1e-12 $(min_area e6.mesh) &&
+	test_le 19.99 $(worst_angle e6.mesh)
+'
+test_done
