@@ -664,7 +664,9 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
  * labels are among the candidates, so the energy never rises above
  * theirs: a weaker but valid label step for a descent.  l: n labels, in:
  * the current ones, out: the new ones.  Returns the energy, NAN on
- * allocation failure. */
+ * allocation failure.  One pass over the frames: frame f's candidates are
+ * selected while its rows of U and H are in cache, and the DP step from
+ * f - 1 to f follows at once (T is symmetric: row b is read). */
 static double dp_candidates(const struct chain *p, int K, int *l)
 {
     int n = p->n, d = p->d;
@@ -673,12 +675,14 @@ static double dp_candidates(const struct chain *p, int K, int *l)
     int *cand = malloc(sizeof(int) * (size_t)n * W), *nc = malloc(sizeof(int) * n);
     double *hs = malloc(sizeof(double) * (size_t)n * W), *V = malloc(sizeof(double) * W);
     double *Vn = malloc(sizeof(double) * W);
-    int *pool_buf = malloc(sizeof(int) * d);
+    int *pool_buf = malloc(sizeof(int) * (d + 1));
     if (!cand || !nc || !hs || !V || !Vn || !pool_buf) {
         free(cand); free(nc); free(hs); free(V); free(Vn); free(pool_buf);
         cm_seterr("replib: out of memory (%d frames, %d candidates)", n, W);
         return NAN;
     }
+    double total = 0;
+    int start = 0;
     for (int f = 0; f < n; f++) {
         const double *u = p->U + (size_t)f * d;
         int *c = cand + (size_t)f * W, k = 0, in = 0, m = d;
@@ -691,7 +695,7 @@ static double dp_candidates(const struct chain *p, int K, int *l)
             double tau = u[pc[0]];
             for (int j = 1; j < K; j++) tau = u[pc[j]] > tau ? u[pc[j]] : tau;
             m = 0;
-            for (int a = 0; a < d; a++) if (u[a] <= tau) pool_buf[m++] = a;
+            for (int a = 0; a < d; a++) { pool_buf[m] = a; m += u[a] <= tau; }
             if (m >= K) pool = pool_buf;
             else m = d;
         }
@@ -705,45 +709,53 @@ static double dp_candidates(const struct chain *p, int K, int *l)
         for (int j = 0; j < k; j++) in |= c[j] == l[f];
         if (!in) c[k++] = l[f];
         nc[f] = k;
-    }
-    double total = 0;
-    int start = 0;
-    while (start < n) {
-        int end = start;
-        while (end < n - 1 && (!p->link || p->link[end])) end++;
-        for (int i = 0; i < nc[start]; i++) V[i] = p->U[(size_t)start * d + cand[(size_t)start * W + i]];
-        for (int f = start; f < end; f++) {
-            const double *Hf = p->H ? p->H + (size_t)f * d : NULL;
-            const int *ca = cand + (size_t)f * W, *cb = ca + W;
-            double *h = hs + (size_t)f * W, cf = p->c ? p->c[f] : 0;
-            for (int i = 0; i < nc[f]; i++) h[i] = V[i] - (Hf ? Hf[ca[i]] : 0);
-            for (int j = 0; j < nc[f + 1]; j++) {
-                int b = cb[j];
-                double m = INFINITY;
-                for (int i = 0; i < nc[f]; i++) {
-                    double v = h[i] + (p->T ? p->T[(size_t)ca[i] * d + b] : 0);
-                    m = v < m ? v : m;
+        if (f == start) {
+            for (int i = 0; i < k; i++) V[i] = u[c[i]];
+        } else {
+            /* DP step f - 1 -> f */
+            int g = f - 1;
+            const double *Hg = p->H ? p->H + (size_t)g * d : NULL;
+            const int *ca = cand + (size_t)g * W;
+            double *h = hs + (size_t)g * W, cg = p->c ? p->c[g] : 0;
+            for (int i = 0; i < nc[g]; i++) h[i] = V[i] - (Hg ? Hg[ca[i]] : 0);
+            for (int j = 0; j < k; j++) {
+                int b = c[j];
+                double mn = INFINITY;
+                if (p->T) {
+                    const double *Tb = p->T + (size_t)b * d;
+                    for (int i = 0; i < nc[g]; i++) {
+                        double v = h[i] + Tb[ca[i]];
+                        mn = v < mn ? v : mn;
+                    }
+                } else {
+                    for (int i = 0; i < nc[g]; i++) {
+                        double v = h[i] + 0;
+                        mn = v < mn ? v : mn;
+                    }
                 }
-                Vn[j] = m + p->U[(size_t)(f + 1) * d + b] + cf + (Hf ? Hf[b] : 0);
+                Vn[j] = mn + u[b] + cg + (Hg ? Hg[b] : 0);
             }
             double *t = V; V = Vn; Vn = t;
         }
-        int best = 0;
-        for (int i = 1; i < nc[end]; i++) if (V[i] < V[best]) best = i;
-        total += V[best];
-        l[end] = cand[(size_t)end * W + best];
-        for (int f = end - 1; f >= start; f--) {
-            const int *ca = cand + (size_t)f * W;
-            const double *h = hs + (size_t)f * W;
-            int b = l[f + 1], im = 0;
-            double m = INFINITY;
-            for (int i = 0; i < nc[f]; i++) {
-                double v = h[i] + (p->T ? p->T[(size_t)ca[i] * d + b] : 0);
-                if (v < m) { m = v; im = i; }
+        if (f == n - 1 || (p->link && !p->link[f])) {
+            /* the clip start..f ends: best final label, then back */
+            int end = f, best = 0;
+            for (int i = 1; i < nc[end]; i++) if (V[i] < V[best]) best = i;
+            total += V[best];
+            l[end] = cand[(size_t)end * W + best];
+            for (int g = end - 1; g >= start; g--) {
+                const int *ca = cand + (size_t)g * W;
+                const double *h = hs + (size_t)g * W;
+                int b = l[g + 1], im = 0;
+                double mn = INFINITY;
+                for (int i = 0; i < nc[g]; i++) {
+                    double v = h[i] + (p->T ? p->T[(size_t)b * d + ca[i]] : 0);
+                    if (v < mn) { mn = v; im = i; }
+                }
+                l[g] = ca[im];
             }
-            l[f] = ca[im];
+            start = f + 1;
         }
-        start = end + 1;
     }
     free(cand); free(nc); free(hs); free(V); free(Vn); free(pool_buf);
     return total;
