@@ -550,11 +550,13 @@ struct work {
     double *U, *T, *H, *c;      /* chain terms */
     struct chain ch;
     int ncand;                  /* > 0: label steps restricted to this many candidates per frame (search trials) */
+    double *Pb, *Qb;            /* P and Q of the best library of the search (restored when a trial fails) */
 };
 
 static void work_free(struct work *w)
 {
     free(w->P); free(w->Q); free(w->C); free(w->Rw); free(w->U); free(w->T); free(w->H); free(w->c);
+    free(w->Pb); free(w->Qb);
     memset(w, 0, sizeof *w);
 }
 
@@ -616,24 +618,10 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
     return 0;
 }
 
-static int compute_costs(const struct replib_data *D, const struct lstate *s, double mu, struct work *w)
+/* The chain terms (U, T, H, c) from w->P and w->Q. */
+static void derive_costs(const struct replib_data *D, double mu, struct work *w)
 {
-    int N = D->N, n = D->n, d = w->d, m3 = D->zdim;
-    if (D->K) {
-        if (gram_costs(D, s, w) < 0) return -1;
-    } else {
-        if (lstate_apply(s, D->Z, N, NULL, m3, w->Rw) < 0) return -1;
-        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, m3, 1.0, D->Z, m3, w->Rw, m3, 0.0, w->P, d);
-        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, m3, 1.0, w->Rw, m3, 0.0, w->Q, d);
-        for (int a = 0; a < d; a++)
-            for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
-    }
-    /* symmetrize Q (the Gram product is symmetric only up to rounding) */
-    for (int a = 0; a < d; a++)
-        for (int b = 0; b < a; b++) {
-            double v = 0.5 * (w->Q[(size_t)a * d + b] + w->Q[(size_t)b * d + a]);
-            w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a] = v;
-        }
+    int n = D->n, d = w->d;
     const double *P = w->P, *Q = w->Q;
     for (int f = 0; f < n; f++)
         for (int a = 0; a < d; a++)
@@ -654,6 +642,50 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
         w->ch.T = w->T; w->ch.H = w->H; w->ch.c = w->c;
     } else {
         w->ch.T = NULL; w->ch.H = NULL; w->ch.c = NULL;
+    }
+}
+
+static int compute_costs(const struct replib_data *D, const struct lstate *s, double mu, struct work *w)
+{
+    int N = D->N, n = D->n, d = w->d, m3 = D->zdim;
+    if (D->K) {
+        if (gram_costs(D, s, w) < 0) return -1;
+        /* symmetrize Q (the Gram product is symmetric only up to rounding) */
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < a; b++) {
+                double v = 0.5 * (w->Q[(size_t)a * d + b] + w->Q[(size_t)b * d + a]);
+                w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a] = v;
+            }
+    } else {
+        /* Q from DSYRK's upper triangle, mirrored: exactly symmetric */
+        if (lstate_apply(s, D->Z, N, NULL, m3, w->Rw) < 0) return -1;
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, m3, 1.0, D->Z, m3, w->Rw, m3, 0.0, w->P, d);
+        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, m3, 1.0, w->Rw, m3, 0.0, w->Q, d);
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+    }
+    derive_costs(D, mu, w);
+    return 0;
+}
+
+/* Keep (save = 1) or restore (save = 0) the costs in w as those of the
+ * search's best library: a failed trial goes back to them without
+ * recomputing the products (same numbers as recomputing them). */
+static int best_costs(const struct replib_data *D, double mu, struct work *w, int save)
+{
+    size_t np = (size_t)D->N * w->d, nq = (size_t)w->d * w->d;
+    if (!w->Pb) {
+        w->Pb = malloc(sizeof(double) * np);
+        w->Qb = malloc(sizeof(double) * nq);
+        if (!w->Pb || !w->Qb) return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, w->d);
+    }
+    if (save) {
+        memcpy(w->Pb, w->P, sizeof(double) * np);
+        memcpy(w->Qb, w->Q, sizeof(double) * nq);
+    } else {
+        memcpy(w->P, w->Pb, sizeof(double) * np);
+        memcpy(w->Q, w->Qb, sizeof(double) * nq);
+        derive_costs(D, mu, w);
     }
     return 0;
 }
@@ -1261,6 +1293,8 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
     if (!out->labels || lstate_copy(&out->s, s) < 0) { out->rc = -1; return; }
     memcpy(out->labels, l, sizeof(int) * n);
     out->E = E;
+    /* w holds the costs of s = out->s (descend ends on them) */
+    if (o->search > 0 && best_costs(D, mu, w, 1) < 0) { out->rc = -1; return; }
     /* trials at lambda > 0 with the DP: label steps on a few candidates
      * per frame, then one exact descent from the best */
     w->ncand = o->method == REPLIB_DP && mu > 0 && o->search > 0 ? REPLIB_TRIAL_CANDIDATES : 0;
@@ -1274,11 +1308,11 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
         if (En < out->E - 1e-12 * fabs(out->E)) {
             out->E = En;
             memcpy(out->labels, l, sizeof(int) * n);
-            if (lstate_copy(&out->s, s) < 0) { out->rc = -1; return; }
+            if (lstate_copy(&out->s, s) < 0 || best_costs(D, mu, w, 1) < 0) { out->rc = -1; return; }
             out->accepted++;
         } else {
             memcpy(l, out->labels, sizeof(int) * n);
-            if (lstate_copy(s, &out->s) < 0 || compute_costs(D, s, mu, w) < 0) { out->rc = -1; return; }
+            if (lstate_copy(s, &out->s) < 0 || best_costs(D, mu, w, 0) < 0) { out->rc = -1; return; }
         }
     }
     if (w->ncand > 0) {
@@ -1289,10 +1323,10 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
         if (En < out->E) {
             out->E = En;
             memcpy(out->labels, l, sizeof(int) * n);
-            if (lstate_copy(&out->s, s) < 0) { out->rc = -1; return; }
+            if (lstate_copy(&out->s, s) < 0 || best_costs(D, mu, w, 1) < 0) { out->rc = -1; return; }
         }
     }
-    if (o->search > 0 && compute_costs(D, &out->s, mu, w) < 0) { out->rc = -1; return; }
+    if (o->search > 0 && best_costs(D, mu, w, 0) < 0) { out->rc = -1; return; }
     chain_energy(&w->ch, out->labels, &out->data, &out->velocity);
 }
 
