@@ -550,13 +550,14 @@ struct work {
     double *U, *T, *H, *c;      /* chain terms */
     struct chain ch;
     int ncand;                  /* > 0: label steps restricted to this many candidates per frame (search trials) */
+    double *qd;                 /* d: the diagonal of Q */
     double *Pb, *Qb;            /* P and Q of the best library of the search (restored when a trial fails) */
 };
 
 static void work_free(struct work *w)
 {
     free(w->P); free(w->Q); free(w->C); free(w->Rw); free(w->U); free(w->T); free(w->H); free(w->c);
-    free(w->Pb); free(w->Qb);
+    free(w->Pb); free(w->Qb); free(w->qd);
     memset(w, 0, sizeof *w);
 }
 
@@ -571,9 +572,10 @@ static int work_init(struct work *w, const struct replib_data *D, int d)
     w->T = malloc(sizeof(double) * (size_t)d * d);
     w->H = calloc(n * d, sizeof(double));
     w->c = calloc(n, sizeof(double));
+    w->qd = malloc(sizeof(double) * d);
     if (D->K) w->C = malloc(sizeof(double) * (size_t)d * N);
     else w->Rw = malloc(sizeof(double) * (size_t)d * D->zdim);
-    if (!w->P || !w->Q || !w->U || !w->T || !w->H || !w->c || !(D->K ? (void *)w->C : (void *)w->Rw)) {
+    if (!w->P || !w->Q || !w->qd || !w->U || !w->T || !w->H || !w->c || !(D->K ? (void *)w->C : (void *)w->Rw)) {
         work_free(w);
         return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, d);
     }
@@ -623,15 +625,24 @@ static void derive_costs(const struct replib_data *D, double mu, struct work *w)
 {
     int n = D->n, d = w->d;
     const double *P = w->P, *Q = w->Q;
-    for (int f = 0; f < n; f++)
-        for (int a = 0; a < d; a++)
-            w->U[(size_t)f * d + a] = D->zz[f] + Q[(size_t)a * d + a] - 2 * P[(size_t)f * d + a];
+    double *qd = w->qd;
+    for (int a = 0; a < d; a++) qd[a] = Q[(size_t)a * d + a];
+    for (int f = 0; f < n; f++) {
+        const double *p = P + (size_t)f * d;
+        double *u = w->U + (size_t)f * d, zf = D->zz[f];
+        for (int a = 0; a < d; a++) u[a] = zf + qd[a] - 2 * p[a];
+    }
     w->ch.n = n; w->ch.d = d; w->ch.U = w->U; w->ch.link = D->link; w->ch.swap = D->swap_cost;
     if (mu > 0) {
-        for (int a = 0; a < d; a++)
-            for (int b = 0; b < d; b++)
-                w->T[(size_t)a * d + b] = a == b ? 0 :
-                    fmax(0, mu * (Q[(size_t)a * d + a] + Q[(size_t)b * d + b] - 2 * Q[(size_t)a * d + b]));
+        for (int a = 0; a < d; a++) {
+            const double *q = Q + (size_t)a * d;
+            double *t = w->T + (size_t)a * d, qa = qd[a];
+            for (int b = 0; b < d; b++) {
+                double v = mu * (qa + qd[b] - 2 * q[b]);
+                t[b] = v > 0 ? v : 0;
+            }
+            t[a] = 0;
+        }
         for (int f = 0; f + 1 < n; f++) {
             double *h = w->H + (size_t)f * d;
             if (!D->link[f]) { memset(h, 0, sizeof(double) * d); w->c[f] = 0; continue; }
