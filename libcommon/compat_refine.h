@@ -31,6 +31,14 @@
  *              smallest angle of the vertex's star grows.  A shape's
  *              positions never depend on another shape's, so each shape is
  *              smoothed on its own.
+ *   polish     (pa->mips > 0) shape by shape, every movable vertex of a
+ *              triangle below the goal (and its neighbours) does a pattern
+ *              search (eight directions, halving steps; along its segment
+ *              for an outline split vertex) on the smallest angle of its
+ *              star, each step kept only if the star stays positive
+ *              (exact).  MIPS and the candidates above optimise proxies;
+ *              without this, triangles a little under the goal were split
+ *              again and again instead of moved.
  *   splits     each triangle below the goal, worst first, has its longest
  *              edge (in the shape where the triangle is worst) bisected in
  *              all N shapes (Rivara); the split is kept only if the new
@@ -67,9 +75,13 @@ struct compat_refine_params {
                           size bound) */
     int max_nv;        /* stop splitting once the mesh has this many vertices */
     int rounds;        /* at most this many rounds (flips + smoothing + splits) */
-    int mips;          /* sweeps of MIPS smoothing per round before the
-                          smallest-angle smoothing (0: none, the paper's
-                          smoothing only; e.g. 20) */
+    int mips;          /* at most this many sweeps of MIPS smoothing per
+                          round before the smallest-angle smoothing (they
+                          stop when no vertex moves; 0: none, the paper's
+                          smoothing only, and no max-min polish; e.g. 200:
+                          with 20 a heavily distorted start was split
+                          before the smoothing had settled, and the splits
+                          ran into max_nv) */
 };
 
 /* Refine c in place.

@@ -60,14 +60,16 @@ static const char help[] =
 "                        (-l and -s: --refine none, and holes/pieces)\n"
 "      --refine MODE     'refine' (default: compatible refinement, Surazhsky-\n"
 "                        Gotsman: edge splits in all poses, compatible flips,\n"
-"                        per-pose MIPS and smallest-angle smoothing, until\n"
+"                        per-pose MIPS and smallest-angle smoothing, a\n"
+"                        max-min polish of the worst angles, until\n"
 "                        every angle of every pose reaches --min-angle or\n"
 "                        --max-vertices is reached; one outer ring only),\n"
 "                        'sg' (the same without the MIPS smoothing: the\n"
 "                        paper's local smoothing only) or 'none' (-l and -s)\n"
 "  -a, --min-angle DEG   goal of --refine (default 20)\n"
-"      --max-vertices K  --refine stops splitting at K vertices (default 10\n"
-"                        times the simplified outline's vertex count)\n"
+"      --max-vertices K  --refine stops splitting at K vertices (default: the\n"
+"                        triangulation's vertices plus 10 times the simplified\n"
+"                        outline's vertex count)\n"
 "      --split MODE      pieces that no common diagonal or single Steiner point\n"
 "                        splits: 'overlay' (default: overlay of the shapes'\n"
 "                        triangulations, always succeeds) or 'linkpath' (the\n"
@@ -412,8 +414,8 @@ int main(int argc, char **argv)
     if (!o.refine) {
         if (compat_improve(&cp, target, o.smooth) < 0) die("%s", cm_errmsg());
     } else {
-        struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : 10 * cp.nb, 200,
-                                          o.refine == 2 ? 0 : 20};
+        struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : cp.nv + 10 * cp.nb, 200,
+                                          o.refine == 2 ? 0 : 200};
         struct compat_refine_stats rs;
         if (compat_refine(&cp, &pa, &rs) < 0) die("%s", cm_errmsg());
         info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d flips, %d moves; "
