@@ -19,6 +19,8 @@ void landmark_auto_defaults(struct landmark_auto_params *p)
     p->limb_t[0] = 0.35;
     p->nlimb = 1;
     p->core = 0;
+    p->second_ratio = 1.5;
+    p->disc_weight = 1;
 }
 
 /* ---- a binary heap of (key, vertex) for the bounded Dijkstra */
@@ -219,6 +221,41 @@ static double orientation(const double *VA, const int *EA, const double *cA, con
     return den > 0 ? num / den : 0;
 }
 
+#define NDISC 3
+static const double disc_r[NDISC] = {0.05, 0.1, 0.2};
+
+/* A[i][k]: the area within geodesic distance disc_r[k] s of extremity i
+ * (D: n distance fields over nv vertices), over the whole area: each face
+ * counts with the fraction of its corners inside */
+static void disc_areas(const double *V, const int *F, int nv, int nf, const double *D, int n,
+                       double s, double A[][NDISC])
+{
+    double tot = 0;
+    for (int i = 0; i < n; i++) for (int k = 0; k < NDISC; k++) A[i][k] = 0;
+    for (int f = 0; f < nf; f++) {
+        double e1[3], e2[3], c[3];
+        const int *t = F + 3 * f;
+        sub3(V + 3 * t[1], V + 3 * t[0], e1); sub3(V + 3 * t[2], V + 3 * t[0], e2); cross3(e1, e2, c);
+        double a = 0.5 * norm3(c);
+        tot += a;
+        for (int i = 0; i < n; i++)
+            for (int k = 0; k < NDISC; k++) {
+                int in = 0;
+                for (int q = 0; q < 3; q++) in += D[(size_t)i * nv + t[q]] < disc_r[k] * s;
+                A[i][k] += a * in / 3;
+            }
+    }
+    if (tot > 0) for (int i = 0; i < n; i++) for (int k = 0; k < NDISC; k++) A[i][k] /= tot;
+}
+
+/* how unlike two extremities' disc areas are: sum over the radii of |log(a / b)| */
+static double disc_cost(const double *a, const double *b)
+{
+    double c = 0;
+    for (int k = 0; k < NDISC; k++) c += fabs(log((a[k] + 1e-9) / (b[k] + 1e-9)));
+    return c;
+}
+
 void landmark_pairs_free(struct landmark_pairs *L)
 {
     free(L->a); free(L->b); free(L->kind);
@@ -254,6 +291,12 @@ int landmark_auto(const double *VA, const int *FA, int nva, int nfa,
         if (geodesic_solve(gA, EA + i, 1, DA + (size_t)i * nva) < 0) goto done;
     for (int i = 0; i < nb; i++)
         if (geodesic_solve(gB, EB + i, 1, DB + (size_t)i * nvb) < 0) goto done;
+    /* disc areas: the area within geodesic distance disc_r[k] sqrt(area)
+     * of each extremity, over the total area (a thin leg's tip gathers
+     * little, a head or a hump much) */
+    double aA[32][NDISC], aB[32][NDISC];
+    disc_areas(VA, FA, nva, nfa, DA, na, sA, aA);
+    disc_areas(VB, FB, nvb, nfb, DB, nb, sB, aB);
     /* symmetric, scale-free extremity distances */
     double dA[32][32], dB[32][32];
     for (int i = 0; i < na; i++)
@@ -280,6 +323,7 @@ int landmark_auto(const double *VA, const int *FA, int nva, int nfa,
                 x.m[i] = c;
                 if (c >= 0) {
                     x.used |= 1u << c;
+                    x.score -= p->disc_weight * tau * disc_cost(aA[i], aB[c]);
                     for (int j = 0; j < i; j++)
                         if (x.m[j] >= 0) {
                             double e = fabs(dA[i][j] - dB[c][x.m[j]]);
@@ -332,6 +376,52 @@ int landmark_auto(const double *VA, const int *FA, int nva, int nfa,
         if (wv <= 0.5 * tau) break;
         m[worst] = -1;
     }
+    /* second chance for the extremities left over: a limb stretched far
+     * in one pose is not isometric to the other (its tip's distances off
+     * by up to tau), so the search and the pruning above drop it, and the
+     * registration never reaches that limb.  Pair a leftover of A with a
+     * leftover of B when each is the other's clear best (mean mismatch to
+     * the matched extremities below tau, the runner-up at least
+     * p->second_ratio times worse in both directions, no single distance
+     * off by more than 2 tau). */
+    if (p->second_ratio > 0)
+        for (int added = 1; added;) {
+            added = 0;
+            int cnt = 0;
+            unsigned usedb = 0;
+            for (int i = 0; i < na; i++)
+                if (m[i] >= 0) { cnt++; usedb |= 1u << m[i]; }
+            if (cnt < 3) break;
+            double err[32][32];
+            for (int i = 0; i < na; i++)
+                for (int c = 0; c < nb; c++) {
+                    err[i][c] = INFINITY;
+                    if (m[i] >= 0 || (usedb >> c & 1)) continue;
+                    double e = 0, emax = 0;
+                    for (int j = 0; j < na; j++)
+                        if (m[j] >= 0) {
+                            double x = fabs(dA[i][j] - dB[c][m[j]]);
+                            e += x;
+                            if (x > emax) emax = x;
+                        }
+                    if (emax > 2 * tau) continue;   /* one distance far off: another limb */
+                    err[i][c] = e / cnt + p->disc_weight * tau * disc_cost(aA[i], aB[c]) / cnt;
+                }
+            double bestv = INFINITY;
+            int bi = -1, bc = -1;
+            for (int i = 0; i < na; i++)
+                for (int c = 0; c < nb; c++) {
+                    double e = err[i][c];
+                    if (!(e < tau) || e >= bestv) continue;
+                    int clear = 1;
+                    for (int x = 0; x < nb && clear; x++)
+                        if (x != c && err[i][x] < p->second_ratio * e) clear = 0;
+                    for (int x = 0; x < na && clear; x++)
+                        if (x != i && err[x][c] < p->second_ratio * e) clear = 0;
+                    if (clear) { bestv = e; bi = i; bc = c; }
+                }
+            if (bi >= 0) { m[bi] = bc; added = 1; out->second++; }
+        }
     int k = 0;
     double cost = 0; int npairs = 0;
     for (int i = 0; i < na; i++) {

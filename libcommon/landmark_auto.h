@@ -8,13 +8,20 @@
  *    Geodesics: the heat method (geodesic.h).
  * 2. Matching: an injective partial map from A's extremities to B's that
  *    keeps the geodesic distances between matched extremities (isometry),
- *    found by beam search; every unmatched extremity costs a penalty.
+ *    found by beam search; every unmatched extremity costs a penalty, and
+ *    every matched pair the difference of the areas of their geodesic
+ *    discs (disc_weight): a foot and a snout can lie at the same distances
+ *    from the other tips, but a disc on a thin leg gathers half the area.
  * 3. Left and right: a bilateral character's intrinsic distances cannot
  *    tell its left legs from its right ones (the mirrored map costs the
  *    same).  Among the maps within a small margin of the best cost, the one
  *    whose matched extremities keep their orientation wins: the signs of
  *    the triple products (x_i - c) . ((x_j - c) x (x_k - c)) over all
  *    triples, c the area centroid, weighted by the smaller volume.
+ *    Pairs that disagree with the rest on average are dropped; then the
+ *    leftovers get a second chance (second_ratio): a limb stretched far in
+ *    one pose is not isometric to the other, but its tip is still the
+ *    clear best partner of the other pose's leftover tip.
  * 4. More landmarks on the limbs: for each matched extremity, on the ring
  *    at geodesic distance t x (its distance to the nearest other matched
  *    extremity) the vertex with the smallest sum of distances to the other
@@ -37,6 +44,16 @@ struct landmark_auto_params {
     double limb_t[4];   /* fractions t for limb landmarks (see 4.) */
     int nlimb;          /* how many of limb_t (default 1: 0.35) */
     int core;           /* 1: also pair the cores (default 0) */
+    double disc_weight; /* a matched pair costs disc_weight x penalty x sum over radii
+                           r = 0.05, 0.1, 0.2 sqrt(area) of |log(a_A(r) / a_B(r))|, a(r)
+                           the area within geodesic distance r of the extremity over the
+                           whole area: a hoof is not a snout (default 1; 0: off) */
+    double second_ratio;/* leftover extremities (a limb stretched far in one pose, not
+                           isometric to the other): pair a leftover of A with one of B
+                           whose mean mismatch to the matched ones is below penalty and
+                           at least this many times smaller than any rival's, both ways,
+                           none of the distances off by more than 2 penalty
+                           (default 1.5; 0: off) */
 };
 void landmark_auto_defaults(struct landmark_auto_params *p);
 
@@ -53,6 +70,7 @@ struct landmark_pairs {
     int *kind;          /* n: 0 extremity, 1 limb point, 2 core */
     int na, nb;         /* extremities found on A and B */
     int matched;        /* extremity pairs */
+    int second;         /* of them paired in the second chance (second_ratio) */
     double cost;        /* mean |dA - dB| over matched extremity pairs, over sqrt(area of A) */
     double orient;      /* orientation agreement of the chosen map, -1..1 */
     double orient_mirror;/* that of the best mirrored competitor (-2: none) */

@@ -5,6 +5,7 @@
 #include "correspond.h"
 #include "cm_error.h"
 #include "geometry.h"
+#include "polar.h"
 #include "spd.h"
 #include "topology.h"
 #include <stdio.h>
@@ -29,6 +30,55 @@ void nricp_defaults(struct nricp_params *p)
     p->search = 0.01;
     p->fit_weight = 30;
     p->nearest_vertex = 0;
+    p->rigid = 10;
+    p->rigid_iters = 4;
+}
+
+/* the rotation of every one-ring, rest R -> pose P (ARAP's local step) */
+static void ring_rotations(const struct topology *t, const double *R, const double *P, int n,
+                           double *Q)
+{
+    for (int i = 0; i < n; i++) {
+        double M[9] = {0}, Sm[9];
+        for (int q = t->VVs[i]; q < t->VVs[i + 1]; q++) {
+            int j = t->VV[q];
+            double e[3], e2[3];
+            sub3(R + 3 * i, R + 3 * j, e);
+            sub3(P + 3 * i, P + 3 * j, e2);
+            for (int r = 0; r < 3; r++)
+                for (int c = 0; c < 3; c++) M[3 * r + c] += e2[r] * e[c];
+        }
+        if (t->VVs[i + 1] == t->VVs[i]) {
+            memset(Q + 9 * i, 0, 9 * sizeof *Q);
+            Q[9 * i] = Q[9 * i + 4] = Q[9 * i + 8] = 1;
+        } else
+            polar3(M, Q + 9 * i, Sm);
+    }
+}
+
+/* right-hand side of the ARAP edge rows: w ([v_i 1] X_i - [v_j 1] X_j)
+ * = w (Q_i + Q_j)/2 (r_i - r_j), added to B (4n by 3) */
+static void rigid_rhs(const struct topology *t, const double *V, const double *R, const double *Q,
+                      double w, double *B)
+{
+    for (int e = 0; e < t->ne; e++) {
+        int i = t->E[2 * e], j = t->E[2 * e + 1];
+        double r[3], g[3];
+        sub3(R + 3 * i, R + 3 * j, r);
+        for (int d = 0; d < 3; d++) {
+            g[d] = 0;
+            for (int c = 0; c < 3; c++) g[d] += 0.5 * (Q[9 * i + 3 * d + c] + Q[9 * j + 3 * d + c]) * r[c];
+        }
+        const double *vi = V + 3 * i, *vj = V + 3 * j;
+        for (int d = 0; d < 3; d++) {
+            for (int c = 0; c < 3; c++) {
+                B[(size_t)(4 * i + c) * 3 + d] += w * vi[c] * g[d];
+                B[(size_t)(4 * j + c) * 3 + d] -= w * vj[c] * g[d];
+            }
+            B[(size_t)(4 * i + 3) * 3 + d] += w * g[d];
+            B[(size_t)(4 * j + 3) * 3 + d] -= w * g[d];
+        }
+    }
 }
 
 /* The normal matrix lives in a fixed pattern: a full 4x4 block for every
@@ -185,6 +235,9 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
     double *TB = malloc(((size_t)nvt * 3 + 1) * sizeof *TB), *TC = malloc(((size_t)nvt * 3 + 1) * sizeof *TC);
     int *TF = malloc(((size_t)nvt + 1) * sizeof *TF);
     unsigned char *uok = malloc((size_t)nvs + 1), *tok = malloc((size_t)nvt + 1);
+    double *Q = p->rigid > 0 ? malloc(((size_t)nvs * 9 + 1) * sizeof *Q) : NULL;
+    double *B0 = p->rigid > 0 ? malloc(((size_t)nvs * 12 + 1) * sizeof *B0) : NULL;
+    const double *Rr = RS ? RS : VS;   /* rest shape of the ARAP term */
     if (topology_build(FS, nfs, nvs, &ts) < 0 || topology_build(FT, nft, nvt, &tt) < 0) goto done;
     if (system_new(&S, &ts, nvs) < 0) goto done;
     TT = closest_point_tree_new(VT, nvt, FT, nft);
@@ -255,6 +308,17 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
                     if (r < 3) B[(size_t)(4 * i + r) * 3 + r] += wreg;
                 }
             }
+            /* as rigid as possible: edge rows ([v_i 1] X_i - [v_j 1] X_j)
+             * toward the rest edge turned by the rings' rotations */
+            double wr = p->rigid * alpha / p->alpha_max;
+            if (Q && wr > 0) {
+                double bk[2] = {1, -1}, zero[3] = {0, 0, 0};
+                for (int e = 0; e < ts.ne; e++)
+                    add_row(&S, B, ts.E + 2 * e, bk, 2, VS, wr, zero);
+                memcpy(B0, B, (size_t)nvs * 12 * sizeof *B);
+                ring_rotations(&ts, Rr, P, nvs, Q);
+                rigid_rhs(&ts, VS, Rr, Q, wr, B);
+            }
             first = 0;
             /* same pattern every time: analysis once, numeric refactor after */
             if (!L) L = spd_factor(S.A);
@@ -265,16 +329,24 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
                 cm_seterr("stiffness step %d (alpha %g): %s", k + 1, alpha, m);
                 goto done;
             }
-            if (spd_solve(L, B, X, 3) < 0) goto done;
             memcpy(Pold, P, (size_t)nvs * 3 * sizeof *P);
-            double ch = 0;
-            for (int i = 0; i < nvs; i++) {
-                const double *v = VS + 3 * i, *x = X + 12 * i;
-                for (int d = 0; d < 3; d++) {
-                    P[3 * i + d] = v[0] * x[d] + v[1] * x[3 + d] + v[2] * x[6 + d] + x[9 + d];
-                    ch += (P[3 * i + d] - Pold[3 * i + d]) * (P[3 * i + d] - Pold[3 * i + d]);
+            int nr = Q && wr > 0 ? (p->rigid_iters > 0 ? p->rigid_iters : 1) : 1;
+            for (int it = 0; it < nr; it++) {
+                if (it > 0) {
+                    /* ARAP local step on the new pose, the same factorization */
+                    ring_rotations(&ts, Rr, P, nvs, Q);
+                    memcpy(B, B0, (size_t)nvs * 12 * sizeof *B);
+                    rigid_rhs(&ts, VS, Rr, Q, wr, B);
+                }
+                if (spd_solve(L, B, X, 3) < 0) goto done;
+                for (int i = 0; i < nvs; i++) {
+                    const double *v = VS + 3 * i, *x = X + 12 * i;
+                    for (int d = 0; d < 3; d++)
+                        P[3 * i + d] = v[0] * x[d] + v[1] * x[3 + d] + v[2] * x[6 + d] + x[9 + d];
                 }
             }
+            double ch = 0;
+            for (int i = 0; i < 3 * nvs; i++) ch += (P[i] - Pold[i]) * (P[i] - Pold[i]);
             if (sqrt(ch / nvs) < p->eps) { inner++; break; }
         }
         if (cb) {
@@ -310,7 +382,7 @@ done:
     topology_free(&tt);
     free(VS); free(RS); free(VT); free(LD); free(X); free(B); free(P); free(Pold); free(NS); free(NT);
     free(U); free(UB); free(UF); free(TB); free(TC); free(TF);
-    free(uok); free(tok);
+    free(uok); free(tok); free(Q); free(B0);
     return rc;
 }
 

@@ -15,8 +15,15 @@
  *   2. solve the normal equations of
  *      E(X) = alpha^2 sum_edges |G (X_i - X_j)|^2 + sum_i w_i^2 |[v_i 1] X_i - u_i|^2
  *           + beta^2 sum_landmarks |[v_l 1] X_l - l|^2 + backward terms,
- *      G = diag(1, 1, 1, gamma), one sparse SPD system of size 4 #V with
- *      three right-hand sides, refactored (CHOLMOD, analysis kept) each time.
+ *           + kappa sum_edges |(p_i - p_j) - (Q_i + Q_j)/2 (r_i - r_j)|^2,
+ *      G = diag(1, 1, 1, gamma), p_i = [v_i 1] X_i, r the rest shape and
+ *      Q_i the rotation closest to the one-ring's map r -> p (polar.h):
+ *      an as-rigid-as-possible term (Sorkine & Alexa 2007) beside the
+ *      affine one, kappa = rigid alpha / alpha_max, so the stages cannot
+ *      mirror a triangle where the affine maps alone would fold it;
+ *      one sparse SPD system of size 4 #V with three right-hand sides,
+ *      refactored (CHOLMOD, analysis kept) each time; the rotations and the
+ *      solve alternate rigid_iters times on one factorization.
  * The landmark weight beta fades linearly from beta to 0 over the schedule.
  * At low stiffness the per-vertex affine maps may mirror a few triangles
  * where vertices crowd into a crease or onto a tip.  So finally (fit > 0)
@@ -55,6 +62,11 @@ struct nricp_params {
                               0: pure Amberg) */
     double fit_weight;     /* its final data weight, mu_max of arap_fit (default 30) */
     int fit_smooth;        /* smoothing sweeps of its rest shape (arap_fit rest_smooth; default 1) */
+    double rigid;          /* weight of the as-rigid-as-possible term inside the stiffness
+                              steps: rigid x alpha / alpha_max per edge against a data weight
+                              of 1 per vertex (default 10; 0: Amberg's affine term alone) */
+    int rigid_iters;       /* local/global iterations of that term per correspondence
+                              update (rotations refitted, same factorization; default 4) */
 };
 
 void nricp_defaults(struct nricp_params *p);

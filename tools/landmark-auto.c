@@ -27,6 +27,10 @@ static const char help[] =
 "      --max N           at most N extremities per mesh (default 12, <= 32)\n"
 "      --limb T,...      limb points at T times the distance from the tip to the\n"
 "                        nearest other tip (default 0.35; 'none'; at most 4)\n"
+"      --disc-weight W   cost of unlike geodesic disc areas around a matched pair\n"
+"                        (a hoof is not a snout; default 1, 0 off)\n"
+"      --second R        leftover tips (a limb stretched far in one pose) pair when\n"
+"                        each is the other's best by a factor R (default 1.5, 0 off)\n"
 "      --core            also pair the cores (least sum of distances to the tips)\n"
 "      --extremities     only list SOURCE's extremities (one vertex per row)\n"
 "  -o, --output FILE     write to FILE (atomically) instead of stdout\n"
@@ -36,7 +40,7 @@ static const char help[] =
 "\n"
 "Example: landmark-auto a.mesh b.mesh > marks.txt && nricp -l marks.txt a.mesh b.mesh\n";
 
-enum { O_RADIUS = 256, O_PENALTY, O_MAX, O_LIMB, O_NOCORE, O_EXT, O_VERSION };
+enum { O_RADIUS = 256, O_PENALTY, O_MAX, O_LIMB, O_NOCORE, O_EXT, O_VERSION, O_DISC, O_SECOND };
 
 int main(int argc, char **argv)
 {
@@ -45,6 +49,7 @@ int main(int argc, char **argv)
         {"radius", 1, 0, O_RADIUS}, {"penalty", 1, 0, O_PENALTY}, {"max", 1, 0, O_MAX},
         {"limb", 1, 0, O_LIMB}, {"core", 0, 0, O_NOCORE}, {"extremities", 0, 0, O_EXT},
         {"output", 1, 0, 'o'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
+        {"disc-weight", 1, 0, O_DISC}, {"second", 1, 0, O_SECOND},
         {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
     struct landmark_auto_params p;
     landmark_auto_defaults(&p);
@@ -71,6 +76,8 @@ int main(int argc, char **argv)
             }
             break;
         case O_NOCORE: p.core = 1; break;
+        case O_DISC: p.disc_weight = arg_double(optarg, "--disc-weight"); break;
+        case O_SECOND: p.second_ratio = arg_double(optarg, "--second"); break;
         case O_EXT: only_ext = 1; break;
         case 'o': output = optarg; break;
         case 'v': verbose++; break;
@@ -81,6 +88,9 @@ int main(int argc, char **argv)
     }
     if (!(p.radius > 0 && p.radius < 1)) usage_error("--radius must be in (0, 1)");
     if (!(p.penalty > 0)) usage_error("--penalty must be > 0");
+    if (!(p.disc_weight >= 0 && p.disc_weight <= 100)) usage_error("--disc-weight must be in [0, 100]");
+    if (!(p.second_ratio == 0 || (p.second_ratio >= 1 && p.second_ratio <= 100)))
+        usage_error("--second must be 0 or in [1, 100]");
     if (p.max_extremities < 3 || p.max_extremities > 32) usage_error("--max must be in 3..32");
     if (argc - optind != (only_ext ? 1 : 2))
         usage_error(only_ext ? "expected one mesh with --extremities" : "expected SOURCE and TARGET");
@@ -105,9 +115,9 @@ int main(int argc, char **argv)
     struct landmark_pairs L;
     if (landmark_auto(A.V, A.F, A.nv, A.nf, B.V, B.F, B.nv, B.nf, &p, &L) < 0)
         die("%s and %s: %s", argv[optind], argv[optind + 1], cm_errmsg());
-    info(1, "extremities: %d on %s, %d on %s; %d matched, distance mismatch %.3g sqrt(area), "
+    info(1, "extremities: %d on %s, %d on %s; %d matched (%d by the second chance), distance mismatch %.3g sqrt(area), "
          "orientation %.2f (mirrored competitor %.2f)", L.na, argv[optind], L.nb, argv[optind + 1],
-         L.matched, L.cost, L.orient, L.orient_mirror);
+         L.matched, L.second, L.cost, L.orient, L.orient_mirror);
     FILE *f = out_open(output);
     static const char *kinds[] = {"extremity", "limb", "core"};
     fprintf(f, "# landmark-auto %s -> %s: %d extremities matched of %d and %d, "

@@ -51,7 +51,7 @@ static const char help[] =
 "                        10 flipped faces also none and shell, the best kept\n"
 "      --paper           the thesis' method: thin-shell clay start, Amberg's NRICP\n"
 "                        (closest points, 10 iterations per stiffness), no backward\n"
-"                        term, no search, no ARAP fit\n"
+"                        term, no search, no ARAP term or fit\n"
 "      --no-auto         without -l: no landmarks at all (small motions only)\n"
 "      --landmarks-out F write the landmarks used (automatic ones too) to F\n"
 "      --align KIND      rigid | similarity | none: Procrustes on the landmarks\n"
@@ -67,6 +67,10 @@ static const char help[] =
 "                        agreeing point up to D diagonals farther (default 0.01, 0 off)\n"
 "      --backward W      weight of target->source correspondences (default 1, 0 off)\n"
 "      --max-inner N     iterations per stiffness (default 1)\n"
+"      --rigid W         as-rigid-as-possible term inside the stiffness steps, weight\n"
+"                        W x alpha / alpha-max per edge: the steps cannot mirror\n"
+"                        triangles (default 10; 0: Amberg's affine term alone)\n"
+"      --rigid-iters N   its rotation updates per step (default 4)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -124,13 +128,15 @@ static void parse_args(int argc, char **argv, struct options *o)
 {
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
-           O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER };
+           O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
+           O_RIGIDN };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
-        {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER},
+        {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
+        {"rigid-iters", 1, 0, O_RIGIDN},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
@@ -165,6 +171,8 @@ static void parse_args(int argc, char **argv, struct options *o)
             else usage_error("--start must be auto, landmarks, shell or none");
             break;
         case O_PAPER: o->paper = 1; break;
+        case O_RIGID: o->p.rigid = arg_double(optarg, "--rigid"); break;
+        case O_RIGIDN: o->p.rigid_iters = arg_int(optarg, "--rigid-iters"); break;
         case O_REST: o->rest = optarg; break;
         case O_CREST:
             if (!strcmp(optarg, "previous")) o->chain_prev = 1;
@@ -225,6 +233,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         if (o->start_given && o->start != START_SHELL && o->start != START_NONE)
             usage_error("--paper starts with the thin shell (--start shell or none)");
         o->p.fit = 0;
+        o->p.rigid = 0;
         o->p.backward = 0;
         o->p.search = 0;
         o->p.max_inner = 10;
@@ -236,6 +245,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->landmarks || o->no_init || o->init_deform) o->start = START_LANDMARKS;
     if (!o->landmarks && !o->no_auto && !o->no_init && o->start != START_NONE) o->init_deform = 1;
     if (o->p.fit < 0 || o->p.fit > 1000) usage_error("--fit must be in 0..1000");
+    if (!(o->p.rigid >= 0 && o->p.rigid <= 1e6)) usage_error("--rigid must be in [0, 1e6]");
+    if (o->p.rigid_iters < 1 || o->p.rigid_iters > 100) usage_error("--rigid-iters must be in 1..100");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
     if (!(o->p.fit_weight > 0) || o->p.fit_weight > 1e6)
