@@ -383,7 +383,8 @@ int landmark_auto(const double *VA, const int *FA, int nva, int nfa,
      * leftover of B when each is the other's clear best (mean mismatch to
      * the matched extremities below tau, the runner-up at least
      * p->second_ratio times worse in both directions, no single distance
-     * off by more than 2 tau). */
+     * off by more than 2 tau, both tips on average at least as far from the
+     * matched ones as these are from each other: a limb, not a bump). */
     if (p->second_ratio > 0)
         for (int added = 1; added;) {
             added = 0;
@@ -392,11 +393,25 @@ int landmark_auto(const double *VA, const int *FA, int nva, int nfa,
             for (int i = 0; i < na; i++)
                 if (m[i] >= 0) { cnt++; usedb |= 1u << m[i]; }
             if (cnt < 3) break;
+            /* only tips at least as far out as the matched ones on
+             * average (a stretched limb; not a bump on the body) */
+            double eccA = 0, eccB = 0, ecc[32], eccb[32];
+            for (int i = 0; i < na; i++) {
+                ecc[i] = 0;
+                for (int j = 0; j < na; j++) if (m[j] >= 0) ecc[i] += dA[i][j] / cnt;
+                if (m[i] >= 0) eccA += ecc[i] / cnt;
+            }
+            for (int c = 0; c < nb; c++) {
+                eccb[c] = 0;
+                for (int j = 0; j < na; j++) if (m[j] >= 0) eccb[c] += dB[c][m[j]] / cnt;
+            }
+            for (int j = 0; j < na; j++) if (m[j] >= 0) eccB += eccb[m[j]] / cnt;
             double err[32][32];
             for (int i = 0; i < na; i++)
                 for (int c = 0; c < nb; c++) {
                     err[i][c] = INFINITY;
                     if (m[i] >= 0 || (usedb >> c & 1)) continue;
+                    if (ecc[i] < eccA || eccb[c] < eccB) continue;
                     double e = 0, emax = 0;
                     for (int j = 0; j < na; j++)
                         if (m[j] >= 0) {

@@ -52,8 +52,9 @@ struct landmark_auto_params {
                            isometric to the other): pair a leftover of A with one of B
                            whose mean mismatch to the matched ones is below penalty and
                            at least this many times smaller than any rival's, both ways,
-                           none of the distances off by more than 2 penalty
-                           (default 1.5; 0: off) */
+                           none of the distances off by more than 2 penalty, both tips
+                           on average as far from the matched tips as these are from
+                           each other (a limb, not a bump on the body) (default 1.5; 0: off) */
 };
 void landmark_auto_defaults(struct landmark_auto_params *p);
 
