@@ -30,7 +30,7 @@ void nricp_defaults(struct nricp_params *p)
     p->search = 0.01;
     p->fit_weight = 30;
     p->nearest_vertex = 0;
-    p->rigid = 10;
+    p->rigid = 0;
     p->rigid_iters = 4;
 }
 

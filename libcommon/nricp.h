@@ -19,8 +19,9 @@
  *      G = diag(1, 1, 1, gamma), p_i = [v_i 1] X_i, r the rest shape and
  *      Q_i the rotation closest to the one-ring's map r -> p (polar.h):
  *      an as-rigid-as-possible term (Sorkine & Alexa 2007) beside the
- *      affine one, kappa = rigid alpha / alpha_max, so the stages cannot
- *      mirror a triangle where the affine maps alone would fold it;
+ *      affine one, kappa = rigid alpha / alpha_max, which keeps the local
+ *      maps of the stages near rotations (off by default: neutral on the
+ *      camel scans, see nricp(1));
  *      one sparse SPD system of size 4 #V with three right-hand sides,
  *      refactored (CHOLMOD, analysis kept) each time; the rotations and the
  *      solve alternate rigid_iters times on one factorization.
@@ -64,7 +65,8 @@ struct nricp_params {
     int fit_smooth;        /* smoothing sweeps of its rest shape (arap_fit rest_smooth; default 1) */
     double rigid;          /* weight of the as-rigid-as-possible term inside the stiffness
                               steps: rigid x alpha / alpha_max per edge against a data weight
-                              of 1 per vertex (default 10; 0: Amberg's affine term alone) */
+                              of 1 per vertex (default 0: Amberg's affine term alone; 10
+                              measured neutral on the camel, see nricp(1)) */
     int rigid_iters;       /* local/global iterations of that term per correspondence
                               update (rotations refitted, same factorization; default 4) */
 };
