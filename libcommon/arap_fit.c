@@ -11,6 +11,27 @@
 #include <stdlib.h>
 #include <string.h>
 
+void arap_ring_rotations(const struct topology *t, const double *R, const double *P, int nv,
+                         double *Q)
+{
+    for (int i = 0; i < nv; i++) {
+        double M[9] = {0}, Sm[9];
+        for (int q = t->VVs[i]; q < t->VVs[i + 1]; q++) {
+            int j = t->VV[q];
+            double e[3], e2[3];
+            sub3(R + 3 * i, R + 3 * j, e);
+            sub3(P + 3 * i, P + 3 * j, e2);
+            for (int r = 0; r < 3; r++)
+                for (int c = 0; c < 3; c++) M[3 * r + c] += e2[r] * e[c];
+        }
+        if (t->VVs[i + 1] == t->VVs[i]) {
+            memset(Q + 9 * i, 0, 9 * sizeof *Q);
+            Q[9 * i] = Q[9 * i + 4] = Q[9 * i + 8] = 1;
+        } else
+            polar3(M, Q + 9 * i, Sm);
+    }
+}
+
 void arap_fit_defaults(struct arap_fit_params *p)
 {
     p->iters = 30;
@@ -141,22 +162,7 @@ int arap_fit(const double *R0, const int *F, int nv, int nf,
                 G[3 * i + d] = Gw[i] > 0 ? G[3 * i + d] / Gw[i] : P[3 * i + d];
         for (int it = 0; it < p->inner; it++) {
             /* local step: the rotation of every one-ring, rest -> pose */
-            for (int i = 0; i < nv; i++) {
-                double M[9] = {0}, Sm[9];
-                for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++) {
-                    int j = ts.VV[q];
-                    double e[3], e2[3];
-                    sub3(R + 3 * i, R + 3 * j, e);
-                    sub3(P + 3 * i, P + 3 * j, e2);
-                    for (int r = 0; r < 3; r++)
-                        for (int c = 0; c < 3; c++) M[3 * r + c] += e2[r] * e[c];
-                }
-                if (ts.VVs[i + 1] == ts.VVs[i]) {
-                    memset(Rot + 9 * i, 0, 9 * sizeof *Rot);
-                    Rot[9 * i] = Rot[9 * i + 4] = Rot[9 * i + 8] = 1;
-                } else
-                    polar3(M, Rot + 9 * i, Sm);
-            }
+            arap_ring_rotations(&ts, R, P, nv, Rot);
             /* global step: (L + mu I) P = ARAP term + mu G */
             for (int i = 0; i < nv; i++)
                 for (int d = 0; d < 3; d++) rhs[3 * i + d] = (iso[i] ? 1 : mu) * G[3 * i + d];

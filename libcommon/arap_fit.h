@@ -65,6 +65,14 @@ struct arap_fit_params {
 
 void arap_fit_defaults(struct arap_fit_params *p);
 
+/* ARAP's local step: Q (out, #V by 9, row-major 3x3) the rotation closest
+ * (polar.h) to sum_j (p_i - p_j)(r_i - r_j)^T over the one-ring of every
+ * vertex i (t: the mesh's topology.h adjacency; the identity for an
+ * isolated vertex); R: #V by 3 rest shape, P: #V by 3 pose, nv = #V. */
+struct topology;
+void arap_ring_rotations(const struct topology *t, const double *R, const double *P, int nv,
+                         double *Q);
+
 /* Called after every correspondence update with the iteration, mu, the
  * number of rejected forward correspondences, the number of folded faces
  * (normal against the rest normal turned by the corners' rotations) and

@@ -5,7 +5,6 @@
 #include "correspond.h"
 #include "cm_error.h"
 #include "geometry.h"
-#include "polar.h"
 #include "spd.h"
 #include "topology.h"
 #include <stdio.h>
@@ -32,28 +31,6 @@ void nricp_defaults(struct nricp_params *p)
     p->nearest_vertex = 0;
     p->rigid = 0;
     p->rigid_iters = 4;
-}
-
-/* the rotation of every one-ring, rest R -> pose P (ARAP's local step) */
-static void ring_rotations(const struct topology *t, const double *R, const double *P, int n,
-                           double *Q)
-{
-    for (int i = 0; i < n; i++) {
-        double M[9] = {0}, Sm[9];
-        for (int q = t->VVs[i]; q < t->VVs[i + 1]; q++) {
-            int j = t->VV[q];
-            double e[3], e2[3];
-            sub3(R + 3 * i, R + 3 * j, e);
-            sub3(P + 3 * i, P + 3 * j, e2);
-            for (int r = 0; r < 3; r++)
-                for (int c = 0; c < 3; c++) M[3 * r + c] += e2[r] * e[c];
-        }
-        if (t->VVs[i + 1] == t->VVs[i]) {
-            memset(Q + 9 * i, 0, 9 * sizeof *Q);
-            Q[9 * i] = Q[9 * i + 4] = Q[9 * i + 8] = 1;
-        } else
-            polar3(M, Q + 9 * i, Sm);
-    }
 }
 
 /* right-hand side of the ARAP edge rows: w ([v_i 1] X_i - [v_j 1] X_j)
@@ -316,7 +293,7 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
                 for (int e = 0; e < ts.ne; e++)
                     add_row(&S, B, ts.E + 2 * e, bk, 2, VS, wr, zero);
                 memcpy(B0, B, (size_t)nvs * 12 * sizeof *B);
-                ring_rotations(&ts, Rr, P, nvs, Q);
+                arap_ring_rotations(&ts, Rr, P, nvs, Q);
                 rigid_rhs(&ts, VS, Rr, Q, wr, B);
             }
             first = 0;
@@ -334,7 +311,7 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
             for (int it = 0; it < nr; it++) {
                 if (it > 0) {
                     /* ARAP local step on the new pose, the same factorization */
-                    ring_rotations(&ts, Rr, P, nvs, Q);
+                    arap_ring_rotations(&ts, Rr, P, nvs, Q);
                     memcpy(B, B0, (size_t)nvs * 12 * sizeof *B);
                     rigid_rhs(&ts, VS, Rr, Q, wr, B);
                 }
