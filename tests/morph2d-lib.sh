@@ -32,3 +32,33 @@ min_area() {
 		s = (X[f,b]-X[f,a])*(Y[f,c]-Y[f,a]) - (Y[f,b]-Y[f,a])*(X[f,c]-X[f,a]);
 		if (s < m) m = s }; print m }' "$1"
 }
+
+# smallest angle (degrees) over every triangle of every frame of a plain
+# MESH stream, measured here (not taken from compat-tri -v)
+worst_angle() {
+	awk 'function ang(ax, ay, bx, by, cx, cy,  ux, uy, vx, vy, cr) {
+		ux = bx - ax; uy = by - ay; vx = cx - ax; vy = cy - ay; cr = ux * vy - uy * vx
+		return atan2(cr < 0 ? -cr : cr, ux * vx + uy * vy) * 57.29577951308232 }
+	BEGIN { nf = 0 }
+	$1 == "f" { A[nf] = $2; B[nf] = $3; C[nf] = $4; nf++; next }
+	$1 == "frame" { fr++; k = 0; next }
+	fr > 0 && NF == 3 { X[fr, k] = $1; Y[fr, k] = $2; k++ }
+	END { m = 180; for (f = 1; f <= fr; f++) for (t = 0; t < nf; t++) {
+		a = A[t]; b = B[t]; c = C[t]
+		q = ang(X[f,a], Y[f,a], X[f,b], Y[f,b], X[f,c], Y[f,c])
+		r = ang(X[f,b], Y[f,b], X[f,c], Y[f,c], X[f,a], Y[f,a]); if (r < q) q = r
+		r = ang(X[f,c], Y[f,c], X[f,a], Y[f,a], X[f,b], Y[f,b]); if (r < q) q = r
+		if (q < m) m = q }
+	      printf "%.4f\n", m }' "$1"
+}
+
+# creature_poses: the six poses of the made-up creature of t0511-creature.awk
+# as p0.rings .. p5.rings and its five limb tips as corr.txt (one row per
+# tip, one column per pose)
+creature_poses() {
+	for k in 0 1 2 3 4 5; do
+		awk -v pose=$k -v tips=tips$k -f "$TEST_DIRECTORY/t0511-creature.awk" >p$k.rings || return 1
+	done &&
+	cat tips0 tips1 tips2 tips3 tips4 tips5 | awk '{ for (i = 1; i <= NF; i++) r[i] = r[i] " " $i }
+		END { for (i = 1; i <= 5; i++) print substr(r[i], 2) }' >corr.txt
+}

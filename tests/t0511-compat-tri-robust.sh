@@ -1,6 +1,7 @@
 #!/bin/sh
 test_description='compat-tri: every subset of 2..6 poses, outline kept, order and orientation detected'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/morph2d-lib.sh"
 
 # check a plain MESH stream of N frames against the input rings:
 # every triangle positive in every frame (> 0, exactly as printed), and
@@ -49,11 +50,7 @@ all_subsets() {  # all_subsets CORR RING...
 }
 
 test_expect_success 'setup: six poses of a made-up character, five limb tips as correspondences' '
-	for k in 0 1 2 3 4 5; do
-		awk -v pose=$k -v tips=tips$k -f "$TEST_DIRECTORY/t0511-creature.awk" >p$k.rings || return 1
-	done &&
-	cat tips0 tips1 tips2 tips3 tips4 tips5 | awk "{ for (i = 1; i <= NF; i++) r[i] = r[i] \" \" \$i }
-		END { for (i = 1; i <= 5; i++) print substr(r[i], 2) }" >corr.txt &&
+	creature_poses &&
 	test $(wc -l <corr.txt) = 5
 '
 test_expect_success 'every subset of 2..6 poses is triangulated compatibly, correspondences exact' '

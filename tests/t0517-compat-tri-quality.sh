@@ -28,11 +28,7 @@ run() {  # run MODE COLS CORR OUT RING...
 }
 
 test_expect_success 'setup: six poses of the made-up creature (t0511-creature.awk)' '
-	for k in 0 1 2 3 4 5; do
-		awk -v pose=$k -v tips=tips$k -f "$TEST_DIRECTORY/t0511-creature.awk" >p$k.rings || return 1
-	done &&
-	cat tips0 tips1 tips2 tips3 tips4 tips5 | awk "{ for (i = 1; i <= NF; i++) r[i] = r[i] \" \" \$i }
-		END { for (i = 1; i <= 5; i++) print substr(r[i], 2) }" >corr.txt
+	creature_poses
 '
 test_expect_success 'one pose: every angle >= 20 degrees (measured 20.9 and 22.4)' '
 	run refine 1 corr.txt one.mesh p0.rings && test_le 20 $(worst one.mesh.log) &&

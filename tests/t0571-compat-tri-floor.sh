@@ -3,31 +3,8 @@ test_description='compat-tri: worst angle >= 20 degrees over every triangle of e
 . "$(dirname "$0")/test-lib.sh"
 . "$TEST_DIRECTORY/morph2d-lib.sh"
 
-# smallest angle (degrees) over every triangle of every frame of a MESH
-# stream, measured here, not taken from compat-tri -v
-worst_angle() {
-	awk 'function ang(ax, ay, bx, by, cx, cy,  ux, uy, vx, vy, cr) {
-		ux = bx - ax; uy = by - ay; vx = cx - ax; vy = cy - ay; cr = ux * vy - uy * vx
-		return atan2(cr < 0 ? -cr : cr, ux * vx + uy * vy) * 57.29577951308232 }
-	BEGIN { nf = 0 }
-	$1 == "f" { A[nf] = $2; B[nf] = $3; C[nf] = $4; nf++; next }
-	$1 == "frame" { fr++; k = 0; next }
-	fr > 0 && NF == 3 { X[fr, k] = $1; Y[fr, k] = $2; k++ }
-	END { m = 180; for (f = 1; f <= fr; f++) for (t = 0; t < nf; t++) {
-		a = A[t]; b = B[t]; c = C[t]
-		q = ang(X[f,a], Y[f,a], X[f,b], Y[f,b], X[f,c], Y[f,c])
-		r = ang(X[f,b], Y[f,b], X[f,c], Y[f,c], X[f,a], Y[f,a]); if (r < q) q = r
-		r = ang(X[f,c], Y[f,c], X[f,a], Y[f,a], X[f,b], Y[f,b]); if (r < q) q = r
-		if (q < m) m = q }
-	      printf "%.4f\n", m }' "$1"
-}
-
 test_expect_success 'made-up creature, six poses: worst angle >= 19.99 degrees (measured 20.01), positive' '
-	for k in 0 1 2 3 4 5; do
-		awk -v pose=$k -v tips=tips$k -f "$TEST_DIRECTORY/t0511-creature.awk" >p$k.rings || return 1
-	done &&
-	cat tips0 tips1 tips2 tips3 tips4 tips5 | awk "{ for (i = 1; i <= NF; i++) r[i] = r[i] \" \" \$i }
-		END { for (i = 1; i <= 5; i++) print substr(r[i], 2) }" >corr.txt &&
+	creature_poses &&
 	compat-tri -v -c corr.txt p0.rings p1.rings p2.rings p3.rings p4.rings p5.rings >c6.mesh 2>c6.log &&
 	test_le 1e-12 $(min_area c6.mesh) &&
 	test_le 19.99 $(worst_angle c6.mesh)

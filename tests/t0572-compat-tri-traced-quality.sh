@@ -4,24 +4,6 @@ test_description='compat-tri quality on traced silhouettes: elephant walk frames
 . "$TEST_DIRECTORY/morph2d-lib.sh"
 need_shared_data anim/elephant-walk-457.tar.xz
 
-# smallest angle (degrees) over every triangle of every frame, measured here
-worst_angle() {
-	awk 'function ang(ax, ay, bx, by, cx, cy,  ux, uy, vx, vy, cr) {
-		ux = bx - ax; uy = by - ay; vx = cx - ax; vy = cy - ay; cr = ux * vy - uy * vx
-		return atan2(cr < 0 ? -cr : cr, ux * vx + uy * vy) * 57.29577951308232 }
-	BEGIN { nf = 0 }
-	$1 == "f" { A[nf] = $2; B[nf] = $3; C[nf] = $4; nf++; next }
-	$1 == "frame" { fr++; k = 0; next }
-	fr > 0 && NF == 3 { X[fr, k] = $1; Y[fr, k] = $2; k++ }
-	END { m = 180; for (f = 1; f <= fr; f++) for (t = 0; t < nf; t++) {
-		a = A[t]; b = B[t]; c = C[t]
-		q = ang(X[f,a], Y[f,a], X[f,b], Y[f,b], X[f,c], Y[f,c])
-		r = ang(X[f,b], Y[f,b], X[f,c], Y[f,c], X[f,a], Y[f,a]); if (r < q) q = r
-		r = ang(X[f,c], Y[f,c], X[f,a], Y[f,a], X[f,b], Y[f,b]); if (r < q) q = r
-		if (q < m) m = q }
-	      printf "%.4f\n", m }' "$1"
-}
-
 FRAMES="0000 0140 0210 0280"
 test_expect_success 'setup: four walk frames traced from the side (78-123 outline points)' '
 	files= && for k in $FRAMES; do files="$files elephant/frame_$k.obj"; done &&
