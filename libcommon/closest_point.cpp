@@ -445,6 +445,54 @@ extern "C" void closest_points_batch(const struct closest_point_tree *T, const d
     });
 }
 
+extern "C" int closest_point_faces_within_visit(const struct closest_point_tree *T,
+                                                const double p[3], double r,
+                                                int (*visit)(int f, void *ctx), void *ctx)
+{
+    // the wide tree's walk, every box within r (its float box rounded
+    // outward and the query rounded both ways: no face within r is missed),
+    // then the triangle's own distance
+    typedef float v4 __attribute__((vector_size(16)));
+    double r2 = r * r;
+    if (T->wide.empty()) {
+        double c[3], b[3];
+        return tri_closest(&T->P[0], p, c, b) <= r2 ? visit(0, ctx) : 0;
+    }
+    v4 qd[3], qu[3];
+    for (int d = 0; d < 3; d++) {
+        float f = (float)p[d], lo = f, hi = f;
+        if ((double)f > p[d]) lo = std::nextafter(f, -HUGE_VALF);
+        if ((double)f < p[d]) hi = std::nextafter(f, HUGE_VALF);
+        qd[d] = (v4){lo, lo, lo, lo}; qu[d] = (v4){hi, hi, hi, hi};
+    }
+    const v4 zero = {0, 0, 0, 0};
+    std::vector<int> stack(1, 0);
+    while (!stack.empty()) {
+        const wide_node &n = T->wide[stack.back()];
+        stack.pop_back();
+        v4 s2 = zero;
+        for (int d = 0; d < 3; d++) {
+            v4 lo, hi;
+            memcpy(&lo, n.lo[d], sizeof lo); memcpy(&hi, n.hi[d], sizeof hi);
+            v4 a = lo - qu[d], b = qd[d] - hi;
+            v4 e = a > b ? a : b;
+            e = e > zero ? e : zero;
+            s2 += e * e;
+        }
+        for (int s = 0; s < 4; s++) {
+            if (n.child[s] == NONE || (s2[s] < HUGE_VALF && (double)s2[s] * (1 - 1e-5) > r2)) continue;
+            if (n.child[s] >= 0) { stack.push_back(n.child[s]); continue; }
+            int f = -1 - n.child[s];
+            double c[3], b[3];
+            if (tri_closest(&T->P[9 * (size_t)f], p, c, b) <= r2) {
+                int v = visit(f, ctx);
+                if (v) return v;
+            }
+        }
+    }
+    return 0;
+}
+
 extern "C" int closest_point_faces_within(const struct closest_point_tree *T, const double p[3],
                                           double r, int *out, int max)
 {

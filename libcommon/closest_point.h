@@ -40,6 +40,12 @@ void closest_points(const struct closest_point_tree *T, const double *P, int n, 
 int closest_point_faces_within(const struct closest_point_tree *T, const double p[3], double r,
                                int *out, int max);
 
+/* Calls visit(f, ctx) for the faces f within distance r of p (r >= 0), in
+ * no particular order, until a call returns nonzero; returns that value,
+ * or 0 when every call returned 0 (or no face is that near). */
+int closest_point_faces_within_visit(const struct closest_point_tree *T, const double p[3],
+                                     double r, int (*visit)(int f, void *ctx), void *ctx);
+
 /* The closest point to p on face f only: c (3, out, may be NULL), its
  * barycentrics (3, out, may be NULL); returns the distance. */
 double closest_point_on_face(const struct closest_point_tree *T, int f, const double p[3],

@@ -59,6 +59,15 @@ int flipped_faces(const double *VA, const int *FA, int nfa, const double *VB, in
     return flipped_face_flags(VA, FA, nfa, VB, nvb, FB, nfb, TB, tol, NULL);
 }
 
+/* for closest_point_faces_within_visit(): does face f of B (normals NF)
+ * face the way of n? */
+struct facing { const double *NF, *n; };
+static int faces_this_way(int f, void *ctx)
+{
+    const struct facing *c = ctx;
+    return dot3(c->NF + 3 * f, c->n) > 0;
+}
+
 /* the flip test of one face of A given the closest point on B to its
  * centroid (face g, barycentrics b, distance d); NF: B's face normals,
  * t: B's topology */
@@ -70,7 +79,7 @@ static int face_flipped(const double *nf, const double *p, int g, const double *
      * face, both face normals on an edge, all of them at a vertex; the
      * face is flipped when it points against every one of them */
     const double eps = 1e-9;
-    int zeros = (b[0] < eps) + (b[1] < eps) + (b[2] < eps), near[64];
+    int zeros = (b[0] < eps) + (b[1] < eps) + (b[2] < eps);
     int fl = dot3(NF + 3 * g, nf) < 0;
     if (fl && zeros >= 2) {
         int c = b[0] >= b[1] && b[0] >= b[2] ? 0 : b[1] >= b[2] ? 1 : 2, v = FB[3 * g + c];
@@ -84,9 +93,8 @@ static int face_flipped(const double *nf, const double *p, int g, const double *
     }
     if (fl && tol > 0) {
         /* a thin part of B (an ear, a fin): is a side facing this way near too? */
-        int m = closest_point_faces_within(TB, p, d + tol, near, 64);
-        for (int q = 0; q < m && q < 64 && fl; q++)
-            if (dot3(NF + 3 * near[q], nf) > 0) fl = 0;
+        struct facing fc = {NF, nf};
+        if (closest_point_faces_within_visit(TB, p, d + tol, faces_this_way, &fc)) fl = 0;
     }
     return fl;
 }
