@@ -1,5 +1,5 @@
-/* closest_point.h -- closest points on a triangle mesh surface: a CGAL AABB
- * tree of the triangles, built once and queried many times.
+/* closest_point.h -- closest points on a triangle mesh surface: a bounding
+ * box tree of the triangles, built once and queried many times.
  *
  *   struct closest_point_tree *T = closest_point_tree_new(V, nv, F, nf);
  *   closest_point_query(T, p, c, &face, bary);     one point
@@ -30,7 +30,9 @@ double closest_point_query(const struct closest_point_tree *T, const double p[3]
 
 /* P: n by 3 queries.  Outputs (each may be NULL): C n by 3 closest points,
  * I n face ids, B n by 3 barycentrics, D n distances.  Runs on up to two
- * threads. */
+ * threads.  Of faces exactly equally near (a query on an edge or a
+ * vertex) every query function here names the one with the smallest id,
+ * whatever the tree and the hints. */
 void closest_points(const struct closest_point_tree *T, const double *P, int n, double *C,
                     int *I, double *B, double *D);
 
@@ -65,9 +67,7 @@ void closest_points_hinted(const struct closest_point_tree *T, const double *P, 
  * which to answer the queries, a permutation of 0..n-1 with near queries
  * one after another (closest_points_order(); the order of an earlier call
  * on points that have moved a little is as good); NULL: computed here.
- * The distances are those of closest_points(); where several faces are
- * equally near (a query on an edge or a vertex) I and B may name another
- * of them.  I may be H. */
+ * The answers are those of closest_points().  I may be H. */
 void closest_points_batch(const struct closest_point_tree *T, const double *P, int n,
                           const int *H, const int *O, double *C, int *I, double *B, double *D);
 

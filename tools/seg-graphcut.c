@@ -373,9 +373,13 @@ int main(int argc, char **argv)
         }
     }
 
-    /* seed points -> nearest triangle of the average mesh (CGAL AABB tree) */
+    /* seed points -> nearest triangle of the average mesh; a point on an
+     * edge or a vertex (a seed on the mirror plane of a symmetric head)
+     * seeds every triangle that is as near, to 1e-12 of the diagonal, so
+     * that no side is preferred */
     struct closest_point_tree *tree = NULL;
-    for (int i = 0; i < o.nseeds; i++) {
+    int npoint = o.nseeds;
+    for (int i = 0; i < npoint; i++) {
         if (!o.seeds[i].is_point) continue;
         if (!tree && !(tree = closest_point_tree_new(avg, nv, F, nf)))
             die("%s", cm_errmsg());
@@ -385,6 +389,13 @@ int main(int argc, char **argv)
             die("cannot read '%s': line %ld: seed point %g %g %g is %.3g bbox diagonals from the surface "
                 "(more than --seed-snap %g): wrong units or axes?", o.seeds_file, o.seeds[i].line,
                 o.seeds[i].p[0], o.seeds[i].p[1], o.seeds[i].p[2], d / diag, o.seed_snap);
+        int near[32], k = closest_point_faces_within(tree, o.seeds[i].p, d + 1e-12 * diag, near, 32);
+        for (int j = 0; j < k && j < 32; j++)
+            if (near[j] != o.seeds[i].face) {
+                struct seed x = o.seeds[i];
+                x.face = near[j];
+                add_seed(&o, x);
+            }
     }
     closest_point_tree_free(tree);
     int *seed_part = malloc(sizeof(int) * (nf ? nf : 1));

@@ -46,6 +46,15 @@ static double tri_d2(const double *p, const double *a, const double *b, const do
     return best;
 }
 
+/* for closest_point_faces_within_visit: collect, never stop */
+static int visit_collect(int f, void *ctx)
+{
+    struct { int *seen, n; } *c = ctx;
+    if (c->n < 512) c->seen[c->n] = f;
+    c->n++;
+    return 0;
+}
+
 int main(void)
 {
     double *V; int *F, nv, nf;
@@ -94,13 +103,14 @@ int main(void)
     {
         double *Db = malloc(sizeof(double) * n), *Bb = malloc(sizeof(double) * 3 * n);
         double *Cb = malloc(sizeof(double) * 3 * n);
-        int *Ib = malloc(sizeof(int) * n), *O = malloc(sizeof(int) * n), bd = 0, bf = 0;
+        int *Ib = malloc(sizeof(int) * n), *O = malloc(sizeof(int) * n), bd = 0, bf = 0, bi = 0;
         closest_points_order(P, n, O);
         for (int pass = 0; pass < 3; pass++) {
             for (int i = 0; i < n; i++) H[i] = pass == 0 ? (i * 7919) % nf : -1;
             closest_points_batch(T, P, n, pass == 1 ? NULL : H, pass == 2 ? NULL : O, Cb, Ib, Bb, Db);
             for (int i = 0; i < n; i++) {
                 if (Db[i] != D[i]) bd++;
+                if (Ib[i] != I[i]) bi++;
                 double q[3] = {0, 0, 0}, e = 0;
                 for (int k = 0; k < 3; k++)
                     for (int d = 0; d < 3; d++) q[d] += Bb[3 * i + k] * V[3 * F[3 * Ib[i] + k] + d];
@@ -110,6 +120,45 @@ int main(void)
         }
         ok(bd == 0, "closest_points_batch: the same distances (%d of %d differ)", bd, 3 * n);
         ok(bf == 0, "closest_points_batch: face and barycentrics give the closest point (%d differ)", bf);
+        ok(bi == 0, "closest_points_batch names the faces closest_points names (%d differ)", bi);
+        /* ties: at a vertex every face around it is at distance 0; all the
+         * query functions name the smallest such id, hints or not */
+        {
+            int bt = 0, *It = malloc(sizeof(int) * nv), *Ht = malloc(sizeof(int) * nv);
+            for (int i = 0; i < nv; i++) Ht[i] = (i * 7919) % nf;
+            for (int pass = 0; pass < 4; pass++) {
+                if (pass == 0) closest_points(T, V, nv, NULL, It, NULL, NULL);
+                if (pass == 1) closest_points_hinted(T, V, nv, Ht, NULL, It, NULL, NULL);
+                if (pass == 2) closest_points_batch(T, V, nv, Ht, NULL, NULL, It, NULL, NULL);
+                if (pass == 3) closest_points_batch(T, V, nv, NULL, NULL, NULL, It, NULL, NULL);
+                for (int i = 0; i < nv; i++) {
+                    int want = -1;
+                    for (int f = 0; f < nf && want < 0; f++)
+                        if (closest_point_on_face(T, f, V + 3 * i, NULL, NULL) == 0) want = f;
+                    if (It[i] != want) bt++;
+                }
+            }
+            ok(bt == 0, "ties at the vertices: the smallest face id, with and without hints (%d differ)", bt);
+            free(It); free(Ht);
+        }
+        /* closest_point_faces_within_visit: the faces closest_point_faces_within lists */
+        {
+            int bw = 0, list[512], seen[512];
+            struct { int *seen, n; } vc;
+            for (int i = 0; i < 200; i++) {
+                double rr = 0.3 * (i % 7) / 6.0;
+                int m = closest_point_faces_within(T, P + 3 * i, rr, list, 512);
+                vc.seen = seen; vc.n = 0;
+                int stop = closest_point_faces_within_visit(T, P + 3 * i, rr, visit_collect, &vc);
+                if (stop != 0 || vc.n != m) { bw++; continue; }
+                for (int a = 0; a < m; a++) {
+                    int found = 0;
+                    for (int b = 0; b < m; b++) found |= seen[b] == list[a];
+                    if (!found) bw++;
+                }
+            }
+            ok(bw == 0, "closest_point_faces_within_visit visits the faces within r (%d differ)", bw);
+        }
         /* one face, and points on the surface itself (distance 0 ties) */
         struct closest_point_tree *T1 = closest_point_tree_new(V, nv, F, 1);
         closest_points_batch(T1, P, 10, NULL, NULL, NULL, NULL, NULL, Db);
