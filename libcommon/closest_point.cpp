@@ -72,82 +72,92 @@ static void float_box(const double l[3], const double h[3], float lo[3], float h
 // bins an axis: Wald, On fast construction of SAH-based bounding volume
 // hierarchies, 2007): a split minimises area(left) * #left + area(right) *
 // #right, which for a surface mesh gives tighter boxes than a median split
-// and so fewer boxes near a query point.  Faces idx[lo..hi) with their
-// boxes B (#F by 6: lo, hi) and centroids M (#F by 3); returns the child
-// reference (a node >= 0, or a face -1 - f) and its box in lo_out, hi_out.
-struct sah_build { const std::vector<float> &B; const std::vector<float> &M; std::vector<int> &idx; };
+// and so fewer boxes near a query point.  R[lo..hi): the faces, each with
+// its box and centre (reordered in place); returns the child reference
+// (a node >= 0, or a face -1 - f) and its box in blo, bhi.
+struct sah_face { float lo[3], hi[3], c[3]; int f; };
 static float half_area(const float *lo, const float *hi)
 {
     float e[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
     return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
 }
-static void box_grow(float *lo, float *hi, const float *b)
+static inline __attribute__((always_inline)) void box_grow(float *lo, float *hi, const float *l, const float *h)
 {
-    for (int d = 0; d < 3; d++) { lo[d] = std::min(lo[d], b[d]); hi[d] = std::max(hi[d], b[3 + d]); }
+    for (int d = 0; d < 3; d++) { lo[d] = std::min(lo[d], l[d]); hi[d] = std::max(hi[d], h[d]); }
 }
-static int sah(closest_point_tree *T, const sah_build &S, int lo, int hi, float *blo, float *bhi)
+static int sah_node(closest_point_tree *T, sah_face *R, int lo, int mid, int hi, float *blo, float *bhi);
+static int sah(closest_point_tree *T, sah_face *R, int lo, int hi, float *blo, float *bhi)
 {
     if (hi - lo == 1) {
-        int f = S.idx[lo];
-        for (int d = 0; d < 3; d++) { blo[d] = S.B[6 * (size_t)f + d]; bhi[d] = S.B[6 * (size_t)f + 3 + d]; }
-        return -1 - f;
+        for (int d = 0; d < 3; d++) { blo[d] = R[lo].lo[d]; bhi[d] = R[lo].hi[d]; }
+        return -1 - R[lo].f;
     }
-    // the centroids' box picks the bins
+    // the centres' box picks the bins
     float clo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, chi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
+    box_grow(clo, chi, R[lo].c, R[lo].c);
+    for (int i = lo + 1; i < hi; i++) box_grow(clo, chi, R[i].c, R[i].c);
+    int mid = (lo + hi) / 2;
+    if (hi - lo <= 8) {
+        // a few faces: halves along the centres' longest extent (binning
+        // costs more than it saves this low in the tree)
+        int d = chi[1] - clo[1] > chi[0] - clo[0] ? 1 : 0;
+        if (chi[2] - clo[2] > chi[d] - clo[d]) d = 2;
+        std::nth_element(R + lo, R + mid, R + hi,
+                         [d](const sah_face &a, const sah_face &b) { return a.c[d] < b.c[d]; });
+        return sah_node(T, R, lo, mid, hi, blo, bhi);
+    }
+    enum { NB = 16 };
+    float lb[3][NB][3], hb[3][NB][3], sc[3];
+    int cnt[3][NB] = {{0}};
+    for (int d = 0; d < 3; d++) {
+        sc[d] = chi[d] > clo[d] ? NB / (chi[d] - clo[d]) : 0;
+        for (int b = 0; b < NB; b++)
+            for (int e = 0; e < 3; e++) { lb[d][b][e] = HUGE_VALF; hb[d][b][e] = -HUGE_VALF; }
+    }
+    auto bin = [&](const sah_face &r, int d) { return std::min(NB - 1, (int)((r.c[d] - clo[d]) * sc[d])); };
     for (int i = lo; i < hi; i++)
         for (int d = 0; d < 3; d++) {
-            float c = S.M[3 * (size_t)S.idx[i] + d];
-            clo[d] = std::min(clo[d], c); chi[d] = std::max(chi[d], c);
+            int b = bin(R[i], d);
+            cnt[d][b]++;
+            box_grow(lb[d][b], hb[d][b], R[i].lo, R[i].hi);
         }
-    enum { NB = 16 };
     int axis = -1, cut = 0;
     float bestc = HUGE_VALF;
     for (int d = 0; d < 3; d++) {
         if (!(chi[d] > clo[d])) continue;
-        float lb[NB][3], hb[NB][3];
-        int cnt[NB] = {0};
-        for (int b = 0; b < NB; b++)
-            for (int e = 0; e < 3; e++) { lb[b][e] = HUGE_VALF; hb[b][e] = -HUGE_VALF; }
-        float sc = NB / (chi[d] - clo[d]);
-        for (int i = lo; i < hi; i++) {
-            int f = S.idx[i];
-            int b = std::min(NB - 1, (int)((S.M[3 * (size_t)f + d] - clo[d]) * sc));
-            cnt[b]++;
-            box_grow(lb[b], hb[b], &S.B[6 * (size_t)f]);
-        }
         // areas of the unions from the right, then the sweep from the left
         float ra[NB], rl[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, rh[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
         int rc[NB], n = 0;
         for (int b = NB - 1; b > 0; b--) {
-            float bb[6] = {lb[b][0], lb[b][1], lb[b][2], hb[b][0], hb[b][1], hb[b][2]};
-            if (cnt[b]) box_grow(rl, rh, bb);
-            n += cnt[b]; rc[b] = n; ra[b] = n ? half_area(rl, rh) : 0;
+            if (cnt[d][b]) box_grow(rl, rh, lb[d][b], hb[d][b]);
+            n += cnt[d][b]; rc[b] = n; ra[b] = n ? half_area(rl, rh) : 0;
         }
         float ll[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, lh[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
         n = 0;
         for (int b = 0; b < NB - 1; b++) {
-            float bb[6] = {lb[b][0], lb[b][1], lb[b][2], hb[b][0], hb[b][1], hb[b][2]};
-            if (cnt[b]) box_grow(ll, lh, bb);
-            n += cnt[b];
+            if (cnt[d][b]) box_grow(ll, lh, lb[d][b], hb[d][b]);
+            n += cnt[d][b];
             if (n == 0 || rc[b + 1] == 0) continue;
             float c = half_area(ll, lh) * n + ra[b + 1] * rc[b + 1];
             if (c < bestc) { bestc = c; axis = d; cut = b + 1; }
         }
     }
-    int mid;
-    if (axis < 0) {
-        mid = (lo + hi) / 2;    // all centroids equal: any halves
-    } else {
-        float sc = NB / (chi[axis] - clo[axis]);
-        auto left = [&](int f) { return std::min(NB - 1, (int)((S.M[3 * (size_t)f + axis] - clo[axis]) * sc)) < cut; };
-        mid = (int)(std::partition(S.idx.begin() + lo, S.idx.begin() + hi, left) - S.idx.begin());
+    if (axis >= 0) {          // else all centres equal: any halves
+        auto left = [&](const sah_face &r) { return bin(r, axis) < cut; };
+        mid = (int)(std::partition(R + lo, R + hi, left) - R);
         if (mid == lo || mid == hi) mid = (lo + hi) / 2;
     }
+    return sah_node(T, R, lo, mid, hi, blo, bhi);
+}
+
+// a node of faces R[lo..mid) and R[mid..hi): see sah()
+static int sah_node(closest_point_tree *T, sah_face *R, int lo, int mid, int hi, float *blo, float *bhi)
+{
     int k = (int)T->nodes.size();
     T->nodes.emplace_back();
     flat_node x;
-    x.child[0] = sah(T, S, lo, mid, x.lo[0], x.hi[0]);
-    x.child[1] = sah(T, S, mid, hi, x.lo[1], x.hi[1]);
+    x.child[0] = sah(T, R, lo, mid, x.lo[0], x.hi[0]);
+    x.child[1] = sah(T, R, mid, hi, x.lo[1], x.hi[1]);
     for (int d = 0; d < 3; d++) {
         blo[d] = std::min(x.lo[0][d], x.lo[1][d]);
         bhi[d] = std::max(x.hi[0][d], x.hi[1][d]);
@@ -388,8 +398,7 @@ extern "C" struct closest_point_tree *closest_point_tree_new(const double *V, in
     T->nf = nf;
     T->P.resize(9 * (size_t)nf);
     // each face's box (single precision, rounded outward) and its centre
-    std::vector<float> B(6 * (size_t)nf), M(3 * (size_t)nf);
-    std::vector<int> idx(nf);
+    std::vector<sah_face> R(nf);
     for (int f = 0; f < nf; f++) {
         double *t = &T->P[9 * (size_t)f], lo[3], hi[3];
         for (int k = 0; k < 3; k++)
@@ -398,15 +407,13 @@ extern "C" struct closest_point_tree *closest_point_tree_new(const double *V, in
             lo[d] = std::min(t[d], std::min(t[3 + d], t[6 + d]));
             hi[d] = std::max(t[d], std::max(t[3 + d], t[6 + d]));
         }
-        float_box(lo, hi, &B[6 * (size_t)f], &B[6 * (size_t)f + 3]);
-        for (int d = 0; d < 3; d++)
-            M[3 * (size_t)f + d] = 0.5f * (B[6 * (size_t)f + d] + B[6 * (size_t)f + 3 + d]);
-        idx[f] = f;
+        float_box(lo, hi, R[f].lo, R[f].hi);
+        for (int d = 0; d < 3; d++) R[f].c[d] = 0.5f * (R[f].lo[d] + R[f].hi[d]);
+        R[f].f = f;
     }
     if (nf >= 2) {
         T->nodes.reserve(nf);
-        sah_build S = {B, M, idx};
-        sah(T, S, 0, nf, T->root_lo, T->root_hi);
+        sah(T, R.data(), 0, nf, T->root_lo, T->root_hi);
         T->wide.reserve(nf / 2 + 1);
         widen(T, 0);
     }
