@@ -11,6 +11,7 @@
 #include "swapcost.h"
 #include "blas_tune.h"
 #include "mesh.h"
+#include "mesh_prefetch.h"
 #include "columns.h"
 #include "tool.h"
 #include "progress.h"
@@ -265,9 +266,11 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
     size_t fb = sizeof(double) * 3 * (size_t)m->nv;
     size_t lim = o->stream == 0 ? (size_t)-1 : o->stream == 1 ? 0 : (size_t)512 << 20;
     int cap = 0, sk = 0, rc, cut;
-    double *x = malloc(fb);
-    if (!x) die("out of memory");
-    while ((rc = mesh_reader_next(&r, x, &cut)) == 1) {
+    /* frames parsed on a second thread while this one sketches or stores */
+    struct mesh_prefetch pf;
+    if (mesh_prefetch_start(&pf, &r, 8) < 0) die("%s", cm_errmsg());
+    const double *x;
+    while ((rc = mesh_prefetch_next(&pf, &x, &cut)) == 1) {
         int f = m->nframes;
         if (!sk && (size_t)(f + 1) * fb > lim) {
             /* switch to the sketch: feed it what was buffered */
@@ -298,9 +301,9 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
         m->nframes++;
     }
     if (rc < 0) die("%s", cm_errmsg());
+    mesh_prefetch_stop(&pf);
     if (m->nframes < 1) die("cannot read '%s': no frames", r.name);
     mesh_reader_close(&r);
-    free(x);
     return sk;
 }
 

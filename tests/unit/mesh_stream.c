@@ -1,8 +1,10 @@
 /* mesh_stream: plain_round_trip_is_bit_exact (random coordinates of every
  * magnitude, -0, values that are ties for the fast parser, lines across
  * buffer refills), raw_round_trip, frames_unknown, cut_marks, reader
- * return codes, whole-mesh read/write */
+ * return codes, whole-mesh read/write, read-ahead on a second thread
+ * (mesh_prefetch: same frames, cuts and errors as mesh_reader_next) */
 #include "mesh.h"
+#include "mesh_prefetch.h"
 #include "cm_error.h"
 #include "rng.h"
 #include "tap.h"
@@ -72,6 +74,24 @@ int main(void)
         }
     }
 
+    /* read-ahead (the file holds the last stream: raw, frames known), with
+     * the smallest ring: the reader waits for the caller at every frame */
+    {
+        struct mesh_reader rd;
+        struct mesh_prefetch pf;
+        int rc = mesh_reader_open(&rd, path), frames = 0, exact = 1, cut;
+        ok(rc == 0 && mesh_prefetch_start(&pf, &rd, 2) == 0, "mesh_prefetch_start");
+        const double *X;
+        while ((rc = mesh_prefetch_next(&pf, &X, &cut)) == 1 && frames < nframes) {
+            exact &= !memcmp(X, V + 3L * nv * frames, sizeof *X * 3 * nv) && cut == (frames == 2);
+            frames++;
+        }
+        ok(rc == 0 && frames == nframes && exact, "mesh_prefetch_next: %d frames in order, cuts, then 0", frames);
+        ok(mesh_prefetch_next(&pf, &X, &cut) == 0, "mesh_prefetch_next: 0 again after the end");
+        mesh_prefetch_stop(&pf);
+        mesh_reader_close(&rd);
+    }
+
     /* whole-mesh interface */
     struct mesh m;
     ok(mesh_read(path, &m) == 0 && m.nframes == nframes && mesh_nclips(&m) == 2 &&
@@ -91,6 +111,29 @@ int main(void)
     fclose(f);
     ok(mesh_read(path, &m) < 0 && strstr(cm_errmsg(), path) && strstr(cm_errmsg(), "truncated"),
        "mesh_read: truncated frame reported (%s)", cm_errmsg());
+    {
+        /* the same through the read-ahead: one frame, then the reader's message */
+        struct mesh_reader rd;
+        struct mesh_prefetch pf;
+        char direct[1024];
+        double X2[6];
+        mesh_reader_open(&rd, path);
+        int r1 = mesh_reader_next(&rd, X2, NULL), r2 = mesh_reader_next(&rd, X2, NULL);
+        snprintf(direct, sizeof direct, "%s", cm_errmsg());
+        mesh_reader_close(&rd);
+        mesh_reader_open(&rd, path);
+        mesh_prefetch_start(&pf, &rd, 4);
+        const double *X;
+        int p1 = mesh_prefetch_next(&pf, &X, NULL);
+        int first_ok = p1 == 1 && X[0] == 1 && X[5] == 6;
+        cm_seterr("-");
+        int p2 = mesh_prefetch_next(&pf, &X, NULL);
+        ok(r1 == 1 && r2 < 0 && first_ok && p2 < 0 && !strcmp(cm_errmsg(), direct),
+           "mesh_prefetch_next: the good frame, then the reader's error (%s)", cm_errmsg());
+        mesh_prefetch_stop(&pf);
+        mesh_prefetch_stop(&pf);
+        mesh_reader_close(&rd);
+    }
     /* a writer that is given too many frames refuses */
     f = fopen(path, "wb");
     struct mesh_writer w;
