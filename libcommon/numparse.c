@@ -105,6 +105,95 @@ static int tie_side(uint64_t m, int e, uint64_t D, int Q)
 }
 #endif
 
+/* m * 10^exp10 (m has `digits` significant digits, at most 19), negated
+ * if neg, correctly rounded into *out: returns 1, or 0 when the value
+ * needs strtod (more digits or exponent than the fast paths take, or a
+ * near-tie they cannot decide). */
+static inline __attribute__((always_inline)) int
+decimal_to_double(uint64_t m, int digits, int exp10, int neg, double *out)
+{
+    if (digits <= 15 && exp10 >= -22 && exp10 <= 22) {
+        /* Clinger's fast path: m and 10^|e| are exact doubles, one
+         * correctly rounded multiply or divide */
+        double v = (double)m;
+        if (exp10 < 0) v /= pow10tab[-exp10];
+        else if (exp10 > 0) v *= pow10tab[exp10];
+        *out = neg ? -v : v;
+        return 1;
+    }
+    {
+#if LDBL_MANT_DIG == 64
+        /* 16..19 digits (what %.17g prints for computed coordinates): m is
+         * exact in x87 extended precision, so is 10^k for k <= 27, and one
+         * multiply or divide rounds once to 64 bits.  Rounding that to
+         * double gives the correctly rounded result unless the extended
+         * value is exactly a midpoint between two doubles (the only
+         * 64-bit number that can separate the true value from its
+         * 64-bit rounding); those rare ties go to strtod. */
+        if (exp10 < 0 && exp10 >= -27 && digits <= 19) {
+            /* the common case of coordinates: multiply by the rounded
+             * reciprocal instead of dividing (x87 fdiv is slow); two
+             * roundings leave r within 2 units of its last place of the
+             * exact value, which rounds correctly to double unless r is
+             * that close to a midpoint; those take the exact division */
+            long double r = (long double)m * inv10tabl[-exp10];
+            uint64_t sig;
+            memcpy(&sig, &r, sizeof sig);
+            unsigned low = (unsigned)(sig & 0x7ff);
+            if (low < 0x3fe || low > 0x402) {
+                double d = (double)r;
+                *out = neg ? -d : d;
+                return 1;
+            }
+        }
+        if (digits <= 19 && exp10 >= -27 && exp10 <= 27) {
+            long double r = (long double)m;
+            if (exp10 < 0) r /= pow10tabl[-exp10];
+            else if (exp10 > 0) r *= pow10tabl[exp10];
+            /* x87 layout: the 64-bit significand (explicit leading 1)
+             * first; r lies in the normal double range, so it is a
+             * midpoint iff its low 11 bits are 100 0000 0000 */
+            uint64_t sig;
+            memcpy(&sig, &r, sizeof sig);
+            double d = (double)r;
+            if ((sig & 0x7ff) == 0x400) {
+#ifdef __SIZEOF_INT128__
+                /* r is a midpoint: (double)r rounded to even; decide
+                 * exactly on which side of r the decimal lies */
+                uint16_t ex;
+                memcpy(&ex, (const char *)&r + 8, sizeof ex);
+                int c = tie_side(m, exp10, sig >> 10, (int)(ex & 0x7fff) - 16383 - 63 + 10);
+                if (c != 0 && (c > 0) != ((long double)d > r))
+                    d = nextafter(d, c > 0 ? INFINITY : -INFINITY);
+#else
+                return 0;
+#endif
+            }
+            *out = neg ? -d : d;
+            return 1;
+        }
+        if (digits <= 19 && exp10 >= -54 && exp10 <= 54) {
+            /* tiny roundoff values like 1.5e-19 and huge ones: two exact
+             * powers, two roundings, so r may be up to 2 units of its last
+             * place from the exact value; it rounds correctly unless it is
+             * that close to a midpoint (then strtod) */
+            long double r = (long double)m;
+            if (exp10 < 0) r = r / pow10tabl[27] / pow10tabl[-exp10 - 27];
+            else r = r * pow10tabl[27] * pow10tabl[exp10 - 27];
+            uint64_t sig;
+            memcpy(&sig, &r, sizeof sig);
+            unsigned low = (unsigned)(sig & 0x7ff);
+            if (low >= 0x3fe && low <= 0x402)
+                return 0;
+            double d = (double)r;
+            *out = neg ? -d : d;
+            return 1;
+        }
+#endif
+        return 0;
+    }
+}
+
 static inline __attribute__((always_inline)) const char *
 parse_double_impl(const char *s, double *out, int padded)
 {
@@ -170,86 +259,8 @@ parse_double_impl(const char *s, double *out, int padded)
         p = q;
     }
 convert:
-    if (digits <= 15 && exp10 >= -22 && exp10 <= 22) {
-        /* Clinger's fast path: m and 10^|e| are exact doubles, one
-         * correctly rounded multiply or divide */
-        double v = (double)m;
-        if (exp10 < 0) v /= pow10tab[-exp10];
-        else if (exp10 > 0) v *= pow10tab[exp10];
-        *out = neg ? -v : v;
+    if (decimal_to_double(m, digits, exp10, neg, out))
         return p;
-    }
-    {
-#if LDBL_MANT_DIG == 64
-        /* 16..19 digits (what %.17g prints for computed coordinates): m is
-         * exact in x87 extended precision, so is 10^k for k <= 27, and one
-         * multiply or divide rounds once to 64 bits.  Rounding that to
-         * double gives the correctly rounded result unless the extended
-         * value is exactly a midpoint between two doubles (the only
-         * 64-bit number that can separate the true value from its
-         * 64-bit rounding); those rare ties go to strtod. */
-        if (exp10 < 0 && exp10 >= -27 && digits <= 19) {
-            /* the common case of coordinates: multiply by the rounded
-             * reciprocal instead of dividing (x87 fdiv is slow); two
-             * roundings leave r within 2 units of its last place of the
-             * exact value, which rounds correctly to double unless r is
-             * that close to a midpoint; those take the exact division */
-            long double r = (long double)m * inv10tabl[-exp10];
-            uint64_t sig;
-            memcpy(&sig, &r, sizeof sig);
-            unsigned low = (unsigned)(sig & 0x7ff);
-            if (low < 0x3fe || low > 0x402) {
-                double d = (double)r;
-                *out = neg ? -d : d;
-                return p;
-            }
-        }
-        if (digits <= 19 && exp10 >= -27 && exp10 <= 27) {
-            long double r = (long double)m;
-            if (exp10 < 0) r /= pow10tabl[-exp10];
-            else if (exp10 > 0) r *= pow10tabl[exp10];
-            /* x87 layout: the 64-bit significand (explicit leading 1)
-             * first; r lies in the normal double range, so it is a
-             * midpoint iff its low 11 bits are 100 0000 0000 */
-            uint64_t sig;
-            memcpy(&sig, &r, sizeof sig);
-            double d = (double)r;
-            if ((sig & 0x7ff) == 0x400) {
-#ifdef __SIZEOF_INT128__
-                /* r is a midpoint: (double)r rounded to even; decide
-                 * exactly on which side of r the decimal lies */
-                uint16_t ex;
-                memcpy(&ex, (const char *)&r + 8, sizeof ex);
-                int c = tie_side(m, exp10, sig >> 10, (int)(ex & 0x7fff) - 16383 - 63 + 10);
-                if (c != 0 && (c > 0) != ((long double)d > r))
-                    d = nextafter(d, c > 0 ? INFINITY : -INFINITY);
-#else
-                goto slow;
-#endif
-            }
-            *out = neg ? -d : d;
-            return p;
-        }
-        if (digits <= 19 && exp10 >= -54 && exp10 <= 54) {
-            /* tiny roundoff values like 1.5e-19 and huge ones: two exact
-             * powers, two roundings, so r may be up to 2 units of its last
-             * place from the exact value; it rounds correctly unless it is
-             * that close to a midpoint (then strtod) */
-            long double r = (long double)m;
-            if (exp10 < 0) r = r / pow10tabl[27] / pow10tabl[-exp10 - 27];
-            else r = r * pow10tabl[27] * pow10tabl[exp10 - 27];
-            uint64_t sig;
-            memcpy(&sig, &r, sizeof sig);
-            unsigned low = (unsigned)(sig & 0x7ff);
-            if (low >= 0x3fe && low <= 0x402)
-                goto slow;
-            double d = (double)r;
-            *out = neg ? -d : d;
-            return p;
-        }
-#endif
-        goto slow;
-    }
 slow:;
     char *end;
     double v2 = strtod(start, &end);
@@ -378,8 +389,14 @@ static int format_fast(char *buf, double x)
         uint64_t N = P == 17 ? N17 : P == 16 ? (N17 + 5) / 10 : (N17 + 50) / 100;
         int ee = e;
         if ((long double)N >= pow10tabl[P]) { N /= 10; ee++; }
-        int n = layout_g(tmp, x < 0, N, P, ee);
+        /* the decimal N 10^(ee-P+1) read back without its text: the same
+         * correctly rounded conversion parse_double makes of it; the text
+         * is laid out only for the candidate that verifies (or when the
+         * conversion needs strtod) */
         double back;
+        if (decimal_to_double(N, P, ee - P + 1, x < 0, &back) && back != x)
+            continue;
+        int n = layout_g(tmp, x < 0, N, P, ee);
         const char *end = parse_double_padded(tmp, &back);
         if (end && *end == 0 && back == x) {
             memcpy(buf, tmp, (size_t)n + 1);
