@@ -7,10 +7,12 @@
 
 void bmatch_defaults(struct bmatch_params *prm)
 {
-    prm->mode = BMATCH_ELASTIC;
+    prm->mode = BMATCH_MULTISCALE;
     prm->samples = 256;
     prm->bend = 0.03;
     prm->start_bend = 0.3;
+    prm->feature = 30;
+    prm->confidence = 0.1;
 }
 
 /* a closed polygon with cumulative arc lengths */
@@ -80,12 +82,43 @@ static void sample_angles(const struct outline *o, double s0, double len, int m,
     }
 }
 
+/* multi-scale turning: at each of m + 1 samples s0 + k len / m, the signed
+ * angle between the chords p(s - h) -> p(s) and p(s) -> p(s + h) for the
+ * BMATCH_SCALES scales h, divided by pi (so in [-1, 1]) */
+static const double SCALES[BMATCH_SCALES] = {0.01, 0.02, 0.04, 0.08};
+
+static void sample_turning(const struct outline *o, double s, double *d)
+{
+    double b[2];
+    outline_point(o, s, b);
+    for (int k = 0; k < BMATCH_SCALES; k++) {
+        double h = SCALES[k] * o->L, a[2], c[2];
+        outline_point(o, s - h, a);
+        outline_point(o, s + h, c);
+        double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - b[0], vy = c[1] - b[1];
+        d[k] = atan2(ux * vy - uy * vx, ux * vx + uy * vy) / M_PI;
+    }
+}
+
+static void sample_desc(const struct outline *o, double s0, double len, int m, double *D)
+{
+    for (int k = 0; k <= m; k++) sample_turning(o, s0 + len * k / m, D + (size_t)k * BMATCH_SCALES);
+}
+
+static double desc_dist(const double *a, const double *b)
+{
+    double d = 0;
+    for (int k = 0; k < BMATCH_SCALES; k++) d += fabs(a[k] - b[k]);
+    return d / BMATCH_SCALES;
+}
+
 static const int STEPS[9][2] = {{1, 1}, {1, 0}, {0, 1}, {1, 2}, {2, 1}, {1, 3}, {3, 1}, {2, 3}, {3, 2}};
 
 /* Dynamic program from (0,0) to (mA, mB).  thA: mA + 1, thB: mB + 1 angles;
  * hA, hB: step lengths as fractions of the perimeters.  path (may be NULL):
  * out, up to mA + mB + 1 pairs, *plen of them.  Returns the cost. */
 static double dp_align(const double *thA, int mA, double hA, const double *thB, int mB, double hB, double R,
+                       const double *dA, const double *dB, double wf,
                        int *path, int *plen, double *D, unsigned char *from)
 {
     int W = mB + 1;
@@ -94,13 +127,15 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
             if (!i && !j) { D[0] = 0; from[0] = 255; continue; }
             double best = INFINITY;
             int bs = 255;
+            double f = dA ? wf * desc_dist(dA + (size_t)i * BMATCH_SCALES, dB + (size_t)j * BMATCH_SCALES) : 0;
             for (int k = 0; k < 9; k++) {
                 int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
                 if (pi < 0 || pj < 0) continue;
                 double prev = D[(size_t)pi * W + pj];
                 if (!(prev < best)) continue;
                 double c = prev + fabs(STEPS[k][0] * hA - STEPS[k][1] * hB) +
-                           R * fabs((thA[i] - thA[pi]) - (thB[j] - thB[pj]));
+                           (R > 0 ? R * fabs((thA[i] - thA[pi]) - (thB[j] - thB[pj])) : 0) +
+                           f * 0.5 * (STEPS[k][0] * hA + STEPS[k][1] * hB);
                 if (c < best) { best = c; bs = k; }
             }
             D[(size_t)i * W + j] = best;
@@ -125,29 +160,63 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
     return cost;
 }
 
+/* how a segment is aligned: mode (BMATCH_*), bending weight R, feature weight wf */
+struct dpset {
+    int mode;
+    double R, wf;
+};
+
+/* the samples one side of the dynamic program needs: m + 1 tangent angles
+ * and (multi-scale mode) m + 1 descriptors */
+struct dpside {
+    double *th, *d;
+};
+
+static void dpside_fill(struct dpside *q, const struct outline *o, double s0, double len, int m, const struct dpset *ds)
+{
+    q->th = malloc((m + 1) * sizeof *q->th);
+    sample_angles(o, s0, len, m, q->th);
+    q->d = NULL;
+    if (ds->mode == BMATCH_MULTISCALE) {
+        q->d = malloc((size_t)(m + 1) * BMATCH_SCALES * sizeof *q->d);
+        sample_desc(o, s0, len, m, q->d);
+    }
+}
+
+static void dpside_free(struct dpside *q) { free(q->th); free(q->d); }
+
+/* dp_align of side a (mA steps) against side b from sample t on (mB steps) */
+static double dp_run(const struct dpside *a, int mA, double hA, const struct dpside *b, int t, int mB, double hB,
+                     const struct dpset *ds, int *path, int *plen, double *D, unsigned char *from)
+{
+    return dp_align(a->th, mA, hA, b->th + t, mB, hB, ds->R, a->d, b->d ? b->d + (size_t)t * BMATCH_SCALES : NULL,
+                    ds->wf, path, plen, D, from);
+}
+
 /* Align the segment of A from arc sA of length lenA with the segment of B
  * from sB of length lenB (M samples per perimeter); map A's vertices whose
  * arc offset from sA lies in [0, lenA) into tB.  Returns the cost. */
 static double align_segment(const struct outline *A, double sA, double lenA, const struct outline *B, double sB,
-                            double lenB, int M, double R, int arclength, double *tB)
+                            double lenB, int M, const struct dpset *ds, double *tB)
 {
     int mA = (int)ceil(M * lenA / A->L), mB = (int)ceil(M * lenB / B->L);
     if (mA < 1) mA = 1;
     if (mB < 1) mB = 1;
     int *path = NULL, plen = 2;
     double cost = 0;
-    if (arclength) {
+    if (ds->mode == BMATCH_ARCLENGTH) {
         path = malloc(4 * sizeof *path);
         path[0] = path[1] = 0; path[2] = mA; path[3] = mB;
     } else {
-        double *thA = malloc((mA + 1) * sizeof *thA), *thB = malloc((mB + 1) * sizeof *thB);
+        struct dpside a, b;
+        dpside_fill(&a, A, sA, lenA, mA, ds);
+        dpside_fill(&b, B, sB, lenB, mB, ds);
         double *D = malloc((size_t)(mA + 1) * (mB + 1) * sizeof *D);
         unsigned char *from = malloc((size_t)(mA + 1) * (mB + 1));
         path = malloc(2 * (size_t)(mA + mB + 1) * sizeof *path);
-        sample_angles(A, sA, lenA, mA, thA);
-        sample_angles(B, sB, lenB, mB, thB);
-        cost = dp_align(thA, mA, lenA / A->L / mA, thB, mB, lenB / B->L / mB, R, path, &plen, D, from);
-        free(thA); free(thB); free(D); free(from);
+        cost = dp_run(&a, mA, lenA / A->L / mA, &b, 0, mB, lenB / B->L / mB, ds, path, &plen, D, from);
+        dpside_free(&a); dpside_free(&b);
+        free(D); free(from);
     }
     /* piecewise-linear map along the path */
     for (int v = 0; v < A->n; v++) {
@@ -169,18 +238,18 @@ static double align_segment(const struct outline *A, double sA, double lenA, con
 
 /* cost of the closed alignment from A's sA with B's start at every coarse
  * shift; returns the best start arc on B after fine refinement */
-static double search_start(const struct outline *A, double sA, const struct outline *B, int M, double R)
+static double search_start(const struct outline *A, double sA, const struct outline *B, int M, const struct dpset *ds)
 {
     int Mc = M / 4 < 16 ? 16 : M / 4;
-    double *thA = malloc((Mc + 1) * sizeof *thA), *thB = malloc((2 * Mc + 1) * sizeof *thB);
+    struct dpside a, b;
+    dpside_fill(&a, A, sA, A->L, Mc, ds);
+    dpside_fill(&b, B, 0, 2 * B->L, 2 * Mc, ds);
     double *D = malloc((size_t)(M + 1) * (M + 1) * sizeof *D);
     unsigned char *from = malloc((size_t)(M + 1) * (M + 1));
-    sample_angles(A, sA, A->L, Mc, thA);
-    sample_angles(B, 0, 2 * B->L, 2 * Mc, thB);
     double best[3] = {INFINITY, INFINITY, INFINITY};
     int bi[3] = {0, 0, 0};
     for (int t = 0; t < Mc; t++) {
-        double c = dp_align(thA, Mc, 1.0 / Mc, thB + t, Mc, 1.0 / Mc, R, NULL, NULL, D, from);
+        double c = dp_run(&a, Mc, 1.0 / Mc, &b, t, Mc, 1.0 / Mc, ds, NULL, NULL, D, from);
         for (int k = 0; k < 3; k++)
             if (c < best[k]) {
                 for (int l = 2; l > k; l--) { best[l] = best[l - 1]; bi[l] = bi[l - 1]; }
@@ -188,22 +257,23 @@ static double search_start(const struct outline *A, double sA, const struct outl
                 break;
             }
     }
-    free(thA); free(thB);
+    dpside_free(&a); dpside_free(&b);
     /* fine: M samples, shifts within one coarse step of the three best */
-    double *fA = malloc((M + 1) * sizeof *fA), *fB = malloc((M + 1) * sizeof *fB);
-    sample_angles(A, sA, A->L, M, fA);
+    dpside_fill(&a, A, sA, A->L, M, ds);
     int r = M / Mc;
     double bestc = INFINITY, bests = 0;
     for (int k = 0; k < 3; k++) {
         if (!isfinite(best[k])) continue;
         for (int d = -r; d <= r; d++) {
             double s = wrap((bi[k] * r + d) * B->L / M, B->L);
-            sample_angles(B, s, B->L, M, fB);
-            double c = dp_align(fA, M, 1.0 / M, fB, M, 1.0 / M, R, NULL, NULL, D, from);
+            dpside_fill(&b, B, s, B->L, M, ds);
+            double c = dp_run(&a, M, 1.0 / M, &b, 0, M, 1.0 / M, ds, NULL, NULL, D, from);
+            dpside_free(&b);
             if (c < bestc) { bestc = c; bests = s; }
         }
     }
-    free(fA); free(fB); free(D); free(from);
+    dpside_free(&a);
+    free(D); free(from);
     return bests;
 }
 
@@ -229,6 +299,7 @@ int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pa
     if (prm->samples < 16 || prm->samples > 4096) return cm_seterr("samples must be in 16..4096");
     if (!(prm->bend >= 0 && prm->bend < 1e6) || !(prm->start_bend >= 0 && prm->start_bend < 1e6))
         return cm_seterr("bending weight must be >= 0");
+    if (!(prm->feature >= 0 && prm->feature < 1e6)) return cm_seterr("feature weight must be >= 0");
     if (prm->mode == BMATCH_ARCLENGTH && npairs < 1)
         return cm_seterr("arc-length matching needs a given correspondence point");
     if (check_pairs(pairs, npairs, na, nb) < 0) return -1;
@@ -236,17 +307,20 @@ int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pa
     if (outline_init(&A, Ap, na) < 0) return -1;
     if (outline_init(&B, Bp, nb) < 0) { free(A.cum); return -1; }
     double c = 0;
-    int M = prm->samples, arc = prm->mode == BMATCH_ARCLENGTH;
+    int M = prm->samples;
+    struct dpset ds = {prm->mode, prm->bend, prm->feature};
     if (npairs == 0) {
-        double s = search_start(&A, 0, &B, M, prm->start_bend);
-        c = align_segment(&A, 0, A.L, &B, s, B.L, M, prm->bend, 0, tB);
+        struct dpset ss = ds;
+        if (ss.mode == BMATCH_ELASTIC) ss.R = prm->start_bend;
+        double s = search_start(&A, 0, &B, M, &ss);
+        c = align_segment(&A, 0, A.L, &B, s, B.L, M, &ds, tB);
     } else {
         for (int k = 0; k < npairs; k++) {
             int a0 = pairs[2 * k], b0 = pairs[2 * k + 1];
             int a1 = pairs[2 * ((k + 1) % npairs)], b1 = pairs[2 * ((k + 1) % npairs) + 1];
             double lA = wrap(A.cum[a1] - A.cum[a0], A.L), lB = wrap(B.cum[b1] - B.cum[b0], B.L);
             if (npairs == 1) { lA = A.L; lB = B.L; }
-            c += align_segment(&A, A.cum[a0], lA, &B, B.cum[b0], lB, M, prm->bend, arc, tB);
+            c += align_segment(&A, A.cum[a0], lA, &B, B.cum[b0], lB, M, &ds, tB);
         }
     }
     if (cost) *cost = c;
@@ -267,6 +341,14 @@ static int nearest_vertex(const struct outline *o, double t)
     return best;
 }
 
+/* how far the multi-scale turning of B at arc t is from d */
+static double feature_gap(const struct outline *B, double t, const double *d)
+{
+    double e[BMATCH_SCALES];
+    sample_turning(B, t, e);
+    return desc_dist(d, e);
+}
+
 int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngiven, const int *want,
                 int nwant, int K, const struct bmatch_params *prm, int **corr_out, int *ncorr, double *cost)
 {
@@ -280,72 +362,115 @@ int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngi
         for (int l = 0; l < k; l++)
             if (want[l] == want[k]) return cm_seterr("points %d and %d: both are vertex %d of shape 0", l + 1, k + 1, want[k]);
     }
-    struct outline A;
-    if (outline_init(&A, P[0], n[0]) < 0) return -1;
+    int ms = prm->mode == BMATCH_MULTISCALE;
+    struct outline *O = calloc(N, sizeof *O);
+    double *tB = malloc((size_t)N * n[0] * sizeof *tB);   /* row s: shape 0's vertices on shape s */
+    int *pairs = malloc(2 * (ngiven + 1) * sizeof *pairs);
+    int rc = 0, s;
+    for (s = 0; s < N && rc == 0; s++)
+        if (outline_init(&O[s], P[s], n[s]) < 0) rc = -1;
+    int ninit = s - (rc < 0);
+    /* the maps of shape 0 onto every shape */
+    if (cost) cost[0] = 0;
+    for (s = 1; s < N && rc == 0; s++) {
+        for (int k = 0; k < ngiven; k++) { pairs[2 * k] = given[k * N]; pairs[2 * k + 1] = given[k * N + s]; }
+        double c;
+        if (bmatch_map(P[0], n[0], P[s], n[s], pairs, ngiven, prm, tB + (size_t)s * n[0], &c) < 0)
+            rc = cm_seterr("shape %d: %s", s, cm_errmsg());
+        else if (cost) cost[s] = c;
+    }
+    free(pairs);
+    if (rc < 0) {
+        for (s = 0; s < ninit; s++) free(O[s].cum);
+        free(O); free(tB);
+        return -1;
+    }
+    const struct outline *A = &O[0];
     /* salience of shape 0's vertices: turning between the chords of +-3% */
     double *sal = malloc(n[0] * sizeof *sal);
+    int *order = malloc(n[0] * sizeof *order);
     for (int i = 0; i < n[0]; i++) {
-        double w = 0.03 * A.L, p[2], q[2], r[2];
-        outline_point(&A, A.cum[i] - w, p);
-        outline_point(&A, A.cum[i], q);
-        outline_point(&A, A.cum[i] + w, r);
+        double w = 0.03 * A->L, p[2], q[2], r[2];
+        outline_point(A, A->cum[i] - w, p);
+        outline_point(A, A->cum[i], q);
+        outline_point(A, A->cum[i] + w, r);
         double t = atan2(r[1] - q[1], r[0] - q[0]) - atan2(q[1] - p[1], q[0] - p[0]);
         t -= 2 * M_PI * floor((t + M_PI) / (2 * M_PI));
         sal[i] = fabs(t);
+        order[i] = i;
     }
-    /* anchors on shape 0: the given points, then the most salient vertices */
-    int *anc = malloc(K * sizeof *anc), na = 0;
-    unsigned char *isgiven = calloc(n[0], 1);
-    for (int k = 0; k < ngiven; k++) { anc[na++] = given[k * N]; isgiven[given[k * N]] = 1; }
-    for (int k = 0; k < nwant; k++) anc[na++] = want[k];
-    double sep = 0.5 * A.L / K;
-    while (na < K) {
-        int best = -1;
-        for (int i = 0; i < n[0]; i++) {
-            int ok = 1;
-            for (int k = 0; k < na && ok; k++) {
-                double d = fabs(A.cum[i] - A.cum[anc[k]]);
-                if (fmin(d, A.L - d) < sep) ok = 0;
-            }
-            if (ok && (best < 0 || sal[i] > sal[best])) best = i;
+    for (int a = 1; a < n[0]; a++)      /* by salience, stable */
+        for (int b = a; b > 0 && sal[order[b]] > sal[order[b - 1]]; b--) {
+            int t = order[b]; order[b] = order[b - 1]; order[b - 1] = t;
         }
-        if (best < 0) break;
-        anc[na++] = best;
+    /* anchors on shape 0 with their vertices in every shape: the given
+     * points, the wanted ones, then the most salient vertices whose feature
+     * is found in every shape near where the map puts it */
+    int *anc = malloc(K * sizeof *anc), na = 0;
+    int *cand = malloc((size_t)K * N * sizeof *cand);
+    int *row = malloc(N * sizeof *row);
+    unsigned char *isgiven = calloc(n[0], 1);
+    double d0[BMATCH_SCALES];
+    for (int k = 0; k < ngiven + nwant; k++) {
+        int v = k < ngiven ? given[k * N] : want[k - ngiven];
+        if (k < ngiven) isgiven[v] = 1;
+        anc[na] = v;
+        for (s = 0; s < N; s++) {
+            cand[(size_t)na * N + s] = k < ngiven ? given[k * N + s]
+                                     : s == 0 ? v : nearest_vertex(&O[s], tB[(size_t)s * n[0] + v]);
+        }
+        na++;
     }
-    free(sal);
-    /* order the anchors along shape 0 from the first given one (or the first) */
+    double sep = 0.5 * A->L / K;
+    for (int oi = 0; oi < n[0] && na < K; oi++) {
+        int i = order[oi], ok = 1;
+        for (int k = 0; k < na && ok; k++) {
+            double d = fabs(A->cum[i] - A->cum[anc[k]]);
+            if (fmin(d, A->L - d) < sep) ok = 0;
+        }
+        if (!ok) continue;
+        sample_turning(A, A->cum[i], d0);
+        row[0] = i;
+        for (s = 1; s < N && ok; s++) {
+            double t = tB[(size_t)s * n[0] + i];
+            row[s] = nearest_vertex(&O[s], t);
+            if (ms && feature_gap(&O[s], t, d0) > prm->confidence) ok = 0;   /* a doubtful match */
+        }
+        if (!ok) continue;
+        anc[na] = i;
+        memcpy(cand + (size_t)na * N, row, N * sizeof *row);
+        na++;
+    }
+    /* too few confident points: the most salient ones anyway (the keeping
+     * below needs 3) */
+    for (int oi = 0; oi < n[0] && na < 3; oi++) {
+        int i = order[oi], ok = 1;
+        for (int k = 0; k < na && ok; k++) {
+            double d = fabs(A->cum[i] - A->cum[anc[k]]);
+            if (fmin(d, A->L - d) < sep) ok = 0;
+        }
+        if (!ok) continue;
+        anc[na] = i;
+        cand[(size_t)na * N] = i;
+        for (s = 1; s < N; s++) cand[(size_t)na * N + s] = nearest_vertex(&O[s], tB[(size_t)s * n[0] + i]);
+        na++;
+    }
+    free(sal); free(order); free(row);
+    for (s = 0; s < N; s++) free(O[s].cum);
+    free(O); free(tB);
+    /* order the rows along shape 0 from the first given point (or the first) */
     int origin = ngiven ? given[0] : anc[0];
     for (int a = 1; a < na; a++)
         for (int b = a; b > 0; b--) {
             int rb = (anc[b] - origin + n[0]) % n[0], ra = (anc[b - 1] - origin + n[0]) % n[0];
-            if (rb < ra) { int t = anc[b]; anc[b] = anc[b - 1]; anc[b - 1] = t; } else break;
+            if (rb >= ra) break;
+            int t = anc[b]; anc[b] = anc[b - 1]; anc[b - 1] = t;
+            for (s = 0; s < N; s++) {
+                int u = cand[(size_t)b * N + s];
+                cand[(size_t)b * N + s] = cand[(size_t)(b - 1) * N + s];
+                cand[(size_t)(b - 1) * N + s] = u;
+            }
         }
-    /* map them into every shape */
-    int *cand = malloc((size_t)na * N * sizeof *cand);
-    int *pairs = malloc(2 * (ngiven + 1) * sizeof *pairs);
-    double *tB = malloc(n[0] * sizeof *tB);
-    int rc = 0;
-    for (int a = 0; a < na; a++) cand[(size_t)a * N] = anc[a];
-    if (cost) cost[0] = 0;
-    for (int s = 1; s < N && rc == 0; s++) {
-        for (int k = 0; k < ngiven; k++) { pairs[2 * k] = given[k * N]; pairs[2 * k + 1] = given[k * N + s]; }
-        double c;
-        if (bmatch_map(P[0], n[0], P[s], n[s], pairs, ngiven, prm, tB, &c) < 0) {
-            rc = cm_seterr("shape %d: %s", s, cm_errmsg());
-            break;
-        }
-        if (cost) cost[s] = c;
-        struct outline B;
-        if (outline_init(&B, P[s], n[s]) < 0) { rc = -1; break; }
-        for (int a = 0; a < na; a++) {
-            int gk = -1;
-            for (int k = 0; k < ngiven; k++) if (given[k * N] == anc[a]) gk = k;
-            cand[(size_t)a * N + s] = gk >= 0 ? given[gk * N + s] : nearest_vertex(&B, tB[anc[a]]);
-        }
-        free(B.cum);
-    }
-    free(tB); free(pairs); free(A.cum);
-    if (rc < 0) { free(anc); free(isgiven); free(cand); return -1; }
     /* keep the rows that increase strictly along every outline, given rows always */
     int *corr = malloc((size_t)na * N * sizeof *corr), nc = 0;
     for (int a = 0; a < na; a++) {

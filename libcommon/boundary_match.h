@@ -34,17 +34,34 @@ extern "C" {
 #endif
 
 enum {
-    BMATCH_ELASTIC = 0,   /* the dynamic program above (default) */
-    BMATCH_ARCLENGTH = 1  /* baseline: normalized arc length between given pairs (needs one) */
+    BMATCH_ELASTIC = 0,   /* the dynamic program above (Sebastian et al.'s cost, as Baxter et al.) */
+    BMATCH_ARCLENGTH = 1, /* baseline: normalized arc length between given pairs (needs one) */
+    BMATCH_MULTISCALE = 2 /* default: the same program with a multi-scale feature term (below) */
 };
 
+/* Multi-scale mode: every sample carries the turning of the outline at
+ * BMATCH_SCALES scales h = 1, 2, 4, 8% of the perimeter (the signed angle
+ * between the chords p(s - h) -> p(s) and p(s) -> p(s + h), over pi), and
+ * every step adds  F * (dsA + dsB) / 2 * mean_k |turnA_k - turnB_k|  at
+ * the step's end: a leg tip, an ear or a notch is matched to the same kind
+ * of feature even where the local stretch is large (articulated poses: a
+ * leg swung forward moves its tip by 10% of the perimeter and more), and
+ * pixel staircases, shorter than 1% of the perimeter, do not count. */
+#define BMATCH_SCALES 4
+
 struct bmatch_params {
-    int mode;         /* BMATCH_ELASTIC or BMATCH_ARCLENGTH */
+    int mode;         /* BMATCH_MULTISCALE, BMATCH_ELASTIC or BMATCH_ARCLENGTH */
     int samples;      /* M: fine samples per perimeter (default 256; 16..4096) */
     double bend;      /* R: weight of the bending term, per radian (default 0.03) */
     double start_bend; /* R used to choose the start when no pair is given
                         (default 0.3: the shift is decided by the corners; with
                         0.03 a three-lobed test shape took the wrong lobe) */
+    double feature;   /* F: weight of the multi-scale feature term (default 30) */
+    double confidence; /* multi-scale mode, bmatch_corr: a salient point of shape 0
+                         whose multi-scale turning differs from that where the map
+                         puts it in some shape by more than this (mean over the
+                         scales, in units of pi; default 0.1) is a doubtful match
+                         and not used (given and wanted points always are) */
 };
 
 /* Default parameters. */

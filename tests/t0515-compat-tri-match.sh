@@ -24,19 +24,25 @@ test_expect_success 'setup: the two poses, points 20 48 60 76 100 picked on pose
 	awk -v pose=1 -f "$TEST_DIRECTORY/t0515-match-shape.awk" >pose1.rings &&
 	printf "20 -1\n48 -1\n60 -1\n76 -1\n100 -1\n" >picked.txt
 '
-test_expect_success 'one given point: the picked points land within 1% of the perimeter (arc length alone: over 5%)' '
+# multiscale (default): one vertex of pose 1 off in the stretched lobe
+# (1.5%); elastic under 1%
+test_expect_success 'one given point: the picked points land within 2% of the perimeter (arc length alone: over 5%)' '
 	{ echo "0 73"; cat picked.txt; } >one.txt &&
 	compat-tri -c one.txt --match-points 3 --points-out m1.txt pose0.rings pose1.rings >m1.mesh &&
 	test $(grep -vc "^#" m1.txt) -eq 6 &&
 	grep -q "^0 73$" m1.txt &&
-	w=$(worst m1.txt) && echo "elastic worst $w%" && test_le $w 1 &&
+	w=$(worst m1.txt) && echo "multiscale worst $w%" && test_le $w 2 &&
+	compat-tri -m elastic -c one.txt --match-points 3 --points-out e1.txt pose0.rings pose1.rings >e1.mesh &&
+	w=$(worst e1.txt) && echo "elastic worst $w%" && test_le $w 1 &&
 	compat-tri -m arclength -c one.txt --match-points 3 --points-out a1.txt pose0.rings pose1.rings >a1.mesh &&
 	w=$(worst a1.txt) && echo "arc length worst $w%" && test_le 5 $w
 '
-test_expect_success 'no given point: the start is found too, the same points within 1%' '
+test_expect_success 'no given point: the start is found too, the same points within 2% (elastic: 1%)' '
 	{ echo "0 -1"; cat picked.txt; } >none.txt &&
 	compat-tri -c none.txt --match-points 3 --points-out m0.txt pose0.rings pose1.rings >m0.mesh &&
-	w=$(worst m0.txt) && echo "worst $w%" && test_le $w 1
+	w=$(worst m0.txt) && echo "worst $w%" && test_le $w 2 &&
+	compat-tri -m elastic -c none.txt --match-points 3 --points-out e0.txt pose0.rings pose1.rings >e0.mesh &&
+	w=$(worst e0.txt) && echo "elastic worst $w%" && test_le $w 1
 '
 test_expect_success 'no -c at all: 12 points placed, the mesh is compatible, --points-out feeds -c back' '
 	compat-tri -v --points-out auto.txt pose0.rings pose1.rings >auto.mesh 2>err &&

@@ -38,15 +38,20 @@ static const char help[] =
 "                        ring k with ring k) or 'nearest' (each shape's rings\n"
 "                        reordered to SHAPE0's by nesting and nearest mean\n"
 "                        vertex, e.g. for frames traced by img2rings)\n"
-"  -m, --match MODE      'elastic' (default with fewer than 3 rows: Baxter et\n"
-"                        al.'s optimized boundary mapping, curvature and stretch\n"
-"                        by dynamic programming; without rows the start is found\n"
-"                        by trying every cyclic shift), 'arclength' (baseline:\n"
-"                        arc length from the given rows) or 'off' (default with\n"
-"                        3 or more rows)\n"
+"  -m, --match MODE      with fewer than 3 rows: 'multiscale' (default: Baxter\n"
+"                        et al.'s optimized boundary mapping by dynamic\n"
+"                        programming, stretch plus a multi-scale turning term so\n"
+"                        legs, ears and notches meet their like; without rows the\n"
+"                        start is found by trying every cyclic shift), 'elastic'\n"
+"                        (the paper's cost: stretch and bending, Sebastian et al.),\n"
+"                        'arclength' (baseline: arc length from the given rows) or\n"
+"                        'off' (default with 3 or more rows)\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
-"                        rows plus SHAPE0's most salient corners (default 12)\n"
+"                        rows plus SHAPE0's most salient corners (default 12;\n"
+"                        multiscale leaves out a corner whose turning the map does\n"
+"                        not find in some shape)\n"
 "      --bend R          weight of the bending term of the matching (default 0.03)\n"
+"      --feature F       weight of the multi-scale turning term (default 30)\n"
 "      --points-out FILE write the correspondence points used (a -c file, indices\n"
 "                        in file order) to FILE, to look at (mesh2svg\n"
 "                        --points-file) and edit\n"
@@ -84,7 +89,7 @@ static const char help[] =
 struct options {
     const char *corr, *output, *interior, *points_out;
     int match, match_points;
-    double bend;
+    double bend, feature;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv;
     double min_angle;
@@ -99,10 +104,10 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"match-rings", 1, 0, 'M'},
         {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'X'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
-        {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {0, 0, 0, 0}};
+        {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20;
-    o->match = -1; o->match_points = 12; o->bend = 0.03;
+    o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 30;
     int c;
     while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:m:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -131,13 +136,15 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'X': o->max_nv = arg_int(optarg, "--max-vertices"); break;
         case 'R': o->raw = 1; break;
         case 'm':
-            if (!strcmp(optarg, "elastic")) o->match = BMATCH_ELASTIC;
+            if (!strcmp(optarg, "multiscale")) o->match = BMATCH_MULTISCALE;
+            else if (!strcmp(optarg, "elastic")) o->match = BMATCH_ELASTIC;
             else if (!strcmp(optarg, "arclength")) o->match = BMATCH_ARCLENGTH;
             else if (!strcmp(optarg, "off")) o->match = -2;
-            else usage_error("--match must be 'elastic', 'arclength' or 'off'");
+            else usage_error("--match must be 'multiscale', 'elastic', 'arclength' or 'off'");
             break;
         case 'K': o->match_points = arg_int(optarg, "--match-points"); break;
         case 'B': o->bend = arg_double(optarg, "--bend"); break;
+        case 'F': o->feature = arg_double(optarg, "--feature"); break;
         case 'P': o->points_out = optarg; break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;
@@ -148,6 +155,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     }
     if (o->match_points < 3 || o->match_points > 1000) usage_error("--match-points must be in 3..1000");
     if (!(o->bend >= 0 && o->bend < 1e6)) usage_error("--bend must be >= 0");
+    if (!(o->feature >= 0 && o->feature < 1e6)) usage_error("--feature must be >= 0");
     if (!o->corr && o->match == -2) usage_error("--match off needs -c CORR with at least 3 rows");
     if (!o->corr && o->match == BMATCH_ARCLENGTH) usage_error("--match arclength needs -c CORR (a start point)");
     if (!(o->err >= 0 && o->err < 1)) usage_error("--error must be in [0, 1)");
@@ -205,13 +213,15 @@ static int *match_points(const struct options *o, int N, double **P, const int *
     bmatch_defaults(&prm);
     prm.mode = o->match;
     prm.bend = o->bend;
+    prm.feature = o->feature;
     int *corr, nc, K = o->match_points;
     double *cost = malloc(N * sizeof *cost);
     if (bmatch_corr(N, P, n, given, *ncorr, want, nwant, K, &prm, &corr, &nc, cost) < 0)
         die("boundary matching failed: %s", cm_errmsg());
     for (int s = 1; s < N; s++)
         info(1, "%s: matched to %s (%s, cost %.4g)", o->shapes[s], o->shapes[0],
-             o->match == BMATCH_ARCLENGTH ? "arc length" : "elastic", cost[s]);
+             o->match == BMATCH_ARCLENGTH ? "arc length" : o->match == BMATCH_ELASTIC ? "elastic" : "multiscale",
+             cost[s]);
     info(1, "boundary matching: %d point%s given in every shape, %d in %s only, %d correspondence points "
             "placed", *ncorr, *ncorr == 1 ? "" : "s", nwant, o->shapes[0], nc);
     free(cost);
@@ -272,7 +282,7 @@ static void build_single(struct options *o, struct rings *R, struct compat *cp)
         }
         if (unknown) nwant++; else ncorr++;
     }
-    if (o->match < 0 && o->match != -2) o->match = ncorr < 3 ? BMATCH_ELASTIC : -2;
+    if (o->match < 0 && o->match != -2) o->match = ncorr < 3 ? BMATCH_MULTISCALE : -2;
     if (o->match == -2 && (ncorr < 3 || nwant))
         die("cannot read '%s': %d correspondence point%s%s; at least 3 are needed without --match",
             o->corr, ncorr, ncorr == 1 ? "" : "s", nwant ? " given in every shape" : "");

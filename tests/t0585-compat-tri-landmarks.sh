@@ -1,0 +1,63 @@
+#!/bin/sh
+test_description='compat-tri matching on traced camel poses: landmarks picked on pose 0 only land on the same feature'
+. "$(dirname "$0")/test-lib.sh"
+need_shared_data scans/camel-gallop-05.off
+
+# Five gallop frames rendered from the side and traced (as t0516).  Seven
+# landmarks per pose picked by eye on the 300x300 renders (pixel units, y
+# up): ear tip, snout, neck-hump notch, first and second hoof along the
+# outline, last (rear) hoof, tail tip.  Each is snapped to the nearest
+# outline vertex (all within 6 pixels).
+lm() {
+	case $1 in
+	1) echo "40 221 26 177 80 191 12 95 115 80 287 109 239 196" ;;
+	2) echo "30 226 16 177 82 192 31 65 151 64 285 72 256 198" ;;
+	3) echo "28 226 14 178 83 193 72 62 153 94 288 91 243 189" ;;
+	4) echo "30 230 16 172 82 191 137 71 182 70 287 65 261 177" ;;
+	5) echo "30 248 16 181 98 204 128 55 198 40 287 36 285 184" ;;
+	esac
+}
+# vertices RINGS POSE: the landmarks' vertex indices, one a line
+vertices() {
+	lm $2 | tr ' ' '\n' | paste -d' ' - - | awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
+	{ b = -1; for (i = 0; i < n; i++) { d = ($1 - x[i]) ^ 2 + ($2 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
+	  if (bd > 36) { print "landmark far from the outline" >"/dev/stderr"; exit 1 } print b }' "$1" -
+}
+# worst A B [compat-tri options]: worst arc error (% of the perimeter of
+# pose B) of A's landmarks placed in B by the matching
+worst() {
+	a=$1 b=$2 && shift 2 &&
+	vertices camel$a.rings $a >va && vertices camel$b.rings $b >vb &&
+	awk '{ print $1, -1 }' va >want &&
+	compat-tri "$@" --refine none -c want --points-out got camel$a.rings camel$b.rings >/dev/null &&
+	grep -v "^#" got | awk 'NR == FNR { t[$1] = FNR; next } ($1 in t) { print $2, t[$1] }' va - |
+	while read v k; do echo "$v $(sed -n "${k}p" vb)"; done >placed &&
+	test $(wc -l <placed) -eq 7 &&
+	awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
+	FNR == 1 { c[0] = 0; for (i = 0; i < n; i++) { j = (i + 1) % n; c[i + 1] = c[i] + sqrt((x[j] - x[i]) ^ 2 + (y[j] - y[i]) ^ 2) } L = c[n] }
+	{ d = c[$1] - c[$2]; if (d < 0) d = -d; if (L - d < d) d = L - d; if (d > m) m = d }
+	END { printf "%.2f\n", 100 * m / L }' camel$b.rings placed
+}
+
+test_expect_success 'generate five camel poses: mesh-import | mesh-render | img2rings' '
+	for i in 1 2 3 4 5; do
+		mesh-import "$SHARED_DATA/scans/camel-gallop-0$i.off" |
+		mesh-render -V right -s 300x300 -c 0,0,0 --flat -f ppm >camel$i.ppm &&
+		img2rings -1 -s 1 -o camel$i.rings camel$i.ppm || return 1
+	done
+'
+# measured: multiscale 0.56, 0.48, 0.56; elastic (the old default) 5.02, 10.10, 5.29
+test_expect_success 'legs swung the other way: every landmark within 1% (Sebastian-Kimia cost alone: 5-10%)' '
+	for p in "4 5" "5 4" "5 2"; do
+		w=$(worst $p) && echo "poses $p: worst $w%" && test_le $w 1 &&
+		e=$(worst $p -m elastic) && echo "poses $p, -m elastic: worst $e%" && test_le 5 $e || return 1
+	done
+'
+# measured: multiscale 5.29, 6.50, 1.23 (one hoof each in the first two: the
+# legs cross differently); elastic 5.29, 6.50, 1.81
+test_expect_success 'from the first frame: every landmark within 7%' '
+	for p in "1 2" "1 3" "1 4"; do
+		w=$(worst $p) && echo "poses $p: worst $w%" && test_le $w 7 || return 1
+	done
+'
+test_done
