@@ -11,8 +11,7 @@ void bmatch_defaults(struct bmatch_params *prm)
     prm->samples = 256;
     prm->bend = 0.03;
     prm->start_bend = 0.3;
-    prm->feature = 30;
-    prm->confidence = 0.1;
+    prm->feature = 10;
 }
 
 /* a closed polygon with cumulative arc lengths */
@@ -341,14 +340,6 @@ static int nearest_vertex(const struct outline *o, double t)
     return best;
 }
 
-/* how far the multi-scale turning of B at arc t is from d */
-static double feature_gap(const struct outline *B, double t, const double *d)
-{
-    double e[BMATCH_SCALES];
-    sample_turning(B, t, e);
-    return desc_dist(d, e);
-}
-
 int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngiven, const int *want,
                 int nwant, int K, const struct bmatch_params *prm, int **corr_out, int *ncorr, double *cost)
 {
@@ -362,7 +353,6 @@ int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngi
         for (int l = 0; l < k; l++)
             if (want[l] == want[k]) return cm_seterr("points %d and %d: both are vertex %d of shape 0", l + 1, k + 1, want[k]);
     }
-    int ms = prm->mode == BMATCH_MULTISCALE;
     struct outline *O = calloc(N, sizeof *O);
     double *tB = malloc((size_t)N * n[0] * sizeof *tB);   /* row s: shape 0's vertices on shape s */
     int *pairs = malloc(2 * (ngiven + 1) * sizeof *pairs);
@@ -404,13 +394,11 @@ int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngi
             int t = order[b]; order[b] = order[b - 1]; order[b - 1] = t;
         }
     /* anchors on shape 0 with their vertices in every shape: the given
-     * points, the wanted ones, then the most salient vertices whose feature
-     * is found in every shape near where the map puts it */
+     * points, the wanted ones, then the most salient vertices */
     int *anc = malloc(K * sizeof *anc), na = 0;
     int *cand = malloc((size_t)K * N * sizeof *cand);
     int *row = malloc(N * sizeof *row);
     unsigned char *isgiven = calloc(n[0], 1);
-    double d0[BMATCH_SCALES];
     for (int k = 0; k < ngiven + nwant; k++) {
         int v = k < ngiven ? given[k * N] : want[k - ngiven];
         if (k < ngiven) isgiven[v] = 1;
@@ -429,30 +417,10 @@ int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngi
             if (fmin(d, A->L - d) < sep) ok = 0;
         }
         if (!ok) continue;
-        sample_turning(A, A->cum[i], d0);
         row[0] = i;
-        for (s = 1; s < N && ok; s++) {
-            double t = tB[(size_t)s * n[0] + i];
-            row[s] = nearest_vertex(&O[s], t);
-            if (ms && feature_gap(&O[s], t, d0) > prm->confidence) ok = 0;   /* a doubtful match */
-        }
-        if (!ok) continue;
+        for (s = 1; s < N; s++) row[s] = nearest_vertex(&O[s], tB[(size_t)s * n[0] + i]);
         anc[na] = i;
         memcpy(cand + (size_t)na * N, row, N * sizeof *row);
-        na++;
-    }
-    /* too few confident points: the most salient ones anyway (the keeping
-     * below needs 3) */
-    for (int oi = 0; oi < n[0] && na < 3; oi++) {
-        int i = order[oi], ok = 1;
-        for (int k = 0; k < na && ok; k++) {
-            double d = fabs(A->cum[i] - A->cum[anc[k]]);
-            if (fmin(d, A->L - d) < sep) ok = 0;
-        }
-        if (!ok) continue;
-        anc[na] = i;
-        cand[(size_t)na * N] = i;
-        for (s = 1; s < N; s++) cand[(size_t)na * N + s] = nearest_vertex(&O[s], tB[(size_t)s * n[0] + i]);
         na++;
     }
     free(sal); free(order); free(row);

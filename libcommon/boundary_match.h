@@ -56,12 +56,7 @@ struct bmatch_params {
     double start_bend; /* R used to choose the start when no pair is given
                         (default 0.3: the shift is decided by the corners; with
                         0.03 a three-lobed test shape took the wrong lobe) */
-    double feature;   /* F: weight of the multi-scale feature term (default 30) */
-    double confidence; /* multi-scale mode, bmatch_corr: a salient point of shape 0
-                         whose multi-scale turning differs from that where the map
-                         puts it in some shape by more than this (mean over the
-                         scales, in units of pi; default 0.1) is a doubtful match
-                         and not used (given and wanted points always are) */
+    double feature;   /* F: weight of the multi-scale feature term (default 10) */
 };
 
 /* Default parameters. */

@@ -13,8 +13,6 @@ test_expect_success 'generate five camel poses: mesh-import | mesh-render | img2
 	done &&
 	for i in 1 2 3 4 5; do n=$(sed -n "s/^ring //p" camel$i.rings); test $n -ge 100 || return 1; done
 '
-# the matching places 8 to 12 points here (a point whose feature it does not
-# find where the map puts it in some pose is left out)
 test_expect_success 'every pair and every triple of poses: compatible meshes without a single click' '
 	fail=0 &&
 	for s in "1 2" "1 3" "1 4" "1 5" "2 3" "2 4" "2 5" "3 4" "3 5" "4 5" \
@@ -22,7 +20,7 @@ test_expect_success 'every pair and every triple of poses: compatible meshes wit
 		f= && for i in $s; do f="$f camel$i.rings"; done &&
 		if compat-tri --points-out p.txt $f >m.mesh 2>err; then
 			k=$(echo $s | wc -w) &&
-			grep -q "^frames $k" m.mesh && test $(grep -vc "^#" p.txt) -ge 6 || fail=$((fail + 1))
+			grep -q "^frames $k" m.mesh && test $(grep -vc "^#" p.txt) -ge 10 || fail=$((fail + 1))
 		else echo "poses $s: $(cat err)"; fail=$((fail + 1)); fi
 	done &&
 	echo "failed: $fail of 20" && test $fail -eq 0

@@ -47,11 +47,9 @@ static const char help[] =
 "                        'arclength' (baseline: arc length from the given rows) or\n"
 "                        'off' (default with 3 or more rows)\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
-"                        rows plus SHAPE0's most salient corners (default 12;\n"
-"                        multiscale leaves out a corner whose turning the map does\n"
-"                        not find in some shape)\n"
+"                        rows plus SHAPE0's most salient corners (default 12)\n"
 "      --bend R          weight of the bending term of the matching (default 0.03)\n"
-"      --feature F       weight of the multi-scale turning term (default 30)\n"
+"      --feature F       weight of the multi-scale turning term (default 10)\n"
 "      --points-out FILE write the correspondence points used (a -c file, indices\n"
 "                        in file order) to FILE, to look at (mesh2svg\n"
 "                        --points-file) and edit\n"
@@ -107,7 +105,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20;
-    o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 30;
+    o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 10;
     int c;
     while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:m:vh", lo, NULL)) != -1) {
         switch (c) {
