@@ -276,6 +276,35 @@ static inline double box_d2(const double *q, const R *lo, const R *hi)
     return s;
 }
 
+// For the walks of the wide tree: q rounded down (qd) and up (qu) to
+// single precision, each broadcast to four lanes; the box distances of
+// box4_d2() are then never larger than the exact ones, less rounding.
+typedef float v4 __attribute__((vector_size(16)));
+static void query_bounds(const double q[3], v4 qd[3], v4 qu[3])
+{
+    for (int d = 0; d < 3; d++) {
+        float f = (float)q[d], lo = f, hi = f;
+        if ((double)f > q[d]) lo = std::nextafter(f, -HUGE_VALF);
+        if ((double)f < q[d]) hi = std::nextafter(f, HUGE_VALF);
+        qd[d] = (v4){lo, lo, lo, lo}; qu[d] = (v4){hi, hi, hi, hi};
+    }
+}
+// the squared distances from the query (query_bounds()) to n's four boxes
+static inline v4 box4_d2(const wide_node &n, const v4 qd[3], const v4 qu[3])
+{
+    const v4 zero = {0, 0, 0, 0};
+    v4 s2 = zero;
+    for (int d = 0; d < 3; d++) {
+        v4 lo, hi;
+        memcpy(&lo, n.lo[d], sizeof lo); memcpy(&hi, n.hi[d], sizeof hi);
+        v4 a = lo - qu[d], b = qd[d] - hi;
+        v4 e = a > b ? a : b;
+        e = e > zero ? e : zero;
+        s2 += e * e;
+    }
+    return s2;
+}
+
 // the nearest triangle: a walk of the flat tree (or of the wide one),
 // nearer child first, skipping every box (and triangle box) no nearer than
 // the best so far
@@ -307,19 +336,10 @@ struct Nearest {
     // the walk of the wide tree: the same answer as walk()
     void walk4()
     {
-        typedef float v4 __attribute__((vector_size(16)));
         const std::vector<wide_node> &N = T->wide;
         if (N.empty()) { test(0, 0); return; }
-        // q rounded down and up to single precision: the box distances
-        // below are then never larger than the exact ones, less rounding
         v4 qd[3], qu[3];
-        for (int d = 0; d < 3; d++) {
-            float f = (float)q[d], lo = f, hi = f;
-            if ((double)f > q[d]) lo = std::nextafter(f, -HUGE_VALF);
-            if ((double)f < q[d]) hi = std::nextafter(f, HUGE_VALF);
-            qd[d] = (v4){lo, lo, lo, lo}; qu[d] = (v4){hi, hi, hi, hi};
-        }
-        const v4 zero = {0, 0, 0, 0};
+        query_bounds(q, qd, qu);
         int stack[128], top = 0;
         double sd[128];
         stack[top] = 0; sd[top++] = 0;
@@ -327,15 +347,7 @@ struct Nearest {
             --top;
             if (sd[top] > best && face >= 0) continue;
             const wide_node &n = N[stack[top]];
-            v4 s2 = zero;
-            for (int d = 0; d < 3; d++) {
-                v4 lo, hi;
-                memcpy(&lo, n.lo[d], sizeof lo); memcpy(&hi, n.hi[d], sizeof hi);
-                v4 a = lo - qu[d], b = qd[d] - hi;
-                v4 e = a > b ? a : b;
-                e = e > zero ? e : zero;
-                s2 += e * e;
-            }
+            v4 s2 = box4_d2(n, qd, qu);
             // a lower bound of each box's squared distance (the float
             // rounding of the sums above is far below 1e-5 relative; past
             // the float range, no bound)
@@ -571,33 +583,18 @@ extern "C" int closest_point_faces_within_visit(const struct closest_point_tree 
     // the wide tree's walk, every box within r (its float box rounded
     // outward and the query rounded both ways: no face within r is missed),
     // then the triangle's own distance
-    typedef float v4 __attribute__((vector_size(16)));
     double r2 = r * r;
     if (T->wide.empty()) {
         double c[3], b[3];
         return tri_closest(&T->P[0], p, c, b) <= r2 ? visit(0, ctx) : 0;
     }
     v4 qd[3], qu[3];
-    for (int d = 0; d < 3; d++) {
-        float f = (float)p[d], lo = f, hi = f;
-        if ((double)f > p[d]) lo = std::nextafter(f, -HUGE_VALF);
-        if ((double)f < p[d]) hi = std::nextafter(f, HUGE_VALF);
-        qd[d] = (v4){lo, lo, lo, lo}; qu[d] = (v4){hi, hi, hi, hi};
-    }
-    const v4 zero = {0, 0, 0, 0};
+    query_bounds(p, qd, qu);
     std::vector<int> stack(1, 0);
     while (!stack.empty()) {
         const wide_node &n = T->wide[stack.back()];
         stack.pop_back();
-        v4 s2 = zero;
-        for (int d = 0; d < 3; d++) {
-            v4 lo, hi;
-            memcpy(&lo, n.lo[d], sizeof lo); memcpy(&hi, n.hi[d], sizeof hi);
-            v4 a = lo - qu[d], b = qd[d] - hi;
-            v4 e = a > b ? a : b;
-            e = e > zero ? e : zero;
-            s2 += e * e;
-        }
+        v4 s2 = box4_d2(n, qd, qu);
         for (int s = 0; s < 4; s++) {
             if (n.child[s] == NONE || (s2[s] < HUGE_VALF && (double)s2[s] * (1 - 1e-5) > r2)) continue;
             if (n.child[s] >= 0) { stack.push_back(n.child[s]); continue; }
