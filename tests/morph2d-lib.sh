@@ -62,3 +62,10 @@ creature_poses() {
 	cat tips0 tips1 tips2 tips3 tips4 tips5 | awk '{ for (i = 1; i <= NF; i++) r[i] = r[i] " " $i }
 		END { for (i = 1; i <= 5; i++) print substr(r[i], 2) }' >corr.txt
 }
+
+# elephant_walk_frames K...: elephant/frame_K.obj of the shared elephant walk
+# (anim/elephant-walk-457.tar.xz) into the current directory, for each K
+elephant_walk_frames() {
+	files= && for k in "$@"; do files="$files elephant/frame_$k.obj"; done &&
+	tar -xJf "$SHARED_DATA/anim/elephant-walk-457.tar.xz" -C . $files
+}

@@ -1,12 +1,12 @@
 #!/bin/sh
 test_description='compat-tri on traced frames with holes: the elephant walk rendered from the front (mesh-render), traced (img2rings), the gaps between trunk and ears as holes'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/morph2d-lib.sh"
 need_shared_data anim/elephant-walk-457.tar.xz
 
 FRAMES="0000 0080 0180 0200"
 test_expect_success 'setup: four frames traced, an outer ring and two holes each' '
-	files= && for k in $FRAMES; do files="$files elephant/frame_$k.obj"; done &&
-	tar -xJf "$SHARED_DATA/anim/elephant-walk-457.tar.xz" -C . $files &&
+	elephant_walk_frames $FRAMES &&
 	for k in $FRAMES; do
 		mesh-import elephant/frame_$k.obj >e$k.mesh &&
 		mesh-render -V front -s 400x400 -c 0,0,0 --supersample 1 -f ppm e$k.mesh >f$k.ppm &&

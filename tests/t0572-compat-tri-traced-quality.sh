@@ -6,8 +6,7 @@ need_shared_data anim/elephant-walk-457.tar.xz
 
 FRAMES="0000 0140 0210 0280"
 test_expect_success 'setup: four walk frames traced from the side (78-123 outline points)' '
-	files= && for k in $FRAMES; do files="$files elephant/frame_$k.obj"; done &&
-	tar -xJf "$SHARED_DATA/anim/elephant-walk-457.tar.xz" -C . $files &&
+	elephant_walk_frames $FRAMES &&
 	for k in $FRAMES; do
 		mesh-import elephant/frame_$k.obj |
 		mesh-render -V right -s 300x300 -c 0,0,0 --flat -f ppm >w$k.ppm &&
