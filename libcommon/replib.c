@@ -325,11 +325,12 @@ struct lstate {
     int nnz, cap;   /* right-hand side triplets: row = position in fidx */
     int *ri, *ci;
     double *v;
+    double *A;      /* d by d: the system A of the last library step (not copied by lstate_copy) */
 };
 
 static void lstate_free(struct lstate *s)
 {
-    free(s->src); free(s->fidx); free(s->Uf); free(s->ri); free(s->ci); free(s->v);
+    free(s->src); free(s->fidx); free(s->Uf); free(s->ri); free(s->ci); free(s->v); free(s->A);
     memset(s, 0, sizeof *s);
 }
 
@@ -441,7 +442,9 @@ static int library_step(const struct replib_data *D, int d, double mu, const int
                 if (s->src[j] >= 0 && v != 0 && push(s, p, s->src[j], -v) < 0) goto oom;
             }
     }
-    free(count); free(fpos); free(A); free(order);
+    free(count); free(fpos); free(order);
+    free(s->A);
+    s->A = A;
     return 0;
 oom:
     free(count); free(fpos); free(A); free(order);
@@ -552,12 +555,19 @@ struct work {
     int ncand;                  /* > 0: label steps restricted to this many candidates per frame (search trials) */
     double *qd;                 /* d: the diagonal of Q */
     double *Pb, *Qb;            /* P and Q of the best library of the search (restored when a trial fails) */
+    /* incremental costs (direct back end): P, Q and Rw are those of the
+     * library solved for the labels lw when have = 1 */
+    int *lw, have, ninc;
+    int *lwb, haveb;            /* the same for Pb, Qb, Rwb */
+    double *Rwb;
+    int *smark;                 /* d: position of a piece in the changed set, or -1 */
 };
 
 static void work_free(struct work *w)
 {
     free(w->P); free(w->Q); free(w->C); free(w->Rw); free(w->U); free(w->T); free(w->H); free(w->c);
     free(w->Pb); free(w->Qb); free(w->qd);
+    free(w->lw); free(w->lwb); free(w->Rwb); free(w->smark);
     memset(w, 0, sizeof *w);
 }
 
@@ -575,6 +585,10 @@ static int work_init(struct work *w, const struct replib_data *D, int d)
     w->qd = malloc(sizeof(double) * d);
     if (D->K) w->C = malloc(sizeof(double) * (size_t)d * N);
     else w->Rw = malloc(sizeof(double) * (size_t)d * D->zdim);
+    w->lw = malloc(sizeof(int) * n);
+    w->smark = malloc(sizeof(int) * d);
+    if (!w->lw || !w->smark) { work_free(w); return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, d); }
+    for (int a = 0; a < d; a++) w->smark[a] = -1;
     if (!w->P || !w->Q || !w->qd || !w->U || !w->T || !w->H || !w->c || !(D->K ? (void *)w->C : (void *)w->Rw)) {
         work_free(w);
         return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, d);
@@ -659,6 +673,7 @@ static void derive_costs(const struct replib_data *D, double mu, struct work *w)
 static int compute_costs(const struct replib_data *D, const struct lstate *s, double mu, struct work *w)
 {
     int N = D->N, n = D->n, d = w->d, m3 = D->zdim;
+    w->have = 0;
     if (D->K) {
         if (gram_costs(D, s, w) < 0) return -1;
         /* symmetrize Q (the Gram product is symmetric only up to rounding) */
@@ -684,20 +699,103 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
  * recomputing the products (same numbers as recomputing them). */
 static int best_costs(const struct replib_data *D, double mu, struct work *w, int save)
 {
-    size_t np = (size_t)D->N * w->d, nq = (size_t)w->d * w->d;
+    size_t np = (size_t)D->N * w->d, nq = (size_t)w->d * w->d, nr = D->K ? 0 : (size_t)w->d * D->zdim;
     if (!w->Pb) {
         w->Pb = malloc(sizeof(double) * np);
         w->Qb = malloc(sizeof(double) * nq);
-        if (!w->Pb || !w->Qb) return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, w->d);
+        w->lwb = malloc(sizeof(int) * D->n);
+        w->Rwb = nr ? malloc(sizeof(double) * nr) : NULL;
+        if (!w->Pb || !w->Qb || !w->lwb || (nr && !w->Rwb))
+            return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, w->d);
     }
     if (save) {
         memcpy(w->Pb, w->P, sizeof(double) * np);
         memcpy(w->Qb, w->Q, sizeof(double) * nq);
+        w->haveb = w->have;
+        if (w->have) {
+            memcpy(w->lwb, w->lw, sizeof(int) * D->n);
+            memcpy(w->Rwb, w->Rw, sizeof(double) * nr);
+        }
     } else {
         memcpy(w->P, w->Pb, sizeof(double) * np);
         memcpy(w->Q, w->Qb, sizeof(double) * nq);
+        w->have = w->haveb;
+        w->ninc = 0;
+        if (w->have) {
+            memcpy(w->lw, w->lwb, sizeof(int) * D->n);
+            memcpy(w->Rw, w->Rwb, sizeof(double) * nr);
+        }
         derive_costs(D, mu, w);
     }
+    return 0;
+}
+
+/* Costs of the library step s (just solved for labels l) from those of
+ * the labels w->lw (w->have: w->P, w->Q, w->Rw hold them), when only a
+ * few pieces' rows of A and B differ: with S those pieces (the old and new
+ * labels of every changed frame and of its two neighbours), the old
+ * library leaves the residual E = B Z - A Rw nonzero only in rows S, so
+ * the new one is Rw + A_FF^-1 [., S] E_S and P changes by
+ * (Z E_S^T) (A_FF^-1 [., S])^T: O(n |S| (r + d)) instead of the O(n r d)
+ * of P = Z Rw^T (the same numbers up to rounding).  Direct back end only,
+ * every non-fixed piece solved (no re-seeded row copies).  Returns 0 when
+ * done (w->lw = l), 1 when the full products are needed, -1 on allocation
+ * failure. */
+static int costs_incremental(const struct replib_data *D, const struct lstate *s, double mu,
+                             struct work *w, const int *l)
+{
+    int n = D->n, d = w->d, r = D->zdim, nfix = D->nfix, nf = s->nfree;
+    if (D->K || !w->have || !s->A || nf != d - nfix || w->ninc >= 32) return 1;
+    int *mark = w->smark, ns = 0, lim = d;
+    int *sl = malloc(sizeof(int) * d);
+    if (!sl) return -1;
+#define ADD(a) do { int a_ = (a); if (a_ >= nfix && mark[a_] < 0) { mark[a_] = ns; sl[ns++] = a_; } } while (0)
+    for (int f = 0; f < n && ns < lim; f++) {
+        if (w->lw[f] == l[f]) continue;
+        for (int g = f > 0 ? f - 1 : 0; g <= f + 1 && g < n; g++) { ADD(l[g]); ADD(w->lw[g]); }
+    }
+#undef ADD
+    /* incremental only when clearly cheaper than the full product */
+    if ((double)ns * (r + nf) * 2 > (double)r * nf) {
+        for (int j = 0; j < ns; j++) mark[sl[j]] = -1;
+        free(sl);
+        return 1;
+    }
+    if (ns > 0) {
+        double *E = calloc((size_t)ns * r, sizeof(double)), *M = calloc((size_t)nf * ns, sizeof(double));
+        double *G = malloc(sizeof(double) * (size_t)n * ns);
+        if (!E || !M || !G) {
+            free(E); free(M); free(G);
+            for (int j = 0; j < ns; j++) mark[sl[j]] = -1;
+            free(sl);
+            return -1;
+        }
+        const double *Z = D->Z;
+        double *Rf = w->Rw + (size_t)nfix * r;
+        /* E_S = (B Z)_S - A_{S,F} Rw_F (fidx[p] = nfix + p) */
+        for (int k = 0; k < s->nnz; k++) {
+            int j = mark[nfix + s->ri[k]];
+            if (j >= 0) cblas_daxpy(r, s->v[k], Z + (size_t)s->ci[k] * r, 1, E + (size_t)j * r, 1);
+        }
+        for (int j = 0; j < ns; j++) {
+            cblas_dgemv(CblasRowMajor, CblasTrans, nf, r, -1.0, Rf, r, s->A + (size_t)sl[j] * d + nfix, 1,
+                        1.0, E + (size_t)j * r, 1);
+            M[(size_t)(sl[j] - nfix) * ns + j] = 1;
+        }
+        lsolve(s, ns, M);                   /* M = A_FF^-1 [., S] */
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nf, r, ns, 1.0, M, ns, E, r, 1.0, Rf, r);
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, ns, r, 1.0, Z, r, E, r, 0.0, G, ns);
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, nf, ns, 1.0, G, ns, M, ns, 1.0, w->P + nfix, d);
+        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, r, 1.0, w->Rw, r, 0.0, w->Q, d);
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+        free(E); free(M); free(G);
+        w->ninc++;
+    }
+    for (int j = 0; j < ns; j++) mark[sl[j]] = -1;
+    free(sl);
+    memcpy(w->lw, l, sizeof(int) * n);
+    derive_costs(D, mu, w);
     return 0;
 }
 
@@ -1158,8 +1256,13 @@ static int bcd(const struct replib_data *D, const struct replib_opts *o, struct 
     for (int k = 1; k <= iters; k++) {
         double ti = wall();
         it->iteration++;
-        if (library_step(D, d, mu, l, x->cost, s, &it->reseeded) < 0 || compute_costs(D, s, mu, w) < 0)
-            return -1;
+        if (library_step(D, d, mu, l, x->cost, s, &it->reseeded) < 0) return -1;
+        int ic = it->reseeded ? 1 : costs_incremental(D, s, mu, w, l);
+        if (ic < 0) return cm_seterr("replib: out of memory");
+        if (ic > 0) {
+            if (compute_costs(D, s, mu, w) < 0) return -1;
+            if (!D->K) { memcpy(w->lw, l, sizeof(int) * n); w->have = 1; w->ninc = 0; }
+        }
         memcpy(ln, l, sizeof(int) * n);
         double tl = wall();
         double En = label_step(w, o->method, ln, 1);
