@@ -44,12 +44,14 @@ static void *big_alloc(size_t bytes)
     return p;
 }
 
-#define GRAM_AUTO_MAX 12000
+#define GRAM_AUTO_MAX 12000       /* N above this: K would exceed ~1.1 GB; use direct */
 /* candidates per frame in the label steps of split/merge trials at lambda
  * > 0 (the cheapest pieces by data cost, plus the current label): on the
  * Monkey-size benchmark (d = 150) 8, 16 and 32 all gave the exact DP's
- * final energy, at 9.5, 11.1 and 12.8 s CPU against 15.7 s */
-#define REPLIB_TRIAL_CANDIDATES 16   /* N above this: K would exceed ~1.1 GB; use direct */
+ * final energy, at 9.5, 11.1 and 12.8 s CPU against 15.7 s (8045066);
+ * 8 gave the same final energies as 16 on the 16 cases of the dict tests
+ * and benches (facecap parts, elephant, d 20-150, lambda 0 and 2) */
+#define REPLIB_TRIAL_CANDIDATES 8
 
 /* Exact low-rank Gram matrix.  Blend-shape animations (faces) have a small
  * rank: facecap's 335 frames span 52 dimensions to rounding.  With a random
@@ -1401,6 +1403,10 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
         keep_log(out, &it);
         for (int f = 0; f < n; f++) x->cost[f] = w->U[(size_t)f * d + l[f]];
     }
+    /* with the search on, the first descent's label steps (after the
+     * first) also run on the candidates: the exact descent at the end
+     * makes the result a fixed point of the exact label step anyway */
+    w->ncand = o->method == REPLIB_DP && mu > 0 && o->search > 0 ? REPLIB_TRIAL_CANDIDATES : 0;
     if (descend(D, o, w, s, x, &E, out, &it) < 0) { out->rc = -1; return; }
     /* w and s hold the library and costs that l was optimised for */
     out->labels = malloc(sizeof(int) * n);
