@@ -563,6 +563,14 @@ struct work {
     int *lwb, haveb;            /* the same for Pb, Qb, Rwb */
     double *Rwb;
     int *smark;                 /* d: position of a piece in the changed set, or -1 */
+    /* U, H and c are derived from P only when needed (uh = 1: current);
+     * the candidate label steps read P directly */
+    const struct replib_data *D;
+    double mu;
+    int uh;
+    int *cand, *nc;             /* n by ncand + 1, n: the candidates of the last candidate label step */
+    double *hs;                 /* n by ncand + 1: its DP values */
+    int cand_reuse;             /* 1: the next candidate label step keeps those candidates */
 };
 
 static void work_free(struct work *w)
@@ -570,6 +578,7 @@ static void work_free(struct work *w)
     free(w->P); free(w->Q); free(w->C); free(w->Rw); free(w->U); free(w->T); free(w->H); free(w->c);
     free(w->Pb); free(w->Qb); free(w->qd);
     free(w->lw); free(w->lwb); free(w->Rwb); free(w->smark);
+    free(w->cand); free(w->nc); free(w->hs);
     memset(w, 0, sizeof *w);
 }
 
@@ -589,6 +598,7 @@ static int work_init(struct work *w, const struct replib_data *D, int d)
     else w->Rw = malloc(sizeof(double) * (size_t)d * D->zdim);
     w->lw = malloc(sizeof(int) * n);
     w->smark = malloc(sizeof(int) * d);
+    w->D = D;
     if (!w->lw || !w->smark) { work_free(w); return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, d); }
     for (int a = 0; a < d; a++) w->smark[a] = -1;
     if (!w->P || !w->Q || !w->qd || !w->U || !w->T || !w->H || !w->c || !(D->K ? (void *)w->C : (void *)w->Rw)) {
@@ -636,18 +646,41 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
     return 0;
 }
 
-/* The chain terms (U, T, H, c) from w->P and w->Q. */
-static void derive_costs(const struct replib_data *D, double mu, struct work *w)
+/* The unary and linear chain terms U, H, c from w->P (and qd), when they
+ * are not current: every use of w->ch or w->U calls this first. */
+static void ensure_uh(struct work *w)
 {
+    if (w->uh) return;
+    const struct replib_data *D = w->D;
     int n = D->n, d = w->d;
-    const double *P = w->P, *Q = w->Q;
-    double *qd = w->qd;
-    for (int a = 0; a < d; a++) qd[a] = Q[(size_t)a * d + a];
+    double mu = w->mu;
+    const double *P = w->P, *qd = w->qd;
     for (int f = 0; f < n; f++) {
         const double *p = P + (size_t)f * d;
         double *u = w->U + (size_t)f * d, zf = D->zz[f];
         for (int a = 0; a < d; a++) u[a] = zf + qd[a] - 2 * p[a];
     }
+    if (mu > 0)
+        for (int f = 0; f + 1 < n; f++) {
+            double *h = w->H + (size_t)f * d;
+            if (!D->link[f]) { memset(h, 0, sizeof(double) * d); w->c[f] = 0; continue; }
+            for (int a = 0; a < d; a++)
+                h[a] = -2 * mu * (P[(size_t)(f + 1) * d + a] - P[(size_t)f * d + a]);
+            w->c[f] = mu * D->dd[f];
+        }
+    w->uh = 1;
+}
+
+/* The chain terms from w->P and w->Q: qd and T now, U, H and c marked
+ * stale (ensure_uh). */
+static void derive_costs(const struct replib_data *D, double mu, struct work *w)
+{
+    int n = D->n, d = w->d;
+    const double *Q = w->Q;
+    double *qd = w->qd;
+    for (int a = 0; a < d; a++) qd[a] = Q[(size_t)a * d + a];
+    w->mu = mu;
+    w->uh = 0;
     w->ch.n = n; w->ch.d = d; w->ch.U = w->U; w->ch.link = D->link; w->ch.swap = D->swap_cost;
     if (mu > 0) {
         for (int a = 0; a < d; a++) {
@@ -658,13 +691,6 @@ static void derive_costs(const struct replib_data *D, double mu, struct work *w)
                 t[b] = v > 0 ? v : 0;
             }
             t[a] = 0;
-        }
-        for (int f = 0; f + 1 < n; f++) {
-            double *h = w->H + (size_t)f * d;
-            if (!D->link[f]) { memset(h, 0, sizeof(double) * d); w->c[f] = 0; continue; }
-            for (int a = 0; a < d; a++)
-                h[a] = -2 * mu * (P[(size_t)(f + 1) * d + a] - P[(size_t)f * d + a]);
-            w->c[f] = mu * D->dd[f];
         }
         w->ch.T = w->T; w->ch.H = w->H; w->ch.c = w->c;
     } else {
@@ -807,80 +833,109 @@ static int costs_incremental(const struct replib_data *D, const struct lstate *s
  * labels are among the candidates, so the energy never rises above
  * theirs: a weaker but valid label step for a descent.  l: n labels, in:
  * the current ones, out: the new ones.  Returns the energy, NAN on
- * allocation failure.  One pass over the frames: frame f's candidates are
- * selected while its rows of U and H are in cache, and the DP step from
- * f - 1 to f follows at once (T is symmetric: row b is read). */
-static double dp_candidates(const struct chain *p, int K, int *l)
+ * allocation failure.  One pass over the frames: frame f's costs are
+ * formed from its row of P (U and H are never stored), its candidates
+ * selected while they are in cache, and the DP step from f - 1 to f
+ * follows at once (T is symmetric: row b is read).  With w->cand_reuse
+ * the candidates of the previous call are kept (a frame whose current
+ * label is not among them and has no room left is selected again): the
+ * label steps after an incremental library update, where the costs moved
+ * little, skip the selection. */
+static double dp_candidates(struct work *w, int K, int *l)
 {
-    int n = p->n, d = p->d;
+    const struct replib_data *D = w->D;
+    int n = D->n, d = w->d;
     if (K > d) K = d;
     int W = K + 1;
-    int *cand = malloc(sizeof(int) * (size_t)n * W), *nc = malloc(sizeof(int) * n);
-    double *hs = malloc(sizeof(double) * (size_t)n * W), *V = malloc(sizeof(double) * W);
-    double *Vn = malloc(sizeof(double) * W);
+    const double *P = w->P, *qd = w->qd, *T = w->T, *zz = D->zz, *dd = D->dd;
+    const unsigned char *link = D->link;
+    double mu = w->mu, m2 = -2 * mu;
+    if (!w->cand) {
+        w->cand = malloc(sizeof(int) * (size_t)n * W);
+        w->nc = malloc(sizeof(int) * n);
+        w->hs = malloc(sizeof(double) * (size_t)n * W);
+        if (!w->cand || !w->nc || !w->hs) {
+            free(w->cand); free(w->nc); free(w->hs);
+            w->cand = w->nc = NULL; w->hs = NULL;
+            cm_seterr("replib: out of memory (%d frames, %d candidates)", n, W);
+            return NAN;
+        }
+        w->cand_reuse = 0;
+    }
+    int *cand = w->cand, *nc = w->nc, reuse = w->cand_reuse;
+    double *hs = w->hs;
+    double *V = malloc(sizeof(double) * W), *Vn = malloc(sizeof(double) * W);
+    double *ub = malloc(sizeof(double) * d);
     int *pool_buf = malloc(sizeof(int) * (d + 1));
-    if (!cand || !nc || !hs || !V || !Vn || !pool_buf) {
-        free(cand); free(nc); free(hs); free(V); free(Vn); free(pool_buf);
+    if (!V || !Vn || !ub || !pool_buf) {
+        free(V); free(Vn); free(ub); free(pool_buf);
         cm_seterr("replib: out of memory (%d frames, %d candidates)", n, W);
         return NAN;
     }
-    double total = 0;
+    double total = 0, *u = ub;
     int start = 0;
     for (int f = 0; f < n; f++) {
-        const double *u = p->U + (size_t)f * d;
+        const double *p = P + (size_t)f * d;
+        double zf = zz[f];
         int *c = cand + (size_t)f * W, k = 0, in = 0, m = d;
-        const int *pool = NULL;
-        if (f > 0 && K < d) {
-            /* the previous frame's K candidates bound frame f's K-th
-             * smallest cost from above: only pieces at or below that bound
-             * can be among the K smallest (same set, same order) */
-            const int *pc = cand + (size_t)(f - 1) * W;
-            double tau = u[pc[0]];
-            for (int j = 1; j < K; j++) tau = u[pc[j]] > tau ? u[pc[j]] : tau;
-            m = 0;
-            for (int a = 0; a < d; a++) { pool_buf[m] = a; m += u[a] <= tau; }
-            if (m >= K) pool = pool_buf;
-            else m = d;
+        if (reuse) {
+            k = nc[f];
+            for (int j = 0; j < k; j++) in |= c[j] == l[f];
+            if (!in && k == W) k = 0;       /* select again */
+            else if (!in) { c[k++] = l[f]; in = 1; }
         }
-        for (int i = 0; i < m; i++) {
-            int a = pool ? pool[i] : i;
-            if (k == K && !(u[a] < u[c[K - 1]])) continue;
-            int j = k < K ? k++ : K - 1;
-            while (j > 0 && u[c[j - 1]] > u[a]) { c[j] = c[j - 1]; j--; }
-            c[j] = a;
+        if (k == 0 || !reuse) {
+            for (int a = 0; a < d; a++) u[a] = zf + qd[a] - 2 * p[a];
+            k = 0; in = 0;
+            const int *pool = NULL;
+            if (f > 0 && K < d) {
+                /* the previous frame's first K candidates bound frame f's
+                 * K-th smallest cost from above: only pieces at or below
+                 * that bound can be among the K smallest (same set, same
+                 * order) */
+                const int *pc = cand + (size_t)(f - 1) * W;
+                double tau = u[pc[0]];
+                for (int j = 1; j < K; j++) tau = u[pc[j]] > tau ? u[pc[j]] : tau;
+                m = 0;
+                for (int a = 0; a < d; a++) { pool_buf[m] = a; m += u[a] <= tau; }
+                if (m >= K) pool = pool_buf;
+                else m = d;
+            }
+            for (int i = 0; i < m; i++) {
+                int a = pool ? pool[i] : i;
+                if (k == K && !(u[a] < u[c[K - 1]])) continue;
+                int j = k < K ? k++ : K - 1;
+                while (j > 0 && u[c[j - 1]] > u[a]) { c[j] = c[j - 1]; j--; }
+                c[j] = a;
+            }
+            for (int j = 0; j < k; j++) in |= c[j] == l[f];
+            if (!in) c[k++] = l[f];
+        } else {
+            for (int j = 0; j < k; j++) u[c[j]] = zf + qd[c[j]] - 2 * p[c[j]];
         }
-        for (int j = 0; j < k; j++) in |= c[j] == l[f];
-        if (!in) c[k++] = l[f];
         nc[f] = k;
         if (f == start) {
             for (int i = 0; i < k; i++) V[i] = u[c[i]];
         } else {
-            /* DP step f - 1 -> f */
+            /* DP step f - 1 -> f: H_g[a] = -2 mu (P_f[a] - P_g[a]) */
             int g = f - 1;
-            const double *Hg = p->H ? p->H + (size_t)g * d : NULL;
+            const double *pg = P + (size_t)g * d;
             const int *ca = cand + (size_t)g * W;
-            double *h = hs + (size_t)g * W, cg = p->c ? p->c[g] : 0;
-            for (int i = 0; i < nc[g]; i++) h[i] = V[i] - (Hg ? Hg[ca[i]] : 0);
+            double *h = hs + (size_t)g * W, cg = mu * dd[g];
+            for (int i = 0; i < nc[g]; i++) h[i] = V[i] - m2 * (p[ca[i]] - pg[ca[i]]);
             for (int j = 0; j < k; j++) {
                 int b = c[j];
                 double mn = INFINITY;
-                if (p->T) {
-                    const double *Tb = p->T + (size_t)b * d;
-                    for (int i = 0; i < nc[g]; i++) {
-                        double v = h[i] + Tb[ca[i]];
-                        mn = v < mn ? v : mn;
-                    }
-                } else {
-                    for (int i = 0; i < nc[g]; i++) {
-                        double v = h[i] + 0;
-                        mn = v < mn ? v : mn;
-                    }
+                const double *Tb = T + (size_t)b * d;
+                for (int i = 0; i < nc[g]; i++) {
+                    double v = h[i] + Tb[ca[i]];
+                    mn = v < mn ? v : mn;
                 }
-                Vn[j] = mn + u[b] + cg + (Hg ? Hg[b] : 0);
+                Vn[j] = mn + u[b] + cg + m2 * (p[b] - pg[b]);
             }
             double *t = V; V = Vn; Vn = t;
         }
-        if (f == n - 1 || (p->link && !p->link[f])) {
+        if (f == n - 1 || (link && !link[f])) {
             /* the clip start..f ends: best final label, then back */
             int end = f, best = 0;
             for (int i = 1; i < nc[end]; i++) if (V[i] < V[best]) best = i;
@@ -892,7 +947,7 @@ static double dp_candidates(const struct chain *p, int K, int *l)
                 int b = l[g + 1], im = 0;
                 double mn = INFINITY;
                 for (int i = 0; i < nc[g]; i++) {
-                    double v = h[i] + (p->T ? p->T[(size_t)b * d + ca[i]] : 0);
+                    double v = h[i] + T[(size_t)b * d + ca[i]];
                     if (v < mn) { mn = v; im = i; }
                 }
                 l[g] = ca[im];
@@ -900,13 +955,46 @@ static double dp_candidates(const struct chain *p, int K, int *l)
             start = f + 1;
         }
     }
-    free(cand); free(nc); free(hs); free(V); free(Vn); free(pool_buf);
+    free(V); free(Vn); free(ub); free(pool_buf);
     return total;
+}
+
+/* The energy of labels l and its parts from P (as chain_energy on the
+ * terms ensure_uh would store, term by term the same arithmetic). */
+static double energy_from_p(const struct work *w, const int *l, double *unary, double *pair)
+{
+    const struct replib_data *D = w->D;
+    int n = D->n, d = w->d;
+    const double *P = w->P;
+    double mu = w->mu, eu = 0, ep = 0;
+    for (int f = 0; f < n; f++) {
+        int a = l[f];
+        eu += D->zz[f] + w->qd[a] - 2 * P[(size_t)f * d + a];
+        if (f + 1 < n && D->link[f] && mu > 0) {
+            int b = l[f + 1];
+            double v = 0;
+            v += mu * D->dd[f];
+            v += w->T[(size_t)a * d + b];
+            v += -2 * mu * (P[(size_t)(f + 1) * d + b] - P[(size_t)f * d + b]) -
+                 -2 * mu * (P[(size_t)(f + 1) * d + a] - P[(size_t)f * d + a]);
+            ep += v;
+        }
+    }
+    if (unary) *unary = eu;
+    if (pair) *pair = ep;
+    return eu + ep;
 }
 
 /* label step on the chain in w; l in/out (used as the start for moves) */
 static double label_step(struct work *w, enum replib_method m, int *l, int have_start)
 {
+    if (m == REPLIB_DP && w->ncand > 0 && have_start && w->ch.T) {
+        double E = dp_candidates(w, w->ncand, l);
+        w->cand_reuse = 0;
+        return E;
+    }
+    w->cand_reuse = 0;
+    ensure_uh(w);
     if (!w->ch.T && !w->ch.H && !(w->ch.swap > 0)) {
         /* lambda = 0, no swap cost: every method gives the nearest piece (lowest on ties) */
         int n = w->ch.n, d = w->ch.d;
@@ -920,7 +1008,6 @@ static double label_step(struct work *w, enum replib_method m, int *l, int have_
         }
         return E;
     }
-    if (m == REPLIB_DP && w->ncand > 0 && have_start) return dp_candidates(&w->ch, w->ncand, l);
     if (m == REPLIB_DP) return chain_dp(&w->ch, l);
     if (!have_start) {
         int n = w->ch.n, d = w->ch.d;
@@ -1266,6 +1353,8 @@ static int bcd(const struct replib_data *D, const struct replib_opts *o, struct 
             if (!D->K) { memcpy(w->lw, l, sizeof(int) * n); w->have = 1; w->ninc = 0; }
         }
         memcpy(ln, l, sizeof(int) * n);
+        /* after an incremental update the candidates of the last label step are kept */
+        w->cand_reuse = ic == 0 && k > 1;
         double tl = wall();
         double En = label_step(w, o->method, ln, 1);
         out->label_seconds += wall() - tl;
@@ -1273,9 +1362,9 @@ static int bcd(const struct replib_data *D, const struct replib_opts *o, struct 
         it->changed = 0;
         for (int f = 0; f < n; f++) it->changed += ln[f] != l[f];
         memcpy(l, ln, sizeof(int) * n);
-        for (int f = 0; f < n; f++) x->cost[f] = w->U[(size_t)f * d + l[f]];
+        for (int f = 0; f < n; f++) x->cost[f] = D->zz[f] + w->qd[l[f]] - 2 * w->P[(size_t)f * d + l[f]];
         it->energy = En;
-        chain_energy(&w->ch, l, &it->data, &it->velocity);
+        energy_from_p(w, l, &it->data, &it->velocity);
         it->seconds = wall() - ti;
         out->iterations++;
         keep_log(out, it);
@@ -1298,6 +1387,7 @@ static int descend(const struct replib_data *D, const struct replib_opts *o, str
         int rs;
         if (library_step(D, o->d, 0, x->l, x->cost, s, &rs) < 0 || compute_costs(D, s, 0, w) < 0) return -1;
         if (rs) break;          /* an empty piece: leave it to the descent's re-seeding */
+        ensure_uh(w);
         *E = chain_energy(&w->ch, x->l, NULL, NULL);
         int mv = hartigan(D, w, x->l, x->kc);
         if (mv < 0) return cm_seterr("replib: out of memory");
@@ -1317,6 +1407,7 @@ static int split_merge(const struct replib_data *D, const struct replib_opts *o,
                        struct scratch *x, struct rng *r)
 {
     int n = D->n, d = o->d, nfix = D->nfix, L = 2 + (int)log((double)d);
+    ensure_uh(w);
     const double *U = w->U;
     int *l = x->l, *cnt = x->cnt;
     memset(cnt, 0, sizeof(int) * d);
@@ -1447,6 +1538,7 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
         }
     }
     if (o->search > 0 && best_costs(D, mu, w, 0) < 0) { out->rc = -1; return; }
+    ensure_uh(w);
     chain_energy(&w->ch, out->labels, &out->data, &out->velocity);
 }
 
