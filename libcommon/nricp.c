@@ -5,6 +5,8 @@
 #include "correspond.h"
 #include "cm_error.h"
 #include "geometry.h"
+#include "mesh_distance.h"
+#include "nricp_untangle.h"
 #include "spd.h"
 #include "topology.h"
 #include <stdio.h>
@@ -31,6 +33,7 @@ void nricp_defaults(struct nricp_params *p)
     p->nearest_vertex = 0;
     p->rigid = 0;
     p->rigid_iters = 4;
+    p->untangle = 1;
 }
 
 /* right-hand side of the ARAP edge rows: w ([v_i 1] X_i - [v_j 1] X_j)
@@ -347,6 +350,20 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
         ap.rest_smooth = p->fit_smooth;
         int frc = arap_fit(RS ? RS : VS, FS, nvs, nfs, VT, FT, nvt, nft, TT, &ap, P, cb ? fit_step : NULL, &fc);
         if (frc < 0) goto done;
+    }
+    /* pleats where the target folds: smoothed out on the target */
+    if (p->untangle > 0) {
+        struct nricp_untangle_params up;
+        nricp_untangle_defaults(&up);
+        up.rings = p->untangle;
+        up.tol = FLIP_THIN_TOL;     /* coordinates are in diagonals here */
+        int fl[2];
+        if (nricp_untangle(P, FS, nvs, nfs, VT, FT, nvt, nft, TT, &up, fl) < 0) goto done;
+        if (cb) {
+            for (int i = 0; i < nvs; i++)
+                for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
+            cb(ctx, K + (p->fit > 0 ? p->fit : 0), 0, 0, fl[0], fl[1], -2, Xout);
+        }
     }
     for (int i = 0; i < nvs; i++)
         for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];

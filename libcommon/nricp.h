@@ -32,6 +32,9 @@
  * with an as-rigid-as-possible regularizer relative to the source, whose
  * rotations cannot mirror, point-to-plane data terms that let the mesh slide
  * along the target, and folded faces released from the data terms.
+ * Where the target's skin folds, the fit may still lay the source's
+ * surplus on the target in a pleat (faces on the target, turned over);
+ * with untangle > 0 nricp_untangle.h smooths them out on the target.
  * Internally coordinates are centred on the target and divided by its
  * bounding-box diagonal, so the parameters do not depend on the scale.
  */
@@ -67,6 +70,10 @@ struct nricp_params {
                               steps: rigid x alpha / alpha_max per edge against a data weight
                               of 1 per vertex (default 0: Amberg's affine term alone; 10
                               measured neutral on the camel, see nricp(1)) */
+    int untangle;          /* > 0: after the fit, the pleats where the target folds (faces
+                              flipped against it, mesh-metrics' test) are smoothed out on the
+                              target, with this many rings around them (nricp_untangle.h;
+                              default 1; 0: off) */
     int rigid_iters;       /* local/global iterations of that term per correspondence
                               update (rotations refitted, same factorization; default 4) */
 };
@@ -77,7 +84,9 @@ void nricp_defaults(struct nricp_params *p);
  * (#VS by 3), the step index and its stiffness; return nonzero to stop.
  * Steps >= p->steps are the ARAP fit's iterations (return value ignored):
  * alpha is then its data weight and folded the number of folded faces
- * (-1 for the schedule's steps). */
+ * (-1 for the schedule's steps).  After the untangling (untangle > 0) it
+ * is called once more with folded -2, inner and rejected the faces flipped
+ * against the target before and after (X the untangled pose). */
 typedef int (*nricp_step_fn)(void *ctx, int step, double alpha, double beta, int inner,
                              int rejected, int folded, const double *X);
 

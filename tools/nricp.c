@@ -71,6 +71,9 @@ static const char help[] =
 "                        W x alpha / alpha-max per edge: keeps the steps' local\n"
 "                        maps near rotations (default 0: off; try 10)\n"
 "      --rigid-iters N   its rotation updates per step (default 4)\n"
+"      --untangle R      after the fit, smooth out the pleats where the target's\n"
+"                        skin folds (faces on the target but turned over) on the\n"
+"                        target, with R rings around them (default 1; 0: off)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -129,14 +132,14 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN };
+           O_RIGIDN, O_UNTANGLE };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
-        {"rigid-iters", 1, 0, O_RIGIDN},
+        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
@@ -172,11 +175,13 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case O_PAPER: o->paper = 1; break;
         case O_RIGID: o->p.rigid = arg_double(optarg, "--rigid"); break;
+        case O_UNTANGLE: o->p.untangle = arg_int(optarg, "--untangle"); break;
         case O_RIGIDN: o->p.rigid_iters = arg_int(optarg, "--rigid-iters"); break;
         case O_REST: o->rest = optarg; break;
         case O_CREST:
             if (!strcmp(optarg, "previous")) o->chain_prev = 1;
-            else if (strcmp(optarg, "first")) usage_error("--chain-rest must be first or previous");
+            else if (!strcmp(optarg, "both")) o->chain_prev = 2;
+            else if (strcmp(optarg, "first")) usage_error("--chain-rest must be first, previous or both");
             break;
         case O_LMOUT: o->lm_out = optarg; break;
         case O_NOINIT: o->no_init = 1; break;
@@ -234,6 +239,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             usage_error("--paper starts with the thin shell (--start shell or none)");
         o->p.fit = 0;
         o->p.rigid = 0;
+        o->p.untangle = 0;
         o->p.backward = 0;
         o->p.search = 0;
         o->p.max_inner = 10;
@@ -246,6 +252,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!o->landmarks && !o->no_auto && !o->no_init && o->start != START_NONE) o->init_deform = 1;
     if (o->p.fit < 0 || o->p.fit > 1000) usage_error("--fit must be in 0..1000");
     if (!(o->p.rigid >= 0 && o->p.rigid <= 1e6)) usage_error("--rigid must be in [0, 1e6]");
+    if (o->p.untangle < 0 || o->p.untangle > 20) usage_error("--untangle must be in 0..20");
     if (o->p.rigid_iters < 1 || o->p.rigid_iters > 100) usage_error("--rigid-iters must be in 1..100");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
@@ -260,6 +267,11 @@ static int on_step(void *ctx, int step, double alpha, double beta, int inner, in
                    int folded, const double *X)
 {
     struct steps *s = ctx;
+    if (folded == -2) {
+        info(1, "untangled: %d -> %d faces flipped against the target, %.2f s", inner, rejected,
+             now_seconds() - s->t0);
+        return 0;
+    }
     if (folded >= 0) {
         if (verbose > 1 || step - s->nsteps + 1 == s->nfit)
             info(1, "ARAP fit iteration %d: data weight %.3g, %d rejected, %d folded faces, %.2f s",
@@ -491,7 +503,11 @@ int main(int argc, char **argv)
     static const char *const start_name[] = {"auto", "landmarks", "shell", "none"};
     for (int k = 0; k < o.ntargets; k++) {
         const double *start = K + (size_t)k * S.nv * 3;
-        const double *rest = o.chain && k > 0 && !o.chain_prev ? S.V : o.rest ? R.V : NULL;
+        /* the rest shape of the fit: SOURCE (first) or the start, i.e. the
+         * previous key (previous), or each start with both, the better kept */
+        const double *rest_first = o.chain && k > 0 ? S.V : o.rest ? R.V : NULL;
+        int nrest = o.chain && k > 0 && o.chain_prev == 2 ? 2 : 1;
+        if (o.chain && k > 0 && o.chain_prev == 1) rest_first = NULL;
         double *X = K + (size_t)(k + 1) * S.nv * 3;
         int have_lm = o.landmarks != NULL;
         if (!o.landmarks && o.start != START_NONE) {
@@ -506,9 +522,11 @@ int main(int argc, char **argv)
         } else
             cand[nc++] = o.start;
         double best = INFINITY;
-        int bestc = -1, bestn = 0, bfl = 0;
+        int bestc = -1, bestn = 0, bfl = 0, bestr = 0;
         double bh = 0;
-        for (int c = 0; c < nc; c++) {
+        for (int cr = 0; cr < nc * nrest; cr++) {
+            int c = cr / nrest;
+            const double *rest = cr % nrest ? NULL : rest_first;
             struct options oc = o;
             struct landmarks none = {0};
             if (cand[c] == START_SHELL) oc.init_deform = oc.init_shell = 1;
@@ -519,28 +537,32 @@ int main(int argc, char **argv)
             double dt = now_seconds() - t0;
             double h = 0, str = 0;
             int fl = 0;
-            if (verbose || nc > 1) {
+            if (verbose || nc * nrest > 1) {
                 measure(Xc, &S, &T[k], &h, &fl);
                 str = nricp_stretch(S.V, Xc, S.F, S.nf);
                 info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), "
-                     "%d flipped faces, edge stretch %.3f (start %s)", o.chain ? o.targets[k] : "",
+                     "%d flipped faces, edge stretch %.3f (start %s%s)", o.chain ? o.targets[k] : "",
                      o.chain ? ": " : "", dt, h * bbox_diagonal(T[k].V, T[k].nv), 100 * h, fl, str,
-                     start_name[cand[c]]);
+                     start_name[cand[c]], nrest == 2 ? rest ? ", rest first" : ", rest previous" : "");
             }
             double score = h + START_FLIP_COST * fl + START_STRETCH_COST * str;
             if (score < best) {
                 best = score;
                 bestc = cand[c];
+                bestr = cr % nrest;
                 memcpy(X, Xc, (size_t)S.nv * 3 * sizeof *X);
                 if (Fc) memcpy(Fc, st.frames, (size_t)st.n * S.nv * 3 * sizeof *Fc);
                 bestn = st.n;
                 bh = h;
                 bfl = fl;
             }
-            if (cand[c] == START_NONE && bh <= START_ACCEPT && bfl <= START_FLIPS) break;
+            if (cand[c] == START_NONE && cr % nrest == nrest - 1 && bh <= START_ACCEPT &&
+                bfl <= START_FLIPS)
+                break;
         }
-        if (nc > 1) info(1, "%s%skept start %s", o.chain ? o.targets[k] : "", o.chain ? ": " : "",
-                         start_name[bestc]);
+        if (nc * nrest > 1)
+            info(1, "%s%skept start %s%s", o.chain ? o.targets[k] : "", o.chain ? ": " : "",
+                 start_name[bestc], nrest == 2 ? bestr ? ", rest previous" : ", rest first" : "");
         if (Fc) {
             memcpy(st.frames, Fc, (size_t)bestn * S.nv * 3 * sizeof *Fc);
             st.n = bestn;
