@@ -51,7 +51,7 @@ static const char help[] =
 "                        10 flipped faces also none and shell, the best kept\n"
 "      --paper           the thesis' method: thin-shell clay start, Amberg's NRICP\n"
 "                        (closest points, 10 iterations per stiffness), no backward\n"
-"                        term, no search, no ARAP term or fit\n"
+"                        term, no search, no ARAP term or fit, no untangling\n"
 "      --no-auto         without -l: no landmarks at all (small motions only)\n"
 "      --landmarks-out F write the landmarks used (automatic ones too) to F\n"
 "      --align KIND      rigid | similarity | none: Procrustes on the landmarks\n"
