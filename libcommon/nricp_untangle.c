@@ -132,6 +132,29 @@ done:
     return back;
 }
 
+/* the flipped faces now: those of F0 (the flags at the start) away from the
+ * moved vertices, recounted on the faces touching them (FS, nfs: scratch
+ * #F by 3, fid: #F) */
+static int count_flips(const double *P, const int *F, int nf, const unsigned char *moved,
+                       const unsigned char *flip0, const double *VT, int nvt, const int *FT,
+                       int nft, const struct closest_point_tree *TT, double tol, int *FS, int *fid,
+                       unsigned char *fsub, unsigned char *flip)
+{
+    int m = 0, n = 0;
+    for (int f = 0; f < nf; f++) {
+        const int *v = F + 3 * f;
+        if (moved[v[0]] || moved[v[1]] || moved[v[2]]) {
+            memcpy(FS + 3 * m, v, 3 * sizeof *FS);
+            fid[m++] = f;
+        } else
+            n += flip[f] = flip0[f];
+    }
+    int k = flipped_face_flags(P, FS, m, VT, nvt, FT, nft, TT, tol, fsub);
+    if (k < 0) return -1;
+    for (int q = 0; q < m; q++) flip[fid[q]] = fsub[q];
+    return n + k;
+}
+
 int nricp_untangle(double *P, const int *F, int nv, int nf,
                    const double *VT, const int *FT, int nvt, int nft,
                    const struct closest_point_tree *TT, const struct nricp_untangle_params *p,
@@ -145,7 +168,9 @@ int nricp_untangle(double *P, const int *F, int nv, int nf,
     double *Q = malloc(((size_t)nv * 3 + 1) * sizeof *Q), *NT = malloc(((size_t)nft * 3 + 1) * sizeof *NT);
     double *Pbest = malloc(((size_t)nv * 3 + 1) * sizeof *Pbest), *P0 = malloc(((size_t)nv * 3 + 1) * sizeof *P0);
     int *idx = malloc(((size_t)nv + 1) * sizeof *idx), *I = malloc(((size_t)nv + 1) * sizeof *I);
-    if (!fixed || !flip || !in || !tmp || !moved || !Q || !NT || !Pbest || !P0 || !idx || !I) {
+    int *FS = malloc(((size_t)nf * 3 + 1) * sizeof *FS), *fid = malloc(((size_t)nf + 1) * sizeof *fid);
+    unsigned char *flip0 = malloc((size_t)nf + 1), *fsub = malloc((size_t)nf + 1);
+    if (!FS || !fid || !flip0 || !fsub || !fixed || !flip || !in || !tmp || !moved || !Q || !NT || !Pbest || !P0 || !idx || !I) {
         cm_seterr("out of memory");
         goto done;
     }
@@ -158,6 +183,7 @@ int nricp_untangle(double *P, const int *F, int nv, int nf,
     if (nfl < 0) goto done;
     if (flipped) flipped[0] = flipped[1] = nfl;
     if (nfl == 0) { rc = 0; goto done; }
+    memcpy(flip0, flip, (size_t)nf);
     double h0, rms;
     TS = closest_point_tree_new(P, nv, F, nf);
     if (!TS || symmetric_distance(P, nv, F, nf, TS, VT, nvt, FT, nft, TT, &h0, &rms) < 0) goto done;
@@ -172,7 +198,8 @@ int nricp_untangle(double *P, const int *F, int nv, int nf,
     for (int s = 0; s < p->iters; s++) {
         if (s % check == 0) {
             if (s > 0) {
-                nfl = flipped_face_flags(P, F, nf, VT, nvt, FT, nft, TT, p->tol, flip);
+                nfl = count_flips(P, F, nf, moved, flip0, VT, nvt, FT, nft, TT, p->tol, FS, fid,
+                                  fsub, flip);
                 if (nfl < 0) goto done;
                 if (nfl < best) {
                     best = nfl;
@@ -189,7 +216,7 @@ int nricp_untangle(double *P, const int *F, int nv, int nf,
         sweep(&t, in, P0, cap, NT, TT, P, Q, idx, I);
     }
     /* the sweeps after the last recount only if they helped */
-    nfl = flipped_face_flags(P, F, nf, VT, nvt, FT, nft, TT, p->tol, flip);
+    nfl = count_flips(P, F, nf, moved, flip0, VT, nvt, FT, nft, TT, p->tol, FS, fid, fsub, flip);
     if (nfl < 0) goto done;
     if (nfl > best) memcpy(P, Pbest, (size_t)nv * 3 * sizeof *P);
     /* no piece may leave the target farther uncovered than before */
@@ -202,6 +229,6 @@ done:
     closest_point_tree_free(TS);
     topology_free(&t);
     free(flip); free(in); free(tmp); free(moved); free(fixed); free(Q); free(NT); free(Pbest); free(P0);
-    free(idx); free(I);
+    free(idx); free(I); free(FS); free(fid); free(flip0); free(fsub);
     return rc;
 }
