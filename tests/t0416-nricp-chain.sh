@@ -36,6 +36,16 @@ test_expect_success 'nricp --chain --chain-rest previous: each key a plain run f
 	anim-slice -f 2 keysp.mesh >kp2.mesh &&
 	test_near "$(anim-diff -s prev.mesh kp2.mesh | awk "/^max/ { print \$2 }")" 0 1e-9
 '
+test_expect_success 'nricp --chain --chain-rest both: each key the better of the two rest shapes' '
+	nricp -v --no-auto -k 3 --fit 6 --chain --chain-rest both src.mesh g1.mesh g2.mesh >keysb.mesh 2>errb &&
+	cat errb &&
+	grep "g2.mesh: registered in.*(start none, rest first)" errb &&
+	grep "g2.mesh: registered in.*(start none, rest previous)" errb &&
+	anim-slice -f 1 keysb.mesh >kb1.mesh && anim-slice -f 2 keysb.mesh >kb2.mesh &&
+	test_near "$(anim-diff -s k1.mesh kb1.mesh | awk "/^max/ { print \$2 }")" 0 1e-12 &&
+	if grep "g2.mesh: kept start none, rest previous" errb; then ref=kp2.mesh; else ref=k2.mesh; fi &&
+	test_near "$(anim-diff -s $ref kb2.mesh | awk "/^max/ { print \$2 }")" 0 1e-9
+'
 test_expect_success 'nricp -v --chain reports every key by name' '
 	nricp -v --no-auto -k 2 --fit 2 --chain src.mesh g1.mesh g2.mesh >/dev/null 2>err &&
 	grep "g1.mesh: registered in" err && grep "g2.mesh: registered in" err
@@ -55,6 +65,7 @@ test_expect_success 'usage: --chain with -l, --rest, --steps-out; --chain withou
 	test_must_fail_usage nricp --chain src.mesh &&
 	test_must_fail_usage nricp --chain-rest previous src.mesh g1.mesh &&
 	test_must_fail_usage nricp --chain --chain-rest last src.mesh g1.mesh &&
+	test_must_fail_usage nricp --chain-rest both src.mesh g1.mesh &&
 	test_must_fail_usage nricp src.mesh g1.mesh g2.mesh
 '
 test_done
