@@ -34,9 +34,9 @@ static const char help[] =
 "\n"
 "Options:\n"
 "      --chain           a chain of keys: each key starts from the previous key's\n"
-"                        result, but the ARAP fit keeps SOURCE's shape (--rest\n"
-"                        SOURCE), so the error does not build up along the chain\n"
-"      --chain-rest R    first (default), previous or both: the rest shape of each\n"
+"                        result, its ARAP fit relative to SOURCE's shape and to the\n"
+"                        previous key's, the better kept (--chain-rest)\n"
+"      --chain-rest R    first, previous or both (default): the rest shape of each\n"
 "                        key's fit is SOURCE, or the previous key (the one-key-at-a-time\n"
 "                        recipe), or every start is tried with both, the best kept\n"
 "      --rest FILE       rest shape of the ARAP fit (SOURCE's connectivity), when\n"
@@ -120,7 +120,8 @@ struct options {
     const char *src, *dst, *landmarks, *align, *steps_out, *output, *init_stiffness, *lm_mesh;
     const char *lm_out, *rest;
     const char **targets;
-    int ntargets, chain, chain_prev;
+    int ntargets, chain, chain_prev;   /* chain_prev: 0 first, 1 previous, 2 both */
+    int chain_rest_given;
     int raw, init_deform, init_shell, no_auto, no_init;
     int start;             /* START_* */
     int start_given;       /* --start on the command line */
@@ -180,9 +181,11 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_RIGIDN: o->p.rigid_iters = arg_int(optarg, "--rigid-iters"); break;
         case O_REST: o->rest = optarg; break;
         case O_CREST:
+            o->chain_rest_given = 1;
             if (!strcmp(optarg, "previous")) o->chain_prev = 1;
             else if (!strcmp(optarg, "both")) o->chain_prev = 2;
-            else if (strcmp(optarg, "first")) usage_error("--chain-rest must be first, previous or both");
+            else if (!strcmp(optarg, "first")) o->chain_prev = 0;
+            else usage_error("--chain-rest must be first, previous or both");
             break;
         case O_LMOUT: o->lm_out = optarg; break;
         case O_NOINIT: o->no_init = 1; break;
@@ -214,7 +217,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->dst = argv[optind + 1];
     o->targets = (const char **)argv + optind + 1;
     o->ntargets = argc - optind - 1;
-    if (o->chain_prev && !o->chain) usage_error("--chain-rest needs --chain");
+    if (o->chain_rest_given && !o->chain) usage_error("--chain-rest needs --chain");
+    if (!o->chain_rest_given) o->chain_prev = 2;   /* both: the score decides per key */
     if (o->chain && o->rest) usage_error("--chain keeps SOURCE as the rest shape: no --rest");
     if (o->chain && (o->landmarks || o->lm_out || o->steps_out))
         usage_error("--chain takes no -l, --landmarks-out or --steps-out (one key per run does)");
