@@ -67,12 +67,15 @@ test_expect_success 'bad --refine and --min-angle: usage errors' '
 
 need_shared_data shapes2d/poses/elephant-pose6.rings.txt
 P="$SHARED_DATA/shapes2d/poses"
-test_expect_success 'elephant poses: floors (measured 20.07, 20.07, 20.01 degrees; --refine sg 9.5, 5.3, 1.2), never below --refine none' '
+# -m off: poses 4 and 5 are mirrored views; the default matching between the
+# given rows places points on look-alikes there and the map is stretched
+# (1-6: 17.6 degrees with it, compat-tri(1) MATCHING BETWEEN GIVEN ROWS)
+test_expect_success 'elephant poses, -m off: floors (measured 20.07, 20.07, 20.01 degrees; --refine sg 9.5, 5.3, 1.2), never below --refine none' '
 	for c in 1,2:19.99 3,5,6:19.99 1,2,3,4,5,6:19.99; do
 		cols=${c%%:*} floor=${c#*:} files=
 		for k in $(echo $cols | tr , " "); do files="$files $P/elephant-pose$k.rings.txt"; done
-		run refine $cols "$STOPMO_ROOT/examples/morph2d/corr6.txt" r.mesh $files &&
-		run none $cols "$STOPMO_ROOT/examples/morph2d/corr6.txt" n.mesh $files &&
+		run refine $cols "$STOPMO_ROOT/examples/morph2d/corr6.txt" r.mesh -m off $files &&
+		run none $cols "$STOPMO_ROOT/examples/morph2d/corr6.txt" n.mesh -m off $files &&
 		test_le 1e-12 $(min_area r.mesh) &&
 		test_le $floor $(worst r.mesh.log) &&
 		test_le $(worst n.mesh.log) $(worst r.mesh.log) || { echo "poses $cols" >&2; return 1; }

@@ -16,19 +16,22 @@ test_expect_success '-v reports the worst angle that the mesh has' '
 
 need_shared_data shapes2d/poses/elephant-pose6.rings.txt
 P="$SHARED_DATA/shapes2d/poses"
-test_expect_success 'elephant, every 4 of the 6 poses: worst angle >= 19.99 degrees, positive (measured 20.00-20.11 in 0.1-0.3 s; before the polish 15.0-20.1)' '
+# -m off (the given rows only): poses 4 and 5 are mirrored views, where the
+# default matching between the rows places points on look-alikes (1,2,4,5:
+# 17.4 degrees, all six 17.6; compat-tri(1) MATCHING BETWEEN GIVEN ROWS)
+test_expect_success 'elephant, every 4 of the 6 poses, -m off: worst angle >= 19.99 degrees, positive (measured 20.00-20.11 in 0.1-0.3 s; before the polish 15.0-20.1)' '
 	for cols in 1,2,3,4 1,2,3,5 1,2,3,6 1,2,4,5 1,2,4,6 1,2,5,6 1,3,4,5 1,3,4,6 1,3,5,6 1,4,5,6 \
 	            2,3,4,5 2,3,4,6 2,3,5,6 2,4,5,6 3,4,5,6; do
 		files=
 		for k in $(echo $cols | tr , " "); do files="$files $P/elephant-pose$k.rings.txt"; done
 		grep -v "^#" "$STOPMO_ROOT/examples/morph2d/corr6.txt" | cut -d" " -f$cols >c.txt &&
-		compat-tri -c c.txt $files >e.mesh &&
+		compat-tri -m off -c c.txt $files >e.mesh &&
 		test_le 1e-12 $(min_area e.mesh) &&
 		test_le 19.99 $(worst_angle e.mesh) || { echo "poses $cols: $(worst_angle e.mesh) deg" >&2; return 1; }
 	done
 '
-test_expect_success 'elephant, all six poses: worst angle >= 19.99 degrees (measured 20.01; before 15.9)' '
-	compat-tri -c "$STOPMO_ROOT/examples/morph2d/corr6.txt" $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
+test_expect_success 'elephant, all six poses, -m off: worst angle >= 19.99 degrees (measured 20.01; before 15.9)' '
+	compat-tri -m off -c "$STOPMO_ROOT/examples/morph2d/corr6.txt" $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
 		$P/elephant-pose3.rings.txt $P/elephant-pose4.rings.txt $P/elephant-pose5.rings.txt \
 		$P/elephant-pose6.rings.txt >e6.mesh &&
 	test_le 1e-12 $(min_area e6.mesh) &&

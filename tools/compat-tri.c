@@ -38,14 +38,16 @@ static const char help[] =
 "                        ring k with ring k) or 'nearest' (each shape's rings\n"
 "                        reordered to SHAPE0's by nesting and nearest mean\n"
 "                        vertex, e.g. for frames traced by img2rings)\n"
-"  -m, --match MODE      with fewer than 3 rows: 'multiscale' (default: Baxter\n"
-"                        et al.'s optimized boundary mapping by dynamic\n"
-"                        programming, stretch plus a multi-scale turning term so\n"
-"                        legs, ears and notches meet their like; without rows the\n"
-"                        start is found by trying every cyclic shift), 'elastic'\n"
-"                        (the paper's cost: stretch and bending, Sebastian et al.),\n"
-"                        'arclength' (baseline: arc length from the given rows) or\n"
-"                        'off' (default with 3 or more rows)\n"
+"  -m, --match MODE      'multiscale' (default: Baxter et al.'s optimized\n"
+"                        boundary mapping by dynamic programming, stretch plus a\n"
+"                        multi-scale turning term so legs, ears and notches meet\n"
+"                        their like; it passes through the given rows, and\n"
+"                        without rows the start is found by trying every cyclic\n"
+"                        shift), 'elastic' (the paper's cost: stretch and\n"
+"                        bending, Sebastian et al.), 'arclength' (baseline: the\n"
+"                        same points placed by arc length from the given rows) or\n"
+"                        'off' (3 or more rows: only the given rows, arc length\n"
+"                        between them: the earlier default)\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
 "                        rows plus SHAPE0's most salient corners (default 12)\n"
 "      --bend R          weight of the bending term of the matching (default 0.03)\n"
@@ -86,7 +88,7 @@ static const char help[] =
 
 struct options {
     const char *corr, *output, *interior, *points_out;
-    int match, match_points;
+    int match, match_points, match_default;
     double bend, feature;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv;
@@ -201,6 +203,25 @@ static void die_row(const char *path)
     die("cannot read '%s': %s", path, m);
 }
 
+/* the correspondence points used (nc rows, counter-clockwise index order)
+ * to --points-out, in file order */
+static void write_points(const struct options *o, int N, const int *n, const int *flipped, const int *corr, int nc)
+{
+    if (!o->points_out) return;
+    FILE *f = out_open(o->points_out);
+    fprintf(f, "# compat-tri --points-out: %d correspondence points (rows) of %d shapes (columns),\n"
+               "# 0-based vertex indices in each file's order; usable as compat-tri -c\n", nc, N);
+    for (int a = 0; a < nc; a++) {
+        int k = flipped[0] ? (nc - a) % nc : a;   /* increasing along shape 0's file */
+        for (int s = 0; s < N; s++) {
+            int v = corr[(size_t)k * N + s];
+            fprintf(f, "%s%d", s ? " " : "", flipped[s] ? n[s] - 1 - v : v);
+        }
+        fputc('\n', f);
+    }
+    out_close(f);
+}
+
 /* The correspondence points after boundary matching to shape 0 (given:
  * ncorr rows in counter-clockwise index order); written to --points-out in
  * file order.  Returns the new rows (replacing given), count in *ncorr. */
@@ -224,20 +245,7 @@ static int *match_points(const struct options *o, int N, double **P, const int *
             "placed", *ncorr, *ncorr == 1 ? "" : "s", nwant, o->shapes[0], nc);
     free(cost);
     free(given);
-    if (o->points_out) {
-        FILE *f = out_open(o->points_out);
-        fprintf(f, "# compat-tri --points-out: %d correspondence points (rows) of %d shapes (columns),\n"
-                   "# 0-based vertex indices in each file's order; usable as compat-tri -c\n", nc, N);
-        for (int a = 0; a < nc; a++) {
-            int k = flipped[0] ? (nc - a) % nc : a;   /* increasing along shape 0's file */
-            for (int s = 0; s < N; s++) {
-                int v = corr[(size_t)k * N + s];
-                fprintf(f, "%s%d", s ? " " : "", flipped[s] ? n[s] - 1 - v : v);
-            }
-            fputc('\n', f);
-        }
-        out_close(f);
-    }
+    write_points(o, N, n, flipped, corr, nc);
     *ncorr = nc;
     return corr;
 }
@@ -280,7 +288,7 @@ static void build_single(struct options *o, struct rings *R, struct compat *cp)
         }
         if (unknown) nwant++; else ncorr++;
     }
-    if (o->match < 0 && o->match != -2) o->match = ncorr < 3 ? BMATCH_MULTISCALE : -2;
+    if (o->match == -1) { o->match = BMATCH_MULTISCALE; o->match_default = ncorr >= 3 && !nwant; }
     if (o->match == -2 && (ncorr < 3 || nwant))
         die("cannot read '%s': %d correspondence point%s%s; at least 3 are needed without --match",
             o->corr, ncorr, ncorr == 1 ? "" : "s", nwant ? " given in every shape" : "");
@@ -301,6 +309,7 @@ static void build_single(struct options *o, struct rings *R, struct compat *cp)
     if (rev < 0) die("cannot read '%s': %s", o->corr, cm_errmsg());
     if (rev) info(1, "%s: points run clockwise along the outlines; using them in reverse order", o->corr);
     if (o->match >= 0) corr = match_points(o, N, P, n, flipped, corr, &ncorr, want, nwant);
+    else write_points(o, N, n, flipped, corr, ncorr);
     const char *corr_name = o->match >= 0 ? "the matched points" : o->corr;
     if (compat_match(N, P, n, corr, ncorr, cp, &keep) < 0)
         die("cannot read '%s': %s", corr_name, cm_errmsg());
@@ -397,7 +406,19 @@ int main(int argc, char **argv)
     if (multi && !o.corr) die("several rings or interior points need -c CORR (the matching handles one outer ring)");
     if (multi) build_multi(&o, R, &cp);
     else build_single(&o, R, &cp);
-    if (!multi && compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
+    if (!multi && compat_triangulate(&cp) < 0) {
+        /* the points placed by the default matching between 3 or more given
+         * rows can make a piece too thin to split; the given rows alone are
+         * the earlier default (-m off): use them and say so */
+        if (!o.match_default) die("%s", cm_errmsg());
+        char msg[512];
+        snprintf(msg, sizeof msg, "%s", cm_errmsg());
+        compat_free(&cp);
+        o.match = -2;
+        build_single(&o, R, &cp);
+        if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
+        warn("with the matched points: %s; used the given rows only (-m off)", msg);
+    }
     double ma0, q0 = compat_min_angle(&cp, &ma0);
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
