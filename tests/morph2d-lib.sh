@@ -69,3 +69,34 @@ elephant_walk_frames() {
 	files= && for k in "$@"; do files="$files elephant/frame_$k.obj"; done &&
 	tar -xJf "$SHARED_DATA/anim/elephant-walk-457.tar.xz" -C . $files
 }
+
+# camel_traced_poses: camel1.rings .. camel5.rings, the five gallop frames
+# of the shared scans rendered from the side (300 by 300) and traced
+camel_traced_poses() {
+	for i in 1 2 3 4 5; do
+		mesh-import "$SHARED_DATA/scans/camel-gallop-0$i.off" |
+		mesh-render -V right -s 300x300 -c 0,0,0 --flat -f ppm >camel$i.ppm &&
+		img2rings -1 -s 1 -o camel$i.rings camel$i.ppm || return 1
+	done
+}
+
+# camel_landmarks POSE: on the traced camel gallop (camel_traced_poses), seven
+# landmarks per pose picked by eye on the 300x300 renders (pixel units, y
+# up): ear tip, snout, neck-hump notch, first and second hoof along the
+# outline, last (rear) hoof, tail tip.  Each is snapped to the nearest
+# outline vertex (all within 6 pixels).
+camel_landmarks() {
+	case $1 in
+	1) echo "40 221 26 177 80 191 12 95 115 80 287 109 239 196" ;;
+	2) echo "30 226 16 177 82 192 31 65 151 64 285 72 256 198" ;;
+	3) echo "28 226 14 178 83 193 72 62 153 94 288 91 243 189" ;;
+	4) echo "30 230 16 172 82 191 137 71 182 70 287 65 261 177" ;;
+	5) echo "30 248 16 181 98 204 128 55 198 40 287 36 285 184" ;;
+	esac
+}
+# camel_vertices RINGS POSE: the landmarks' vertex indices, one a line
+camel_vertices() {
+	camel_landmarks $2 | tr ' ' '\n' | paste -d' ' - - | awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
+	{ b = -1; for (i = 0; i < n; i++) { d = ($1 - x[i]) ^ 2 + ($2 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
+	  if (bd > 36) { print "landmark far from the outline" >"/dev/stderr"; exit 1 } print b }' "$1" -
+}

@@ -1,33 +1,14 @@
 #!/bin/sh
 test_description='compat-tri matching on traced camel poses: landmarks picked on pose 0 only land on the same feature'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/morph2d-lib.sh"
 need_shared_data scans/camel-gallop-05.off
 
-# Five gallop frames rendered from the side and traced (as t0516).  Seven
-# landmarks per pose picked by eye on the 300x300 renders (pixel units, y
-# up): ear tip, snout, neck-hump notch, first and second hoof along the
-# outline, last (rear) hoof, tail tip.  Each is snapped to the nearest
-# outline vertex (all within 6 pixels).
-lm() {
-	case $1 in
-	1) echo "40 221 26 177 80 191 12 95 115 80 287 109 239 196" ;;
-	2) echo "30 226 16 177 82 192 31 65 151 64 285 72 256 198" ;;
-	3) echo "28 226 14 178 83 193 72 62 153 94 288 91 243 189" ;;
-	4) echo "30 230 16 172 82 191 137 71 182 70 287 65 261 177" ;;
-	5) echo "30 248 16 181 98 204 128 55 198 40 287 36 285 184" ;;
-	esac
-}
-# vertices RINGS POSE: the landmarks' vertex indices, one a line
-vertices() {
-	lm $2 | tr ' ' '\n' | paste -d' ' - - | awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
-	{ b = -1; for (i = 0; i < n; i++) { d = ($1 - x[i]) ^ 2 + ($2 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
-	  if (bd > 36) { print "landmark far from the outline" >"/dev/stderr"; exit 1 } print b }' "$1" -
-}
 # worst A B [compat-tri options]: worst arc error (% of the perimeter of
 # pose B) of A's landmarks placed in B by the matching
 worst() {
 	a=$1 b=$2 && shift 2 &&
-	vertices camel$a.rings $a >va && vertices camel$b.rings $b >vb &&
+	camel_vertices camel$a.rings $a >va && camel_vertices camel$b.rings $b >vb &&
 	awk '{ print $1, -1 }' va >want &&
 	compat-tri "$@" --refine none -c want --points-out got camel$a.rings camel$b.rings >/dev/null &&
 	grep -v "^#" got | awk 'NR == FNR { t[$1] = FNR; next } ($1 in t) { print $2, t[$1] }' va - |
@@ -40,11 +21,7 @@ worst() {
 }
 
 test_expect_success 'generate five camel poses: mesh-import | mesh-render | img2rings' '
-	for i in 1 2 3 4 5; do
-		mesh-import "$SHARED_DATA/scans/camel-gallop-0$i.off" |
-		mesh-render -V right -s 300x300 -c 0,0,0 --flat -f ppm >camel$i.ppm &&
-		img2rings -1 -s 1 -o camel$i.rings camel$i.ppm || return 1
-	done
+	camel_traced_poses
 '
 # measured: multiscale 0.56, 0.83, 0.21; elastic (the old default) 5.02, 10.10, 5.29
 test_expect_success 'legs swung the other way: every landmark within 1% (Sebastian-Kimia cost alone: 5-10%)' '

@@ -6,26 +6,12 @@ need_shared_data scans/camel-gallop-05.off
 
 # The traced camel gallop of t0585 and its seven hand landmarks (ear tip,
 # snout, neck-hump notch, first and second hoof, rear hoof, tail tip).
-lm() {
-	case $1 in
-	1) echo "40 221 26 177 80 191 12 95 115 80 287 109 239 196" ;;
-	2) echo "30 226 16 177 82 192 31 65 151 64 285 72 256 198" ;;
-	3) echo "28 226 14 178 83 193 72 62 153 94 288 91 243 189" ;;
-	4) echo "30 230 16 172 82 191 137 71 182 70 287 65 261 177" ;;
-	5) echo "30 248 16 181 98 204 128 55 198 40 287 36 285 184" ;;
-	esac
-}
-vertices() {
-	lm $2 | tr ' ' '\n' | paste -d' ' - - | awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
-	{ b = -1; for (i = 0; i < n; i++) { d = ($1 - x[i]) ^ 2 + ($2 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
-	  if (bd > 36) { print "landmark far from the outline" >"/dev/stderr"; exit 1 } print b }' "$1" -
-}
 # held A B GIVEN [compat-tri options]: the landmarks whose numbers are in
 # GIVEN are given in both poses, the others picked on pose A only; prints
 # the worst arc error (% of B's perimeter) of where the held-out ones land
 held() {
 	a=$1 b=$2 g=$3 && shift 3 &&
-	vertices camel$a.rings $a >va && vertices camel$b.rings $b >vb &&
+	camel_vertices camel$a.rings $a >va && camel_vertices camel$b.rings $b >vb &&
 	paste -d" " va vb | awk -v g=" $g " "{ if (index(g, \" \" NR \" \")) print; else print \$1, -1 }" >c &&
 	compat-tri "$@" --refine none -c c --points-out got camel$a.rings camel$b.rings >m.mesh &&
 	paste -d" " va vb | awk -v g=" $g " "!index(g, \" \" NR \" \")" >truth &&
@@ -38,11 +24,7 @@ held() {
 }
 
 test_expect_success 'generate five camel poses: mesh-import | mesh-render | img2rings' '
-	for i in 1 2 3 4 5; do
-		mesh-import "$SHARED_DATA/scans/camel-gallop-0$i.off" |
-		mesh-render -V right -s 300x300 -c 0,0,0 --flat -f ppm >camel$i.ppm &&
-		img2rings -1 -s 1 -o camel$i.rings camel$i.ppm || return 1
-	done
+	camel_traced_poses
 '
 # Three landmarks given (ear tip, snout, first hoof), the other four picked
 # on pose A only and placed by the matching.  Measured: default 0.89, 1.14,
@@ -60,7 +42,7 @@ test_expect_success 'five rows given: held-out notch and second hoof within 1.5%
 	done
 '
 test_expect_success '-m off keeps the earlier behaviour: rows picked on one pose only are refused' '
-	vertices camel1.rings 1 >va && vertices camel2.rings 2 >vb &&
+	camel_vertices camel1.rings 1 >va && camel_vertices camel2.rings 2 >vb &&
 	paste -d" " va vb | awk "{ if (NR <= 4) print; else print \$1, -1 }" >c &&
 	test_must_fail compat-tri -m off -c c camel1.rings camel2.rings >o.mesh 2>err &&
 	test $(wc -l <err) = 1 && test ! -s o.mesh
