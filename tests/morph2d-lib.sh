@@ -100,3 +100,12 @@ camel_vertices() {
 	{ b = -1; for (i = 0; i < n; i++) { d = ($1 - x[i]) ^ 2 + ($2 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
 	  if (bd > 36) { print "landmark far from the outline" >"/dev/stderr"; exit 1 } print b }' "$1" -
 }
+
+# arc_error_max RINGS PAIRS: the largest arc distance (% of the perimeter of
+# the single ring of RINGS) between the two vertex indices of a row of PAIRS
+arc_error_max() {
+	awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
+	FNR == 1 { c[0] = 0; for (i = 0; i < n; i++) { j = (i + 1) % n; c[i + 1] = c[i] + sqrt((x[j] - x[i]) ^ 2 + (y[j] - y[i]) ^ 2) } L = c[n] }
+	{ d = c[$1] - c[$2]; if (d < 0) d = -d; if (L - d < d) d = L - d; if (d > m) m = d }
+	END { printf "%.2f\n", 100 * m / L }' "$1" "$2"
+}

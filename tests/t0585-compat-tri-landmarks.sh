@@ -14,10 +14,7 @@ worst() {
 	grep -v "^#" got | awk 'NR == FNR { t[$1] = FNR; next } ($1 in t) { print $2, t[$1] }' va - |
 	while read v k; do echo "$v $(sed -n "${k}p" vb)"; done >placed &&
 	test $(wc -l <placed) -eq 7 &&
-	awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
-	FNR == 1 { c[0] = 0; for (i = 0; i < n; i++) { j = (i + 1) % n; c[i + 1] = c[i] + sqrt((x[j] - x[i]) ^ 2 + (y[j] - y[i]) ^ 2) } L = c[n] }
-	{ d = c[$1] - c[$2]; if (d < 0) d = -d; if (L - d < d) d = L - d; if (d > m) m = d }
-	END { printf "%.2f\n", 100 * m / L }' camel$b.rings placed
+	arc_error_max camel$b.rings placed
 }
 
 test_expect_success 'generate five camel poses: mesh-import | mesh-render | img2rings' '
