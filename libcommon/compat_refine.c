@@ -7,6 +7,7 @@
 #include "rings.h"
 #include <math.h>
 #include <stdlib.h>
+#include <limits.h>
 #include <string.h>
 
 /* ------------------------------------------------------------------ */
@@ -103,6 +104,11 @@ struct work {
                              outline edge, the outline vertices at the ends
                              of the input segment it lies on (it may slide
                              along it, shape by shape); -1 -1 otherwise */
+    int *id;              /* cap: a number that stays with the vertex
+                             (vertex indices change when collapses compact) */
+    unsigned long long *sig; /* cap: signature of the vertex's star at the
+                             last smoothing (star_sigs) */
+    int nextid;
     int vcap;
 };
 
@@ -121,6 +127,12 @@ static int grow_v(struct work *w, int nv)
         int *g = realloc(w->seg, 2 * (size_t)cap * sizeof *g);
         if (!g) return cm_seterr("out of memory");
         w->seg = g;
+        int *id = realloc(w->id, cap * sizeof *id);
+        if (!id) return cm_seterr("out of memory");
+        w->id = id;
+        unsigned long long *sg = realloc(w->sig, cap * sizeof *sg);
+        if (!sg) return cm_seterr("out of memory");
+        w->sig = sg;
         w->vcap = cap;
     }
     return 0;
@@ -301,6 +313,8 @@ static int bisect(struct work *w, int f1, int f2, int a, int b)
     if (!positive(c, a, m, p) || !positive(c, m, b, p)) return 0;
     if (f2 >= 0 && (!positive(c, b, m, q) || !positive(c, m, a, q))) return 0;
     c->nv++;
+    w->id[m] = w->nextid++;
+    w->sig[m] = 0;
     w->bnd[m] = f2 < 0;
     w->bsucc[m] = -1;
     w->seg[2 * m] = w->seg[2 * m + 1] = -1;
@@ -396,7 +410,7 @@ static int renumber(struct work *w, int nb0, int nv0)
     int k = 0;
     for (int i = 0; i < nb0; i++) {
         map[i] = k++;
-        for (int v = w->bsucc[i]; v >= nv0 && map[v] < 0; v = w->bsucc[v]) map[v] = k++;
+        for (int v = w->bsucc[i]; v >= nb0 && map[v] < 0; v = w->bsucc[v]) map[v] = k++;
     }
     int nb = k;
     for (int v = 0; v < nv; v++)
@@ -794,53 +808,74 @@ static double face_sin(const struct compat *c, int a, int b, int d)
     return q;
 }
 
-/* One pass of compatible edge collapses: an interior vertex v in a
- * triangle below goal (in some shape) is merged into the neighbour u that
- * gives the best result, if the link condition holds (u and v share
- * exactly two neighbours), every changed triangle stays positive in every
- * shape (exact) and the smallest angle over the changed triangles and
- * shapes is larger than that of v's star.  Undoes the tiny pieces that
- * overlays leave.  Vertices near a collapse wait for the next pass
- * (the topology is stale there).  dead: #V flags of removed vertices.
- * Returns the number of collapses, -1 on error. */
-static int collapse_pass(struct work *w, unsigned char *dead, double goal)
+/* One pass of compatible edge collapses: a vertex v is merged into a
+ * neighbour u (v's triangles that hold u vanish, the others take u for v)
+ * if the link condition holds (u and v share exactly two neighbours, one
+ * for an outline edge), every changed triangle stays positive in every
+ * shape (exact) and
+ *   coarsen == 0: v is in a triangle below goal (in some shape) and the
+ *                 smallest angle over the changed triangles and shapes is
+ *                 larger than that of v's star (undoes the tiny pieces
+ *                 that overlays leave, and splits that did not help);
+ *   coarsen == 1: any such v, and that smallest angle is not below the
+ *                 smaller of v's star's and the goal (good triangles stay
+ *                 good, none gets worse than it was): fewer vertices.
+ * v is an interior vertex, or an outline vertex made by a split (it lies
+ * on an input outline segment and is merged into its neighbour along the
+ * outline, so the outline is unchanged).  Input outline vertices and
+ * interior correspondence points stay.  Of the u that qualify the one
+ * giving the best smallest angle is taken.  Vertices near a collapse wait
+ * for the next pass (the topology is stale there).  dead: #V flags of
+ * removed vertices.  Returns the number of collapses, -1 on error. */
+static int collapse_pass(struct work *w, unsigned char *dead, double goal, int coarsen, int maxid)
 {
     struct compat *c = w->c;
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    unsigned char *lock = calloc(c->nv, 1);
+    unsigned char *lock = calloc(c->nv ? c->nv : 1, 1);
     if (!lock) { topology_free(&t); return cm_seterr("out of memory"); }
     double sg = sin(goal);
     int n = 0;
     for (int v = 0; v < c->nv; v++) {
-        if (w->bnd[v] || dead[v] || lock[v] || t.VFs[v + 1] == t.VFs[v]) continue;
+        int onb = w->bnd[v];
+        if (onb && w->seg[2 * v] < 0) continue;   /* input outline vertex */
+        if (dead[v] || lock[v] || t.VFs[v + 1] == t.VFs[v] || w->id[v] >= maxid) continue;
         double old = INFINITY;
         for (int k = t.VFs[v]; k < t.VFs[v + 1]; k++) {
             const int *F = c->F + 3 * t.VF[k];
             old = fmin(old, face_sin(c, F[0], F[1], F[2]));
         }
-        if (!(old < sg)) continue;
-        int bu = -1;
-        double bq = old;
+        if (!coarsen && !(old < sg)) continue;
+        int bu = -1, pred = -1;
+        double floor = coarsen ? fmin(old, sg) : old, bq = -1;
         for (int i = t.VVs[v]; i < t.VVs[v + 1]; i++) {
             int u = t.VV[i];
             if (dead[u] || lock[u]) continue;
-            /* link condition: exactly two common neighbours */
+            if (w->bsucc[u] == v) pred = u;
+            int e = topology_edge(&t, u, v);
+            if (onb != (t.EFn[e] == 1)) continue;       /* an outline vertex moves along the outline */
+            /* link condition */
             int common = 0;
             for (int j = t.VVs[v]; j < t.VVs[v + 1]; j++)
                 if (topology_edge(&t, u, t.VV[j]) >= 0) common++;
-            if (common != 2) continue;
+            if (common != (onb ? 1 : 2)) continue;
             double q = INFINITY;
-            for (int k = t.VFs[v]; k < t.VFs[v + 1] && q > bq; k++) {
+            int gone = 0;
+            for (int k = t.VFs[v]; k < t.VFs[v + 1] && q > floor && q > bq; k++) {
                 const int *F = c->F + 3 * t.VF[k];
-                if (F[0] == u || F[1] == u || F[2] == u) continue;
+                if (F[0] == u || F[1] == u || F[2] == u) { gone++; continue; }
                 int G[3];
                 for (int j = 0; j < 3; j++) G[j] = F[j] == v ? u : F[j];
                 q = fmin(q, face_sin(c, G[0], G[1], G[2]));
             }
-            if (q > bq) { bq = q; bu = u; }
+            if (gone != (onb ? 1 : 2)) continue;
+            if ((coarsen ? q >= floor : q > floor) && q > 0 && q > bq) { bq = q; bu = u; }
         }
         if (bu < 0) continue;
+        if (onb) {   /* keep the outline order */
+            if (w->bsucc[v] == bu) { if (pred < 0) continue; w->bsucc[pred] = bu; }
+            else w->bsucc[bu] = w->bsucc[v];
+        }
         for (int k = t.VFs[v]; k < t.VFs[v + 1]; k++) {
             int *F = c->F + 3 * t.VF[k];
             if (F[0] == bu || F[1] == bu || F[2] == bu) { F[0] = F[1] = F[2] = -1; continue; }
@@ -864,25 +899,31 @@ static int collapse_pass(struct work *w, unsigned char *dead, double goal)
     return n;
 }
 
-/* collapses until none helps, then the removed vertices are dropped
- * (vertices keep their order, so the fixed ones 0..nb-1 keep their
- * numbers).  Returns the number of vertices removed, -1 on error. */
-static int collapse_all(struct work *w, double goal)
+/* collapses (collapse_pass) until none is made, then the removed vertices
+ * are dropped (vertices keep their order, so the fixed ones 0..nb-1 keep
+ * their numbers); only vertices whose id is below maxid are removed.
+ * *nv0: vertices below it are the input's (outline,
+ * Steiner points); it is lowered by the input vertices removed.  Returns
+ * the number of vertices removed, -1 on error. */
+static int collapse_all(struct work *w, double goal, int coarsen, int maxid, int *nv0)
 {
     struct compat *c = w->c;
     unsigned char *dead = calloc(c->nv ? c->nv : 1, 1);
     if (!dead) return cm_seterr("out of memory");
     int total = 0;
     for (int pass = 0; pass < 50; pass++) {
-        int n = collapse_pass(w, dead, goal);
+        int n = collapse_pass(w, dead, goal, coarsen, maxid);
         if (n < 0) { free(dead); return -1; }
         total += n;
         if (!n) break;
     }
     if (total) {
-        int *map = malloc(c->nv * sizeof *map), k = 0;
+        int *map = malloc(c->nv * sizeof *map), k = 0, lost = 0;
         if (!map) { free(dead); return cm_seterr("out of memory"); }
-        for (int v = 0; v < c->nv; v++) map[v] = dead[v] ? -1 : k++;
+        for (int v = 0; v < c->nv; v++) {
+            map[v] = dead[v] ? -1 : k++;
+            lost += dead[v] && v < *nv0;
+        }
         for (int v = 0; v < c->nv; v++) {
             if (dead[v]) continue;
             for (int s = 0; s < c->N; s++) {
@@ -891,13 +932,148 @@ static int collapse_all(struct work *w, double goal)
             }
             w->bnd[map[v]] = w->bnd[v];
             w->bsucc[map[v]] = w->bsucc[v] >= 0 ? map[w->bsucc[v]] : -1;
+            w->id[map[v]] = w->id[v];
+            w->sig[map[v]] = w->sig[v];
+            w->seg[2 * map[v]] = w->seg[2 * v];           /* input outline vertices: */
+            w->seg[2 * map[v] + 1] = w->seg[2 * v + 1];   /* never removed, same numbers */
         }
         for (int f = 0; f < 3 * c->nf; f++) c->F[f] = map[c->F[f]];
         c->nv = k;
+        *nv0 -= lost;
         free(map);
     }
     free(dead);
     return total;
+}
+
+static unsigned long long mix64(unsigned long long x)
+{
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+/* signature of every vertex's star (sum of a hash of each incident face's
+ * vertex ids, in the face's cyclic order from its smallest id): it changes
+ * when a split, flip or collapse changes the star, whatever the vertex
+ * numbers.  out: #V */
+static void star_sigs(const struct work *w, unsigned long long *out)
+{
+    const struct compat *c = w->c;
+    memset(out, 0, c->nv * sizeof *out);
+    for (int f = 0; f < c->nf; f++) {
+        const int *F = c->F + 3 * f;
+        int a = w->id[F[0]], b = w->id[F[1]], d = w->id[F[2]], k = a < b ? (a < d ? 0 : 2) : (b < d ? 1 : 2);
+        int I[3] = {a, b, d};
+        unsigned long long h = mix64(mix64(mix64((unsigned)I[k]) ^ (unsigned)I[(k + 1) % 3]) ^ (unsigned)I[(k + 2) % 3]);
+        for (int j = 0; j < 3; j++) out[F[j]] += h;
+    }
+}
+
+/* Worst face of the mesh measured against what each corner allows
+ * (face_ratio): returns that ratio (1: every angle reaches the goal or all
+ * its corner can give), *wf / *ws the face and shape where it is, *nbad
+ * the number of faces below 1 (the goal).  -1 on
+ * out of memory. */
+static double worst_ratio(struct work *w, double goal, int *wf, int *ws, int *nbad)
+{
+    struct compat *c = w->c;
+    double *open = malloc((size_t)c->N * (c->nv ? c->nv : 1) * sizeof *open);
+    int *cnt = malloc((c->nv ? c->nv : 1) * sizeof *cnt);
+    if (!open || !cnt) { free(open); free(cnt); cm_seterr("out of memory"); return -1; }
+    corner_openings(c, w->bnd, open, cnt);
+    double r = INFINITY;
+    *wf = *ws = *nbad = 0;
+    for (int f = 0; f < c->nf; f++) {
+        int s = 0;
+        double x = face_ratio(c, f, goal, open, cnt, &s);
+        if (x < r) { r = x; *wf = f; *ws = s; }
+        *nbad += x < 1 - 1e-9;
+    }
+    free(open); free(cnt);
+    return r;
+}
+
+/* the mesh and the work arrays, for going back to the best round */
+struct best { int nv, nf, nv0; double **X; int *F; unsigned char *bnd; int *bsucc, *seg; };
+
+static int best_take(const struct work *w, int nv0, struct best *b)
+{
+    const struct compat *c = w->c;
+    size_t nv = c->nv ? c->nv : 1;
+    if (!b->X && !(b->X = calloc(c->N, sizeof *b->X))) return cm_seterr("out of memory");
+    for (int s = 0; s < c->N; s++) {
+        double *x = realloc(b->X[s], 2 * nv * sizeof *x);
+        if (!x) return cm_seterr("out of memory");
+        b->X[s] = x;
+        memcpy(x, c->X[s], 2 * (size_t)c->nv * sizeof *x);
+    }
+    int *F = realloc(b->F, 3 * (size_t)(c->nf ? c->nf : 1) * sizeof *F);
+    unsigned char *bn = realloc(b->bnd, nv);
+    if (F) b->F = F;
+    if (bn) b->bnd = bn;
+    int *bs = realloc(b->bsucc, nv * sizeof *bs);
+    if (bs) b->bsucc = bs;
+    int *sg = realloc(b->seg, 2 * nv * sizeof *sg);
+    if (sg) b->seg = sg;
+    if (!F || !bn || !bs || !sg) return cm_seterr("out of memory");
+    memcpy(b->F, c->F, 3 * (size_t)c->nf * sizeof *F);
+    memcpy(b->bnd, w->bnd, c->nv);
+    memcpy(b->bsucc, w->bsucc, c->nv * sizeof *bs);
+    memcpy(b->seg, w->seg, 2 * (size_t)c->nv * sizeof *sg);
+    b->nv = c->nv; b->nf = c->nf; b->nv0 = nv0;
+    return 0;
+}
+
+/* back to b (c has room: it only grew since) */
+static void best_restore(struct work *w, const struct best *b, int *nv0)
+{
+    struct compat *c = w->c;
+    c->nv = b->nv; c->nf = b->nf; *nv0 = b->nv0;
+    for (int s = 0; s < c->N; s++) memcpy(c->X[s], b->X[s], 2 * (size_t)b->nv * sizeof **b->X);
+    memcpy(c->F, b->F, 3 * (size_t)b->nf * sizeof *c->F);
+    memcpy(w->bnd, b->bnd, b->nv);
+    memcpy(w->bsucc, b->bsucc, b->nv * sizeof *w->bsucc);
+    memcpy(w->seg, b->seg, 2 * (size_t)b->nv * sizeof *w->seg);
+}
+
+static void best_free(int N, struct best *b)
+{
+    if (b->X) for (int s = 0; s < N; s++) free(b->X[s]);
+    free(b->X); free(b->F); free(b->bnd); free(b->bsucc); free(b->seg);
+}
+
+/* how anisotropic the maps between the shapes are on face f: the largest
+ * ratio of the singular values of the affine map from shape s to shape t
+ * over all pairs (1: every shape a similar copy) */
+static double face_stretch(const struct compat *c, int f)
+{
+    const int *F = c->F + 3 * f;
+    double worst = 1;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        double a = X[2 * F[1]] - X[2 * F[0]], b = X[2 * F[2]] - X[2 * F[0]];
+        double cc = X[2 * F[1] + 1] - X[2 * F[0] + 1], d = X[2 * F[2] + 1] - X[2 * F[0] + 1];
+        double det = a * d - b * cc;
+        if (!(det != 0)) continue;
+        /* inverse of [a b; cc d] */
+        double ia = d / det, ib = -b / det, ic = -cc / det, id = a / det;
+        for (int t = 0; t < c->N; t++) {
+            if (t == s) continue;
+            const double *Y = c->X[t];
+            double p = Y[2 * F[1]] - Y[2 * F[0]], q = Y[2 * F[2]] - Y[2 * F[0]];
+            double r = Y[2 * F[1] + 1] - Y[2 * F[0] + 1], u = Y[2 * F[2] + 1] - Y[2 * F[0] + 1];
+            /* M = [p q; r u] * inverse */
+            double m0 = p * ia + q * ic, m1 = p * ib + q * id, m2 = r * ia + u * ic, m3 = r * ib + u * id;
+            double fro = m0 * m0 + m1 * m1 + m2 * m2 + m3 * m3, dt = fabs(m0 * m3 - m1 * m2);
+            double disc = sqrt(fmax(0, fro * fro - 4 * dt * dt));
+            double s1 = sqrt(0.5 * (fro + disc)), s2 = sqrt(fmax(0, 0.5 * (fro - disc)));
+            if (s2 > 0) worst = fmax(worst, s1 / s2);
+            else worst = INFINITY;
+        }
+    }
+    return worst;
 }
 
 int compat_refine(struct compat *c, const struct compat_refine_params *pa, struct compat_refine_stats *st)
@@ -909,11 +1085,13 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
     memset(st, 0, sizeof *st);
     struct snapshot snap;
     memset(&snap, 0, sizeof snap);
+    struct best best;
+    memset(&best, 0, sizeof best);
     double q0 = compat_min_angle(c, NULL);
-    struct work w = {c, NULL, NULL, NULL, NULL, 0};
+    struct work w = {c, NULL, NULL, NULL, NULL, NULL, NULL, 0, 0};
     int nb0 = c->nb, nv0 = c->nv, rc = -1;
-    int *Fsave = NULL;
     unsigned char *seed = NULL;
+    unsigned long long *sig = NULL;
     w.diag = malloc(c->N * sizeof *w.diag);
     if (!w.diag) { cm_seterr("out of memory"); goto out; }
     for (int s = 0; s < c->N; s++) {
@@ -925,7 +1103,12 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
     if (snap_take(c, &snap) < 0 || grow_v(&w, c->nv) < 0) goto out;
     /* boundary flags and successors from the faces */
     memset(w.bnd, 0, c->nv);
-    for (int v = 0; v < c->nv; v++) w.bsucc[v] = w.seg[2 * v] = w.seg[2 * v + 1] = -1;
+    for (int v = 0; v < c->nv; v++) {
+        w.bsucc[v] = w.seg[2 * v] = w.seg[2 * v + 1] = -1;
+        w.id[v] = v;
+        w.sig[v] = 0;
+    }
+    w.nextid = c->nv;
     {
         struct topology t;
         if (topology_build(c->F, c->nf, c->nv, &t) < 0) goto out;
@@ -940,32 +1123,31 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
         /* interior correspondence points (compat_holes) never move either */
         for (int v = 0; v < c->nb; v++) w.bnd[v] = 1;
     }
-    /* after the first round only what splits and flips changed is smoothed
-     * (seed: vertices of faces that differ from Fsave, the faces after the
-     * last smoothing; new vertices) */
-    int nfsave = 0, nvsave = 0, full = 1;
-    if (pa->mips > 0) {
-        int k = collapse_all(&w, goal);
+    /* after the first round only what splits, flips and collapses changed
+     * is smoothed (seed: vertices whose star signature differs from w.sig,
+     * taken after the last smoothing; new vertices) */
+    int full = 1, remesh = pa->mips > 0;
+    int nvin = nv0;   /* vertices below it: the input's (collapses lower it) */
+    if (remesh) {
+        int k = collapse_all(&w, goal, 0, INT_MAX, &nvin);
         if (k < 0) goto out;
         st->collapses = k;
-        c->nsteiner = c->nsteiner > k ? c->nsteiner - k : 0;
-        nv0 = c->nv;
     }
+    double wbest = -1, wcur = -1;
+    int stall = 0, wf = 0, ws = 0, capped = 0, nbad = 0, nbest = INT_MAX;
+    st->stop = COMPAT_REFINE_ROUNDS;
     for (int r = 0; r < rounds; r++) {
         st->rounds++;
         if (flips_until_done(c, &st->flips) < 0) goto out;
         free(seed);
         seed = NULL;
         if (!full) {
-            seed = calloc(c->nv, 1);
-            if (!seed) { cm_seterr("out of memory"); goto out; }
-            for (int f = 0; f < c->nf; f++) {
-                const int *F = c->F + 3 * f;
-                if (f < nfsave && F[0] == Fsave[3 * f] && F[1] == Fsave[3 * f + 1] && F[2] == Fsave[3 * f + 2])
-                    continue;
-                seed[F[0]] = seed[F[1]] = seed[F[2]] = 1;
-            }
-            for (int v = nvsave; v < c->nv; v++) seed[v] = 1;
+            seed = malloc(c->nv);
+            unsigned long long *sn = realloc(sig, c->nv * sizeof *sn);
+            if (!seed || !sn) { cm_seterr("out of memory"); goto out; }
+            sig = sn;
+            star_sigs(&w, sig);
+            for (int v = 0; v < c->nv; v++) seed[v] = sig[v] != w.sig[v];
         }
         int m = pa->mips > 0 ? mips_sweeps(c, w.bnd, w.seg, pa->mips, seed) : 0;
         if (m < 0) goto out;
@@ -990,21 +1172,61 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
         }
         full = 0;
         if (flips_until_done(c, &st->flips) < 0) goto out;
-        if (c->nv >= max_nv) break;
-        int *Fn = realloc(Fsave, 3 * (size_t)c->nf * sizeof *Fn);
-        if (!Fn) { cm_seterr("out of memory"); goto out; }
-        Fsave = Fn;
-        memcpy(Fsave, c->F, 3 * (size_t)c->nf * sizeof *Fsave);
-        nfsave = c->nf; nvsave = c->nv;
+        if (remesh) {   /* the input's pieces that smoothing left bad (undoing
+                           splits here would only have them made again) */
+            int k = collapse_all(&w, goal, 0, nv0, &nvin);
+            if (k < 0) goto out;
+            st->collapses += k;
+            if (k && flips_until_done(c, &st->flips) < 0) goto out;
+        }
+        wcur = worst_ratio(&w, goal, &wf, &ws, &nbad);
+        if (wcur < 0) goto out;
+        if (wcur >= 1) { st->stop = COMPAT_REFINE_GOAL; break; }
+        /* progress: the worst angle rose, or fewer triangles are below
+         * the goal (where the maps between the shapes are stretched,
+         * splits only make more bad triangles) */
+        int better = nbad < 0.95 * nbest;
+        if (nbad < nbest) nbest = nbad;
+        if (wcur > wbest + COMPAT_REFINE_GAIN / goal) {
+            wbest = wcur;
+            better = 1;
+            if (remesh && best_take(&w, nvin, &best) < 0) goto out;
+        }
+        /* stalled: several rounds without progress that added a quarter
+         * of the best round's vertices (cheap local rounds go on longer) */
+        if (better) stall = 0;
+        else if (++stall >= COMPAT_REFINE_STALL && remesh &&
+                 (c->nv > 1.25 * best.nv || stall >= 4 * COMPAT_REFINE_STALL)) {
+            st->stop = COMPAT_REFINE_STALLED;
+            break;
+        }
+        if (c->nv >= max_nv || capped) { st->stop = COMPAT_REFINE_MAXNV; break; }
+        star_sigs(&w, w.sig);
         int n = split_pass(&w, pa, &st->splits, &st->bsplits);
         if (n < 0) goto out;
-        if (n == 0) break;
+        if (n == 0) { st->stop = COMPAT_REFINE_NOSPLIT; break; }
+        capped = c->nv >= max_nv;   /* smoothed once more, then stop */
     }
-    /* final polish */
+    st->stalled = stall;
+    /* back to the best round if the later ones only added vertices */
+    if (remesh && best.nv && wbest > wcur) {
+        best_restore(&w, &best, &nvin);
+        st->restored = 1;
+    }
+    /* final polish; with remeshing, edge collapses that keep every good
+     * triangle good and make no triangle worse first */
     for (int k = 0; k < 4; k++) {
-        int m = smooth_sweeps(c, w.bnd, 8, NULL);
-        if (m < 0) goto out;
-        st->moves += m;
+        int m = 0;
+        if (remesh) {
+            m = collapse_all(&w, goal, 1, INT_MAX, &nvin);
+            if (m < 0) goto out;
+            st->collapses += m;
+            st->coarsened += m;
+        }
+        int m1 = smooth_sweeps(c, w.bnd, 8, NULL);
+        if (m1 < 0) goto out;
+        st->moves += m1;
+        m += m1;
         if (pa->mips > 0) {
             int m2 = polish(c, w.bnd, w.seg, goal, 4);
             if (m2 < 0) goto out;
@@ -1015,7 +1237,22 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
         if (flips_until_done(c, &st->flips) < 0) goto out;
         if (st->flips == f0 && m == 0) break;
     }
-    if (renumber(&w, nb0, nv0) < 0) goto out;
+    /* where the worst triangle is and how stretched the maps are there */
+    wcur = worst_ratio(&w, goal, &wf, &ws, &nbad);
+    if (wcur < 0) goto out;
+    if (c->nf > 0) {
+        const int *F = c->F + 3 * wf;
+        const double *X = c->X[ws];
+        st->worst_shape = ws;
+        for (int d = 0; d < 2; d++) st->worst_at[d] = (X[2 * F[0] + d] + X[2 * F[1] + d] + X[2 * F[2] + d]) / 3;
+        st->stretch = face_stretch(c, wf);
+    }
+    /* the input's Steiner points that collapses removed */
+    {
+        int lost = nv0 - nvin;
+        c->nsteiner = c->nsteiner > lost ? c->nsteiner - lost : 0;
+    }
+    if (renumber(&w, nb0, nvin) < 0) goto out;
     double minarea, q1 = compat_min_angle(c, &minarea);
     if (!(minarea > 0) || q1 < q0) {
         snap_restore(c, &snap);
@@ -1024,6 +1261,7 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
     rc = 0;
 out:
     snap_free(c->N, &snap);
-    free(w.bnd); free(w.bsucc); free(w.seg); free(w.diag); free(Fsave); free(seed);
+    best_free(c->N, &best);
+    free(w.bnd); free(w.bsucc); free(w.seg); free(w.diag); free(w.id); free(w.sig); free(sig); free(seed);
     return rc;
 }

@@ -5,11 +5,18 @@
  * flips and per-shape smoothing, until every angle of every triangle in
  * every shape reaches a goal (or nothing helps any more).
  *
- * First (with MIPS smoothing, pa->mips > 0) compatible edge collapses:
- * an interior vertex of a triangle below the goal is merged into the
- * neighbour that makes its star better in every shape (link condition,
- * every changed triangle positive in every shape, exact); this undoes the
- * tiny pieces overlays leave.
+ * First (with MIPS smoothing, pa->mips > 0: a remeshing loop) compatible
+ * edge collapses: an interior vertex of a triangle below the goal is
+ * merged into the neighbour that makes its star better in every shape
+ * (link condition, every changed triangle positive in every shape, exact);
+ * this undoes the tiny pieces overlays leave (and again after every
+ * round's smoothing, for the input's vertices).  With pa->mips > 0 the
+ * splitting also stops when it stalls (COMPAT_REFINE_STALLED: where the
+ * maps between the shapes are stretched, splits only make more bad
+ * triangles) and the mesh goes back to the round with the best worst
+ * angle; the final polish then coarsens: a vertex (interior, or an outline
+ * vertex made by a split) is collapsed wherever no triangle gets worse
+ * than the smaller of its old smallest angle and the goal.
  * One round:
  *   flips      an interior edge is flipped if the flipped pair is
  *              positively oriented in all N shapes (exact orientation
@@ -64,9 +71,38 @@ struct compat_refine_stats {
     int flips;         /* compatible flips */
     int moves;         /* accepted smoothing moves (vertex x shape) */
     int collapses;     /* interior vertices removed by edge collapses */
+    int coarsened;     /* of collapses: those of the final coarsening */
     int kept_input;    /* 1 if the refined mesh was worse than the input and
                           the input was kept */
+    int stop;          /* why the splitting stopped: COMPAT_REFINE_* */
+    int stalled;       /* rounds in a row at the end without progress (see
+                          COMPAT_REFINE_STALLED) */
+    int restored;      /* 1 if the mesh went back to the best round (later
+                          rounds only added vertices) */
+    int worst_shape;   /* where the result's worst triangle is (measured
+                          against what its corner allows): the shape, */
+    double worst_at[2];/* its centroid in that shape, and */
+    double stretch;    /* the largest ratio of singular values of the
+                          affine maps between the shapes on it (1: similar
+                          copies; a triangle whose map is stretched k times
+                          cannot have all angles good in both shapes once
+                          k is large) */
 };
+
+/* compat_refine_stats.stop */
+enum {
+    COMPAT_REFINE_GOAL,     /* every angle reached the goal */
+    COMPAT_REFINE_STALLED,  /* COMPAT_REFINE_STALL rounds in a row neither
+                               raised the worst angle by COMPAT_REFINE_GAIN
+                               nor cut the triangles below the goal by 5%,
+                               and added a quarter of the vertices (or 4
+                               times as many rounds) */
+    COMPAT_REFINE_MAXNV,    /* max_nv reached */
+    COMPAT_REFINE_NOSPLIT,  /* no split kept every shape positive */
+    COMPAT_REFINE_ROUNDS    /* rounds used up */
+};
+#define COMPAT_REFINE_STALL 3
+#define COMPAT_REFINE_GAIN (0.05 * M_PI / 180)   /* radians */
 
 struct compat_refine_params {
     double goal;       /* target smallest angle, radians (e.g. 20 degrees) */

@@ -447,10 +447,25 @@ int main(int argc, char **argv)
                                           o.refine == 2 ? 0 : 200};
         struct compat_refine_stats rs;
         if (compat_refine(&cp, &pa, &rs) < 0) die("%s", cm_errmsg());
-        info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d flips, %d moves; "
-                "min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", rs.rounds, rs.splits, rs.bsplits,
-             rs.flips, rs.moves, q0 * 180 / M_PI, compat_min_angle(&cp, NULL) * 180 / M_PI,
+        double q1 = compat_min_angle(&cp, NULL) * 180 / M_PI;
+        info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d collapses (%d coarsening), "
+                "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", rs.rounds,
+             rs.splits, rs.bsplits, rs.collapses, rs.coarsened, rs.flips, rs.moves, q0 * 180 / M_PI, q1,
              rs.kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(&cp) * 180 / M_PI);
+        if (rs.stop != COMPAT_REFINE_GOAL && !rs.kept_input) {
+            char why[160];
+            if (rs.stop == COMPAT_REFINE_STALLED)
+                snprintf(why, sizeof why, "neither the worst angle nor the number of triangles below the goal improved in %d rounds%s", rs.stalled,
+                         rs.restored ? " (back to the best round's mesh)" : "");
+            else if (rs.stop == COMPAT_REFINE_MAXNV)
+                snprintf(why, sizeof why, "--max-vertices %d reached%s", pa.max_nv,
+                         rs.restored ? " (back to the best round's mesh)" : "");
+            else if (rs.stop == COMPAT_REFINE_NOSPLIT) snprintf(why, sizeof why, "no split keeps every pose positive");
+            else snprintf(why, sizeof why, "%d rounds used up", pa.rounds);
+            info(1, "refinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
+                    "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", o.min_angle, why, q1, rs.stretch,
+                 rs.worst_at[0], rs.worst_at[1], rs.worst_shape, o.shapes[rs.worst_shape]);
+        }
     }
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
