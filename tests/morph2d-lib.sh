@@ -52,6 +52,31 @@ worst_angle() {
 	      printf "%.4f\n", m }' "$1"
 }
 
+# under_share MESH DEG: the largest share (percent) over the frames of the
+# triangles whose smallest angle is below DEG degrees
+under_share() {
+	awk -v lim="$2" 'function ang(ax, ay, bx, by, cx, cy,  ux, uy, vx, vy, cr) {
+		ux = bx - ax; uy = by - ay; vx = cx - ax; vy = cy - ay; cr = ux * vy - uy * vx
+		return atan2(cr < 0 ? -cr : cr, ux * vx + uy * vy) * 57.29577951308232 }
+	BEGIN { nf = 0 }
+	$1 == "f" { A[nf] = $2; B[nf] = $3; C[nf] = $4; nf++; next }
+	$1 == "frame" { fr++; k = 0; next }
+	fr > 0 && NF == 3 { X[fr, k] = $1; Y[fr, k] = $2; k++ }
+	END { m = 0; for (f = 1; f <= fr; f++) { n = 0; for (t = 0; t < nf; t++) {
+		a = A[t]; b = B[t]; c = C[t]
+		q = ang(X[f,a], Y[f,a], X[f,b], Y[f,b], X[f,c], Y[f,c])
+		r = ang(X[f,b], Y[f,b], X[f,c], Y[f,c], X[f,a], Y[f,a]); if (r < q) q = r
+		r = ang(X[f,c], Y[f,c], X[f,a], Y[f,a], X[f,b], Y[f,b]); if (r < q) q = r
+		n += q < lim }
+		if (100 * n / nf > m) m = 100 * n / nf }
+	      printf "%.1f\n", m }' "$1"
+}
+
+# mesh_vertices MESH: the vertex count of a MESH stream
+mesh_vertices() {
+	sed -n 's/^vertices //p' "$1" | head -n 1
+}
+
 # creature_poses: the six poses of the made-up creature of t0511-creature.awk
 # as p0.rings .. p5.rings and its five limb tips as corr.txt (one row per
 # tip, one column per pose)
