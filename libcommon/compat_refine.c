@@ -178,9 +178,11 @@ static int runs(const int *F, int f, int a, int b)
 /* measures of one triangle for a vertex's star */
 typedef double (*tri_measure)(const double *a, const double *b, const double *d);
 
-/* smallest measure over v's star in shape s with v at p */
+/* smallest measure over v's star in shape s with v at p; stops early (with
+ * a value <= floor) as soon as a triangle is at or below floor (-INFINITY:
+ * the exact smallest) */
 static double star_min(const struct compat *c, const struct topology *t, int s, int v, const double *p,
-                       tri_measure fn)
+                       tri_measure fn, double floor)
 {
     const double *X = c->X[s];
     double q = INFINITY;
@@ -189,6 +191,7 @@ static double star_min(const struct compat *c, const struct topology *t, int s, 
         const double *P[3];
         for (int j = 0; j < 3; j++) P[j] = F[j] == v ? p : X + 2 * F[j];
         q = fmin(q, fn(P[0], P[1], P[2]));
+        if (q <= floor) break;
     }
     return q;
 }
@@ -206,7 +209,15 @@ static double sin_min_valid(const double *a, const double *b, const double *d)
  * not positive (exact) */
 static double star_quality(const struct compat *c, const struct topology *t, int s, int v, const double *p)
 {
-    return star_min(c, t, s, v, p, sin_min_valid);
+    return star_min(c, t, s, v, p, sin_min_valid, -INFINITY);
+}
+
+/* star_quality, or any value <= floor once it is clear that it is at or
+ * below floor (the candidate searches only ask whether it beats floor) */
+static double star_quality_above(const struct compat *c, const struct topology *t, int s, int v, const double *p,
+                                 double floor)
+{
+    return star_min(c, t, s, v, p, sin_min_valid, floor);
 }
 
 /* mark v and its neighbours for the next visit (dirty: #V flags of one shape) */
@@ -253,8 +264,9 @@ static int smooth_pass(struct compat *c, const struct topology *t, const unsigne
             int best = -1;
             double bq = old;
             for (int k = 0; k < 6; k++) {
-                double q = star_quality(c, t, s, v, cand[k]);
-                if (q > bq * (1 + 1e-9) + 1e-15) { bq = q; best = k; }
+                double thr = bq * (1 + 1e-9) + 1e-15;
+                double q = star_quality_above(c, t, s, v, cand[k], thr);
+                if (q > thr) { bq = q; best = k; }
             }
             if (best >= 0) { X[2 * v] = cand[best][0]; X[2 * v + 1] = cand[best][1]; moves++; touch_star(t, v, dy); }
         }
@@ -508,9 +520,10 @@ static int smooth_sweeps(struct compat *c, const unsigned char *bnd, int sweeps,
  * star of (S / (4 sqrt3 A))^2, S the sum of squared edge lengths and A the
  * area (1 for an equilateral triangle, growing without bound as a triangle
  * degenerates); gradient in g (may be NULL).  INFINITY if a triangle of the
- * star is not positive (exact). */
+ * star is not positive (exact).  Stops early (returning a value >= ceiling)
+ * once the sum reaches ceiling (INFINITY: the whole sum). */
 static double star_mips(const struct compat *c, const struct topology *t, int s, int v, const double *p,
-                        double *g)
+                        double *g, double ceiling)
 {
     const double *X = c->X[s];
     double E = 0, gx = 0, gy = 0, k = 1 / (4 * sqrt(3.0));
@@ -525,6 +538,7 @@ static double star_mips(const struct compat *c, const struct topology *t, int s,
         if (!(A > 1e-12 * S) && (A <= 0 || orient2_sign(p, a, b) <= 0)) return INFINITY;
         double e = k * S / A;
         E += e * e;
+        if (E >= ceiling) return E;   /* the caller only asks whether E is below */
         if (g) {
             /* de/dp = k (dS/dp / A - S dA/dp / A^2), dA/dp = (a_y - b_y, b_x - a_x) / 2 */
             double dex = k * (2 * (pax + pbx) / A - S * 0.5 * (a[1] - b[1]) / (A * A));
@@ -562,7 +576,7 @@ static int mips_sweeps(struct compat *c, const unsigned char *bnd, const int *se
                 int sl = seg && seg[2 * v] >= 0;   /* slides along its outline segment */
                 if ((bnd[v] && !sl) || t.VFs[v + 1] == t.VFs[v]) continue;
                 double g[2], *x = X + 2 * v;
-                double E0 = star_mips(c, &t, s, v, x, g), gn = hypot(g[0], g[1]);
+                double E0 = star_mips(c, &t, s, v, x, g, INFINITY), gn = hypot(g[0], g[1]);
                 if (!(gn > 0) || !isfinite(E0)) continue;
                 double L = 0;
                 int nn = t.VVs[v + 1] - t.VVs[v];
@@ -586,7 +600,8 @@ static int mips_sweeps(struct compat *c, const unsigned char *bnd, const int *se
                         if (!(tn > 0 && tn < 1)) continue;
                         p[0] = A[0] + tn * ux; p[1] = A[1] + tn * uy;
                     }
-                    if (star_mips(c, &t, s, v, p, NULL) < E0 * (1 - 1e-6)) {
+                    double ceil = E0 * (1 - 1e-6);
+                    if (star_mips(c, &t, s, v, p, NULL, ceil) < ceil) {
                         x[0] = p[0]; x[1] = p[1]; m++;
                         /* a step under 1% of the mean edge does not wake
                          * the neighbours (nor v): the sweeps stay where
@@ -650,8 +665,9 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
             } else {
                 cp[0] = p[0] + h * D[k][0]; cp[1] = p[1] + h * D[k][1];
             }
-            double cq = star_quality(c, t, s, v, cp);
-            if (cq > bq * (1 + 1e-9)) { bq = cq; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; }
+            double thr = bq * (1 + 1e-9);
+            double cq = star_quality_above(c, t, s, v, cp, thr);
+            if (cq > thr) { bq = cq; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; }
         }
         if (found) { q = bq; p[0] = bp[0]; p[1] = bp[1]; moved = 1; }
         else h *= 0.5;

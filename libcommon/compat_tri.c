@@ -997,9 +997,11 @@ int compat_flip_pass(struct compat *c)
         int p = opposite(c->F, f1, a, b), q = opposite(c->F, f2, a, b);
         if (p == q || topology_edge(&t, p, q) >= 0) continue;
         double old = fmin(face_quality(c, a, b, p), face_quality(c, b, a, q));
-        double n1 = face_quality(c, a, q, p), n2 = face_quality(c, b, p, q);
-        if (n1 < 0 || n2 < 0) continue;
-        if (fmin(n1, n2) > old + 1e-9) {
+        /* the second new face is looked at only if the first beats old */
+        double n1 = face_quality(c, a, q, p);
+        if (!(n1 > old + 1e-9)) continue;
+        double n2 = face_quality(c, b, p, q);
+        if (n2 > old + 1e-9) {
             int *F1 = c->F + 3 * f1, *F2 = c->F + 3 * f2;
             F1[0] = a; F1[1] = q; F1[2] = p;
             F2[0] = b; F2[1] = p; F2[2] = q;
