@@ -1208,11 +1208,12 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
             better = 1;
             if (remesh && best_take(&w, nvin, &best) < 0) goto out;
         }
-        /* stalled: several rounds without progress that added a quarter
-         * of the best round's vertices (cheap local rounds go on longer) */
+        /* stalled: several rounds without progress that doubled the best
+         * round's vertices (cheap local rounds go on longer: near the
+         * goal the worst angle and the bad count jitter for a while) */
         if (better) stall = 0;
         else if (++stall >= COMPAT_REFINE_STALL && remesh &&
-                 (c->nv > 1.25 * best.nv || stall >= 4 * COMPAT_REFINE_STALL)) {
+                 (c->nv > 2 * best.nv || stall >= 4 * COMPAT_REFINE_STALL)) {
             st->stop = COMPAT_REFINE_STALLED;
             break;
         }

@@ -95,8 +95,8 @@ enum {
     COMPAT_REFINE_STALLED,  /* COMPAT_REFINE_STALL rounds in a row neither
                                raised the worst angle by COMPAT_REFINE_GAIN
                                nor cut the triangles below the goal by 5%,
-                               and added a quarter of the vertices (or 4
-                               times as many rounds) */
+                               and the mesh has twice the vertices of the
+                               best round (or 4 times as many rounds) */
     COMPAT_REFINE_MAXNV,    /* max_nv reached */
     COMPAT_REFINE_NOSPLIT,  /* no split kept every shape positive */
     COMPAT_REFINE_ROUNDS    /* rounds used up */
