@@ -33,9 +33,9 @@ min_area() {
 		if (s < m) m = s }; print m }' "$1"
 }
 
-# smallest angle (degrees) over every triangle of every frame of a plain
-# MESH stream, measured here (not taken from compat-tri -v)
-worst_angle() {
+# tri_angles MESH: the smallest angle (degrees) of every triangle in every
+# frame, one a line ("frame angle", frames from 1)
+tri_angles() {
 	awk 'function ang(ax, ay, bx, by, cx, cy,  ux, uy, vx, vy, cr) {
 		ux = bx - ax; uy = by - ay; vx = cx - ax; vy = cy - ay; cr = ux * vy - uy * vx
 		return atan2(cr < 0 ? -cr : cr, ux * vx + uy * vy) * 57.29577951308232 }
@@ -43,33 +43,25 @@ worst_angle() {
 	$1 == "f" { A[nf] = $2; B[nf] = $3; C[nf] = $4; nf++; next }
 	$1 == "frame" { fr++; k = 0; next }
 	fr > 0 && NF == 3 { X[fr, k] = $1; Y[fr, k] = $2; k++ }
-	END { m = 180; for (f = 1; f <= fr; f++) for (t = 0; t < nf; t++) {
+	END { for (f = 1; f <= fr; f++) for (t = 0; t < nf; t++) {
 		a = A[t]; b = B[t]; c = C[t]
 		q = ang(X[f,a], Y[f,a], X[f,b], Y[f,b], X[f,c], Y[f,c])
 		r = ang(X[f,b], Y[f,b], X[f,c], Y[f,c], X[f,a], Y[f,a]); if (r < q) q = r
 		r = ang(X[f,c], Y[f,c], X[f,a], Y[f,a], X[f,b], Y[f,b]); if (r < q) q = r
-		if (q < m) m = q }
-	      printf "%.4f\n", m }' "$1"
+		printf "%d %.17g\n", f, q } }' "$1"
+}
+
+# worst_angle MESH: the smallest angle (degrees) over every triangle of
+# every frame, measured here (not taken from compat-tri -v)
+worst_angle() {
+	tri_angles "$1" | awk 'BEGIN { m = 180 } $2 < m { m = $2 } END { printf "%.4f\n", m }'
 }
 
 # under_share MESH DEG: the largest share (percent) over the frames of the
 # triangles whose smallest angle is below DEG degrees
 under_share() {
-	awk -v lim="$2" 'function ang(ax, ay, bx, by, cx, cy,  ux, uy, vx, vy, cr) {
-		ux = bx - ax; uy = by - ay; vx = cx - ax; vy = cy - ay; cr = ux * vy - uy * vx
-		return atan2(cr < 0 ? -cr : cr, ux * vx + uy * vy) * 57.29577951308232 }
-	BEGIN { nf = 0 }
-	$1 == "f" { A[nf] = $2; B[nf] = $3; C[nf] = $4; nf++; next }
-	$1 == "frame" { fr++; k = 0; next }
-	fr > 0 && NF == 3 { X[fr, k] = $1; Y[fr, k] = $2; k++ }
-	END { m = 0; for (f = 1; f <= fr; f++) { n = 0; for (t = 0; t < nf; t++) {
-		a = A[t]; b = B[t]; c = C[t]
-		q = ang(X[f,a], Y[f,a], X[f,b], Y[f,b], X[f,c], Y[f,c])
-		r = ang(X[f,b], Y[f,b], X[f,c], Y[f,c], X[f,a], Y[f,a]); if (r < q) q = r
-		r = ang(X[f,c], Y[f,c], X[f,a], Y[f,a], X[f,b], Y[f,b]); if (r < q) q = r
-		n += q < lim }
-		if (100 * n / nf > m) m = 100 * n / nf }
-	      printf "%.1f\n", m }' "$1"
+	tri_angles "$1" | awk -v lim="$2" '{ n[$1]++; u[$1] += $2 < lim }
+	END { m = 0; for (f in n) if (100 * u[f] / n[f] > m) m = 100 * u[f] / n[f]; printf "%.1f\n", m }'
 }
 
 # mesh_vertices MESH: the vertex count of a MESH stream
