@@ -5,8 +5,8 @@ test_description='compat-tri refinement coarsens: on the six shared elephant pos
 need_shared_data shapes2d/poses/elephant-pose6.rings.txt
 P="$SHARED_DATA/shapes2d/poses"
 
-test_expect_success 'six elephant poses: worst angle >= 19.99 deg with <= 1000 vertices (measured 20.01, 933; split-only before: 20.01, 1150)' '
-	compat-tri -v -c "$STOPMO_ROOT/examples/morph2d/corr6.txt" $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
+test_expect_success 'six elephant poses, -m off (as t0571: poses 4 and 5 are mirrored views): worst angle >= 19.99 deg with <= 1000 vertices (measured 20.01, 933; split-only before: 20.01, 1150)' '
+	compat-tri -m off -v -c "$STOPMO_ROOT/examples/morph2d/corr6.txt" $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
 		$P/elephant-pose3.rings.txt $P/elephant-pose4.rings.txt $P/elephant-pose5.rings.txt \
 		$P/elephant-pose6.rings.txt >e6.mesh 2>e6.log &&
 	test_le 1e-12 $(min_area e6.mesh) &&
