@@ -24,7 +24,7 @@ extern void dgels_(const char *trans, const int *m, const int *n, const int *nrh
 
 void replib_sketch_free(struct replib_sketch *S)
 {
-    free(S->ref); free(S->sw); free(S->om); free(S->Y); free(S->W); free(S->zz); free(S->dd);
+    free(S->ref); free(S->sw); free(S->om); free(S->Y); free(S->W);
     free(S->cut); free(S->Xk); free(S->xbase); free(S->kb); free(S->zb); free(S->zprev); free(S->V);
     free(S->zt); free(S->yt);
     memset(S, 0, sizeof *S);
@@ -61,7 +61,7 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     S->zb = malloc(sizeof(double) * (size_t)BATCH * m3);
     S->zt = malloc(sizeof(double) * (size_t)BATCH * TILE);
     S->yt = malloc(sizeof(double) * (size_t)BATCH * k);
-    S->zprev = malloc(sizeof(double) * 3 * (size_t)m3);     /* previous z, then keep_chunk's scratch */
+    S->zprev = malloc(sizeof(double) * 3 * (size_t)m3);     /* keep_chunk's scratch */
     if (!S->ref || !S->om || !S->W || !S->zb || !S->zt || !S->yt || !S->zprev) goto oom;
     if (S->keeping && !(S->kb = malloc(sizeof(double) * (size_t)REPLIB_KEEP_CHUNK * m3))) goto oom;
     if (w) {
@@ -173,12 +173,6 @@ static int grow(struct replib_sketch *S)
     double *Y = realloc(S->Y, sizeof(double) * (size_t)nc * S->k);
     if (!Y) return -1;
     S->Y = Y;
-    double *zz = realloc(S->zz, sizeof(double) * nc);
-    if (!zz) return -1;
-    S->zz = zz;
-    double *dd = realloc(S->dd, sizeof(double) * nc);
-    if (!dd) return -1;
-    S->dd = dd;
     double *xo = realloc(S->xbase, sizeof(double) * (size_t)(nc / REPLIB_KEEP_CHUNK + 1) * S->m3);
     if (!xo) return -1;
     S->xbase = xo;
@@ -186,6 +180,48 @@ static int grow(struct replib_sketch *S)
     if (!c) return -1;
     S->cut = c;
     S->cap = nc;
+    return 0;
+}
+
+/* lo, hi (m3) = the smallest and largest of each coordinate over nb frames */
+__attribute__((optimize("O3")))
+static void chunk_range(const double *restrict kb, int nb, int m3, double *restrict lo, double *restrict hi)
+{
+    memcpy(lo, kb, sizeof(double) * m3);
+    memcpy(hi, kb, sizeof(double) * m3);
+    for (int g = 1; g < nb; g++) {
+        const double *restrict x = kb + (size_t)g * m3;
+        for (int t = 0; t < m3; t++) {
+            lo[t] = x[t] < lo[t] ? x[t] : lo[t];
+            hi[t] = x[t] > hi[t] ? x[t] : hi[t];
+        }
+    }
+}
+
+/* The chunk's frames as integers of the step q (iq = 1 / q) about the
+ * bases o, branch-free (vectorized); returns 0 and raises *e to the
+ * largest rounding when every value is on the grid within +-2^31 steps,
+ * else 1 (the caller redoes the chunk value by value). */
+__attribute__((optimize("O3")))
+static int chunk_ints(struct replib_sketch *S, int f0, int nb, const double *restrict o, double q, double iq,
+                      double *e)
+{
+    int m3 = S->m3, bad = 0;
+    double em = *e, tol = 1e-3 * q;
+    for (int g = 0; g < nb; g++) {
+        const double *restrict x = S->kb + (size_t)g * m3;
+        int32_t *restrict xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
+        for (int t = 0; t < m3; t++) {
+            double v = x[t] - o[t], u = v * iq;
+            double k = (u + 6755399441055744.0) - 6755399441055744.0, ek = fabs(k * q - v);
+            bad |= !(fabs(u) <= 2147483647.0) | (ek > tol);
+            double kc = k < -2147483647.0 ? -2147483647.0 : k > 2147483647.0 ? 2147483647.0 : k;
+            xi[t] = (int32_t)kc;
+            em = ek > em ? ek : em;
+        }
+    }
+    if (bad) return 1;
+    *e = em;
     return 0;
 }
 
@@ -199,18 +235,11 @@ static void keep_chunk(struct replib_sketch *S, int f1)
     int m3 = S->m3, c = (f1 - 1) / REPLIB_KEEP_CHUNK, f0 = c * REPLIB_KEEP_CHUNK, nb = f1 - f0;
     double q = S->xstep, iq = q > 0 ? 1 / q : 0, e = 0, *o = S->xbase + (size_t)c * m3;
     double *lo = S->zprev + m3, *hi = lo + m3;   /* scratch */
-    memcpy(lo, S->kb, sizeof(double) * m3);
-    memcpy(hi, S->kb, sizeof(double) * m3);
-    for (int g = 1; g < nb; g++) {
-        const double *x = S->kb + (size_t)g * m3;
-        for (int t = 0; t < m3; t++) {
-            lo[t] = x[t] < lo[t] ? x[t] : lo[t];
-            hi[t] = x[t] > hi[t] ? x[t] : hi[t];
-        }
-    }
+    chunk_range(S->kb, nb, m3, lo, hi);
     for (int t = 0; t < m3; t++)
         o[t] = q > 0 ? nearbyint(0.5 * (lo[t] + hi[t]) / q) * q : 0.5 * (lo[t] + hi[t]);
-    for (int g = 0; g < nb && S->fixed; g++) {
+    int done = S->fixed && chunk_ints(S, f0, nb, o, q, iq, &e) == 0;    /* every value on the grid */
+    for (int g = 0; g < nb && S->fixed && !done; g++) {
         const double *x = S->kb + (size_t)g * m3;
         int32_t *xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
         for (int t = 0; t < m3; t++) {
@@ -249,11 +278,31 @@ static void keep_chunk(struct replib_sketch *S, int f1)
     if (e > S->float_err) S->float_err = e;
 }
 
+/* z (m) = sw (x - ref) (sw may be NULL: 1); returns |z|^2 (eight partial
+ * sums: vectorized), not finite if a value of x is not */
+__attribute__((optimize("O3")))
+static double center_row(const double *restrict x, const double *restrict ref, const double *restrict sw, int m,
+                         double *restrict z)
+{
+    double acc[8] = {0};
+    int t = 0;
+    if (sw) for (int i = 0; i < m; i++) z[i] = sw[i] * (x[i] - ref[i]);
+    else for (int i = 0; i < m; i++) z[i] = x[i] - ref[i];
+    for (; t + 8 <= m; t += 8)
+        for (int j = 0; j < 8; j++) acc[j] += z[t + j] * z[t + j];
+    double s = 0;
+    for (; t < m; t++) s += z[t] * z[t];
+    for (int j = 0; j < 8; j++) s += acc[j];
+    return s;
+}
+
 int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
 {
     int m3 = S->m3, f = S->n;
-    for (int t = 0; t < m3; t++)
-        if (!isfinite(x[t])) return cm_seterr("frame %d: vertex %d: coordinate is not finite", f, t / 3);
+    double zz = center_row(x, f ? S->ref : x, S->sw, m3, S->zb + (size_t)S->nb * m3);
+    if (!(zz <= 1.7976931348623157e308))     /* a coordinate is not finite (or the squares overflow) */
+        for (int t = 0; t < m3; t++)
+            if (!isfinite(x[t])) return cm_seterr("frame %d: vertex %d: coordinate is not finite", f, t / 3);
     if (f == S->cap && grow(S) < 0) return cm_seterr("replib_sketch: out of memory at frame %d", f);
     if (f == 0) {
         memcpy(S->ref, x, sizeof(double) * m3);
@@ -281,20 +330,7 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
             }
         }
     }
-    double *z = S->zb + (size_t)S->nb * m3;
-    double zz = 0, dd = 0;
-    for (int t = 0; t < m3; t++) {
-        double v = x[t] - S->ref[t];
-        if (S->sw) v *= S->sw[t];
-        z[t] = v;
-        zz += v * v;
-        if (f > 0) dd += (v - S->zprev[t]) * (v - S->zprev[t]);
-    }
-    memcpy(S->zprev, z, sizeof(double) * m3);
-    S->zz[f] = zz;
     S->cut[f] = f > 0 && cut;
-    if (f > 0) S->dd[f - 1] = cut ? 0 : dd;
-    S->dd[f] = 0;
     S->zn += zz;
     S->n++;
     S->nb++;

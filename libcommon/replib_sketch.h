@@ -23,7 +23,7 @@
  * double rounding); otherwise single-precision floats of x_f - b, whose
  * rounding (up to 2^-24 |x_f - b|) is reported.  The bases cost 1/32 of
  * the kept frames' memory.  A frame off the grid
- * turns the frames kept so far to floats (in place) and says so.  Exact norms |z_f|^2 and |z_{f+1} - z_f|^2 are accumulated
+ * turns the frames kept so far to floats (in place) and says so.  The norm |Z|_F^2 is accumulated
  * on the way, so the sketch's captured fraction of |Z|_F^2 is known.
  */
 #define REPLIB_SKETCH_ZETA 8     /* nonzeros per row of Omega and per column of Psi */
@@ -50,7 +50,6 @@ struct replib_sketch {
     double *zt, *yt;            /* batch scratch: the frames transposed, Y_b transposed */
     double *Y;                  /* cap by k */
     double *W;                  /* s by 3#V */
-    double *zz, *dd;            /* cap: exact |z_f|^2, |z_{f+1} - z_f|^2 (0 across cuts) */
     unsigned char *cut;         /* cap */
     void *Xk;                   /* cap by 3#V kept frames: int32_t (x_f - x_0) / xstep if fixed,
                                    else float x_f - x_0; or NULL */
@@ -61,7 +60,7 @@ struct replib_sketch {
     int floated;                /* 1: Xk holds floats */
     double xstep;               /* the first frame's decimal step q (0: none) */
     double *zb;                 /* 64 by 3#V batch */
-    double *zprev;              /* 3#V previous z */
+    double *zprev;              /* 3 by 3#V scratch (keep_chunk) */
     int nb, cap, xcap;
     uint64_t seed;
     double zn;                  /* |Z|_F^2 */
