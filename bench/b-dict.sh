@@ -21,7 +21,7 @@
 # 10,000-vertex part piped from dict-tile, against 5,000 frames).
 set -u
 OLDREV=361189f
-PREREV=8045066
+PREREV=c460fba
 SHARED=${SHARED_DATA:-$ROOT/../shared/data}
 T=$BENCH_TMP/dict
 mkdir -p "$T"
@@ -38,9 +38,10 @@ src() { # name archive
 src elephant elephant-walk-457 && src facecap facecap-335 || exit 1
 # earlier releases, from git: dict-learn and replib as they were, built over
 # today's libcommon (their own headers first).  $OLDREV: before issue 12;
-# $PREREV: the release before the one-pass trial DP, the kept best costs
-# and the read-ahead thread (the "current release" of the speed lines; the
-# changes since give the same bytes, so its energy ratio is 1).
+# $PREREV: the release before the incremental descent (library and costs
+# updated from the changed labels' pieces), the 8-candidate label steps and
+# the lazily derived costs (the "current release" of the speed lines;
+# "energy vs $PREREV" compares the energies of the same options and seed).
 build_rev() { # rev -> path of the binary, or empty
     b=$T/dict-learn-$1
     if [ ! -x "$b" ] && git -C "$ROOT" cat-file -e $1 2>/dev/null; then
