@@ -12,3 +12,13 @@ facecap_parts() {
 	awk -v frac=0.75 -f "$TEST_DIRECTORY/lower-part.awk" avg.mesh >part.lab &&
 	part-split -l part.lab -o "part_%d.mesh" ${1:-} face.mesh
 }
+
+# noisy_head FRAMES SEED NOISE_SEED AXES: head-gen's FRAMES-frame head
+# (head.mesh) and a full-rank copy noisy.mesh, uniform noise of +-5e-4 on x
+# (AXES = x) or on x and y (AXES = xy), printed with 6 decimals.
+noisy_head() {
+	head-gen -f $1 --seed $2 >head.mesh &&
+	if [ "$4" = xy ]; then y='$2 + 1e-3 * (rand() - 0.5)'; else y='$2'; fi &&
+	awk "BEGIN { srand($3) } /^frame /{ fr = 1 } fr && NF == 3 && \$1 != \"frame\" { printf \"%.6f %.6f %.6f\n\", \$1 + 1e-3 * (rand() - 0.5), $y, \$3; next } { print }" head.mesh >noisy.mesh &&
+	mesh-info noisy.mesh | grep "^frames $1\$"
+}

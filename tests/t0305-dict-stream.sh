@@ -1,11 +1,10 @@
 #!/bin/sh
 test_description='dict-learn --stream: one pass over the frames into a low-rank sketch, same result as in memory'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/dict-lib.sh"
 
 test_expect_success 'setup: a 200-frame head and a perturbed (full-rank) copy' '
-	head-gen -f 200 --seed 3 >head.mesh &&
-	awk "BEGIN { srand(5) } /^frame /{ fr = 1 } fr && NF == 3 && \$1 != \"frame\" { printf \"%.6f %.6f %.6f\n\", \$1 + 1e-3 * (rand() - 0.5), \$2, \$3; next } { print }" head.mesh >noisy.mesh &&
-	mesh-info noisy.mesh | grep "^frames 200$"
+	noisy_head 200 3 5 x
 '
 for lam in 0 2; do
 	test_expect_success "lambda $lam: stream (frames kept in float) = in memory: same labels, energy to 1e-8" "

@@ -1,11 +1,10 @@
 #!/bin/sh
 test_description='dict-learn --stream: the sparse sign sketch, its two ways to reduced coordinates, and its determinism'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/dict-lib.sh"
 
 test_expect_success 'setup: a 200-frame head, perturbed to full rank (6 decimals)' '
-	head-gen -f 200 --seed 4 >head.mesh &&
-	awk "BEGIN { srand(7) } /^frame /{ fr = 1 } fr && NF == 3 && \$1 != \"frame\" { printf \"%.6f %.6f %.6f\n\", \$1 + 1e-3 * (rand() - 0.5), \$2 + 1e-3 * (rand() - 0.5), \$3; next } { print }" head.mesh >noisy.mesh &&
-	mesh-info noisy.mesh | grep "^frames 200$"
+	noisy_head 200 4 7 xy
 '
 # With the frames kept, Zr comes from one DSYRK of the co-range sketch and
 # an eigen-decomposition; without them (--memory 0), from the least-squares

@@ -9,9 +9,7 @@ test_description='dict-learn incremental descent (reduced coordinates): same byt
 # on 8 candidates per frame and keep them while the costs move little.
 
 test_expect_success 'setup: a 240-frame head, 6 decimals, with noise (full rank)' '
-	head-gen -f 240 --seed 7 >head.mesh &&
-	awk "BEGIN { srand(9) } /^frame /{ fr = 1 } fr && NF == 3 && \$1 != \"frame\" { printf \"%.6f %.6f %.6f\n\", \$1 + 1e-3 * (rand() - 0.5), \$2 + 1e-3 * (rand() - 0.5), \$3; next } { print }" head.mesh >noisy.mesh &&
-	mesh-info noisy.mesh | grep "^frames 240$"
+	noisy_head 240 7 9 xy
 '
 for lam in 0 2; do
 	test_expect_success "lambda $lam, streamed: --threads 1 and --threads 2 give the same bytes" "
