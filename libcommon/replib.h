@@ -131,11 +131,14 @@ struct replib_opts {
                                    their second-best pieces is moved onto a D^2-sampled
                                    badly fitted frame, the descent rerun, and the result
                                    kept only if its energy is lower.  With lambda > 0 and
-                                   the DP, the trials' label steps consider only the 16
-                                   cheapest pieces of each frame (by data cost) and its
-                                   current label, in O(n (d + 17^2)) instead of O(n d^2);
-                                   one exact descent from the best result follows, so the
-                                   output is a fixed point of the exact label step */
+                                   the DP, the trials' label steps (and the first descent's
+                                   after its first) consider only the 8 cheapest pieces of
+                                   each frame (by data cost) and its current label, in
+                                   O(n (d + 9^2)) instead of O(n d^2); one exact descent
+                                   from the best result follows, so the output is a fixed
+                                   point of the exact label step.  On reduced coordinates
+                                   (direct back end) a step that changes few labels updates
+                                   the library and P incrementally (replib.c) */
     int threads;                /* restarts run in parallel on this many threads (0: one per core);
                                    the result does not depend on it */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
