@@ -47,7 +47,9 @@ static const char help[] =
 "                        bending, Sebastian et al.), 'arclength' (baseline: the\n"
 "                        same points placed by arc length from the given rows) or\n"
 "                        'off' (3 or more rows: only the given rows, arc length\n"
-"                        between them: the earlier default)\n"
+"                        between them: the earlier default); with 3 or more rows\n"
+"                        and no -m, a refined mesh below --min-angle is built\n"
+"                        with 'off' too and the better worst angle kept (-v)\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
 "                        rows plus SHAPE0's most salient corners (default 12)\n"
 "      --bend R          weight of the bending term of the matching (default 0.03)\n"
@@ -384,6 +386,58 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (o->interior) columns_free(&I);
 }
 
+/* smoothing or compatible refinement of cp (q0: its worst angle before, radians),
+ * reported with -v; returns the worst angle after over every pose (degrees) */
+static double improve(const struct options *opt, struct compat *cpp, double q0)
+{
+    const struct options o = *opt;
+    /* target edge length: mean boundary edge, relative to each shape's diagonal */
+    double target = 0;
+    if (o.edge > 0) {
+        for (int s = 0; s < o.nshapes; s++) {
+            double L = 0, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+            int ne = 0;
+            for (int i = 0; i < cpp->nb; i++) {
+                int j = compat_boundary_next(cpp, i);   /* along the vertex's ring */
+                if (j < 0) continue;
+                L += hypot(cpp->X[s][2 * j] - cpp->X[s][2 * i], cpp->X[s][2 * j + 1] - cpp->X[s][2 * i + 1]);
+                ne++;
+                for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], cpp->X[s][2 * i + d]); hi[d] = fmax(hi[d], cpp->X[s][2 * i + d]); }
+            }
+            target += L / ne / hypot(hi[0] - lo[0], hi[1] - lo[1]);
+        }
+        target = o.edge * target / o.nshapes;
+    }
+    if (!o.refine) {
+        if (compat_improve(cpp, target, o.smooth) < 0) die("%s", cm_errmsg());
+    } else {
+        struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : cpp->nv + 10 * cpp->nb, 200,
+                                          o.refine == 2 ? 0 : 200};
+        struct compat_refine_stats rs;
+        if (compat_refine(cpp, &pa, &rs) < 0) die("%s", cm_errmsg());
+        double q1 = compat_min_angle(cpp, NULL) * 180 / M_PI;
+        info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d collapses (%d coarsening), "
+                "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", rs.rounds,
+             rs.splits, rs.bsplits, rs.collapses, rs.coarsened, rs.flips, rs.moves, q0 * 180 / M_PI, q1,
+             rs.kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI);
+        if (rs.stop != COMPAT_REFINE_GOAL && !rs.kept_input) {
+            char why[160];
+            if (rs.stop == COMPAT_REFINE_STALLED)
+                snprintf(why, sizeof why, "neither the worst angle nor the number of triangles below the goal improved in %d rounds%s", rs.stalled,
+                         rs.restored ? " (back to the best round's mesh)" : "");
+            else if (rs.stop == COMPAT_REFINE_MAXNV)
+                snprintf(why, sizeof why, "--max-vertices %d reached%s", pa.max_nv,
+                         rs.restored ? " (back to the best round's mesh)" : "");
+            else if (rs.stop == COMPAT_REFINE_NOSPLIT) snprintf(why, sizeof why, "no split keeps every pose positive");
+            else snprintf(why, sizeof why, "%d rounds used up", pa.rounds);
+            info(1, "refinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
+                    "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", o.min_angle, why, q1, rs.stretch,
+                 rs.worst_at[0], rs.worst_at[1], rs.worst_shape, o.shapes[rs.worst_shape]);
+        }
+    }
+    return compat_min_angle(cpp, NULL) * 180 / M_PI;
+}
+
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -418,6 +472,7 @@ int main(int argc, char **argv)
         snprintf(msg, sizeof msg, "%s", cm_errmsg());
         compat_free(&cp);
         o.match = -2;
+        o.match_default = 0;   /* the rows alone already: nothing to compare */
         build_single(&o, R, &cp);
         if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
         warn("with the matched points: %s; used the given rows only (-m off)", msg);
@@ -426,49 +481,34 @@ int main(int argc, char **argv)
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
          cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
-    /* target edge length: mean boundary edge, relative to each shape's diagonal */
-    double target = 0;
-    if (o.edge > 0) {
-        for (int s = 0; s < N; s++) {
-            double L = 0, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-            int ne = 0;
-            for (int i = 0; i < cp.nb; i++) {
-                int j = compat_boundary_next(&cp, i);   /* along the vertex's ring */
-                if (j < 0) continue;
-                L += hypot(cp.X[s][2 * j] - cp.X[s][2 * i], cp.X[s][2 * j + 1] - cp.X[s][2 * i + 1]);
-                ne++;
-                for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], cp.X[s][2 * i + d]); hi[d] = fmax(hi[d], cp.X[s][2 * i + d]); }
-            }
-            target += L / ne / hypot(hi[0] - lo[0], hi[1] - lo[1]);
-        }
-        target = o.edge * target / N;
-    }
-    if (!o.refine) {
-        if (compat_improve(&cp, target, o.smooth) < 0) die("%s", cm_errmsg());
-    } else {
-        struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : cp.nv + 10 * cp.nb, 200,
-                                          o.refine == 2 ? 0 : 200};
-        struct compat_refine_stats rs;
-        if (compat_refine(&cp, &pa, &rs) < 0) die("%s", cm_errmsg());
-        double q1 = compat_min_angle(&cp, NULL) * 180 / M_PI;
-        info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d collapses (%d coarsening), "
-                "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", rs.rounds,
-             rs.splits, rs.bsplits, rs.collapses, rs.coarsened, rs.flips, rs.moves, q0 * 180 / M_PI, q1,
-             rs.kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(&cp) * 180 / M_PI);
-        if (rs.stop != COMPAT_REFINE_GOAL && !rs.kept_input) {
-            char why[160];
-            if (rs.stop == COMPAT_REFINE_STALLED)
-                snprintf(why, sizeof why, "neither the worst angle nor the number of triangles below the goal improved in %d rounds%s", rs.stalled,
-                         rs.restored ? " (back to the best round's mesh)" : "");
-            else if (rs.stop == COMPAT_REFINE_MAXNV)
-                snprintf(why, sizeof why, "--max-vertices %d reached%s", pa.max_nv,
-                         rs.restored ? " (back to the best round's mesh)" : "");
-            else if (rs.stop == COMPAT_REFINE_NOSPLIT) snprintf(why, sizeof why, "no split keeps every pose positive");
-            else snprintf(why, sizeof why, "%d rounds used up", pa.rounds);
-            info(1, "refinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
-                    "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", o.min_angle, why, q1, rs.stretch,
-                 rs.worst_at[0], rs.worst_at[1], rs.worst_shape, o.shapes[rs.worst_shape]);
-        }
+    double q1 = improve(&o, &cp, q0);
+    /* the default matching between 3 or more given rows against the given rows
+     * alone (-m off): where the first stays below the goal, the second is built
+     * too and the better worst angle kept (measured: the matching wins on the
+     * traced camel and horse, the rows alone on the shared elephant poses) */
+    if (o.match_default && o.refine && q1 < o.min_angle) {
+        struct options off = o;
+        off.match = -2;
+        off.points_out = NULL;
+        struct compat alt;
+        build_single(&off, R, &alt);
+        if (compat_triangulate(&alt) == 0) {
+            double qa0 = compat_min_angle(&alt, NULL);
+            info(1, "below the goal with the matched points (%.2f deg): the given rows only (-m off) too", q1);
+            double qa = improve(&off, &alt, qa0);
+            int use = qa > q1;
+            info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", use ? "the given rows only (-m off)" : "the matched points",
+                 use ? qa : q1, use ? "the matched points" : "-m off", use ? q1 : qa);
+            if (use) {
+                compat_free(&cp);
+                cp = alt;
+                if (o.points_out) {   /* the rows actually used */
+                    off.points_out = o.points_out;
+                    build_single(&off, R, &alt);
+                    compat_free(&alt);
+                }
+            } else compat_free(&alt);
+        } else compat_free(&alt);
     }
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
