@@ -206,14 +206,18 @@ extern "C" int cdt2_overlay(int m, int N, const double *const *X, double **Sout,
                     if (CGAL::orientation(A, B, p) == CGAL::RIGHT_TURN ||
                         CGAL::orientation(B, C, p) == CGAL::RIGHT_TURN ||
                         CGAL::orientation(C, A, p) == CGAL::RIGHT_TURN) continue;
+                    // the image in the shape, computed exactly and rounded
+                    // once (a rounded barycentric blend can flip a sliver
+                    // between nearby crossings)
                     EK::FT area = CGAL::area(A, B, C);
-                    double la = CGAL::to_double(CGAL::area(p, B, C) / area);
-                    double lb = CGAL::to_double(CGAL::area(A, p, C) / area);
-                    double lc = 1 - la - lb;
+                    EK::FT la = CGAL::area(p, B, C) / area, lb = CGAL::area(A, p, C) / area;
+                    EK::FT lc = 1 - la - lb;
                     const double *xa = X[s] + 2 * T[s][t], *xb = X[s] + 2 * T[s][t + 1], *xc = X[s] + 2 * T[s][t + 2];
                     double *o = S + 2 * ((size_t)s * k + q);
-                    o[0] = la * xa[0] + lb * xb[0] + lc * xc[0];
-                    o[1] = la * xa[1] + lb * xb[1] + lc * xc[1];
+                    for (int d = 0; d < 2; d++) {
+                        EK::FT x = la * xa[d] + lb * xb[d] + lc * xc[d];
+                        o[d] = CGAL::to_double(CGAL::exact(x));
+                    }
                     found = 1;
                 }
                 if (!found) { free(S); return cm_seterr("overlay: a crossing lies in no triangle"); }

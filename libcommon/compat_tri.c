@@ -388,6 +388,11 @@ static double cone_quality(const struct sub *p, int i, const double *q)
     double vx = pr[0] - a[0], vy = pr[1] - a[1];
     double p1 = ccw_pseudo(ux * qy - uy * qx, ux * qx + uy * qy);
     double p2 = ccw_pseudo(qx * vy - qy * vx, qx * vx + qy * vy);
+    /* q within rounding of an edge: the rounded cross product can put it
+     * on the far side, a full turn (pseudo-angle near 4) instead of a
+     * sliver; either angle wider than the corner is that case */
+    double pa = ccw_pseudo(ux * vy - uy * vx, ux * vx + uy * vy);
+    if (p1 > pa || p2 > pa) return 0;
     return p1 <= p2 ? ccw_angle(ux, uy, qx, qy) : ccw_angle(qx, qy, vx, vy);
 }
 
@@ -444,6 +449,27 @@ static double clearance_cut(const struct sub *p, int i, const double *P, int j, 
         if (pmin < pcut) break;
     }
     return pmin == INFINITY ? M_PI : atan2(my, mx);
+}
+
+/* Does the free point x lie within STAGE1_MIN of an edge, as an angle:
+ * atan(d / (L / 2)) < STAGE1_MIN for some edge of length L at distance d
+ * (the smallest angle of the triangle edge-x when x is above the middle)?
+ * Such a Steiner point passes the exact inside tests but lies within
+ * rounding of the outline; its pieces have slivers that no double can
+ * triangulate (the overlay's images of its crossings flip), as stage I
+ * leaves a diagonal along a run of collinear corners to the overlay. */
+static int hugs_edge(const struct sub *p, const double *x)
+{
+    const double t = tan(STAGE1_MIN) * tan(STAGE1_MIN) / 4;
+    for (int e = 0; e < p->m; e++) {
+        const double *a = V(p, e), *b = V(p, (e + 1) % p->m);
+        double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
+        double u = L2 > 0 ? ((x[0] - a[0]) * dx + (x[1] - a[1]) * dy) / L2 : 0;
+        u = u < 0 ? 0 : u > 1 ? 1 : u;
+        double ex = a[0] + u * dx - x[0], ey = a[1] + u * dy - x[1];
+        if (ex * ex + ey * ey < t * L2) return 1;
+    }
+    return 0;
 }
 
 /* a Steiner point near the middle of the inside segment a-b (a is corner
@@ -621,8 +647,11 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     double **C = malloc(N * sizeof *C);
     int *nc = malloc(N * sizeof *nc);
     unsigned char **cv = malloc(N * sizeof *cv);
+    unsigned char **hug = malloc(N * sizeof *hug); /* hugs_edge of each candidate */
     for (int s = 0; s < N; s++) {
         nc[s] = candidates(&sp[s], &C[s]);
+        hug[s] = malloc((size_t)nc[s] + 1);
+        for (int a = 0; a < nc[s]; a++) hug[s][a] = hugs_edge(&sp[s], C[s] + 2 * a);
         cv[s] = malloc((size_t)nc[s] * m + 1);
         for (int a = 0; a < nc[s]; a++)
             for (int i = 0; i < m; i++)
@@ -646,7 +675,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                     const double *A = V(&sp[s], i), *B = V(&sp[s], j);
                     double mid[2];
                     if (bent_point(&sp[s], i, A, j, B, mid) == 0) {
-                        bq = path_quality(&sp[s], i, j, mid, 1);
+                        bq = hugs_edge(&sp[s], mid) ? -1 : path_quality(&sp[s], i, j, mid, 1);
                         if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], i, A, -1, mid, qcut));
                         if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], -1, mid, j, B, qcut));
                         tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
@@ -655,6 +684,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                 for (int a = 0; a < nc[s]; a++)
                     if (cv[s][(size_t)a * m + i] && cv[s][(size_t)a * m + j]) {
                         const double *x = C[s] + 2 * a;
+                        if (hug[s][a]) continue;
                         double pq = path_quality(&sp[s], i, j, x, 1), cut = fmax(bq, qcut);
                         if (pq > cut) pq = fmin(pq, clearance_cut(&sp[s], i, V(&sp[s], i), -1, x, cut));
                         if (pq > cut) pq = fmin(pq, clearance_cut(&sp[s], -1, x, j, V(&sp[s], j), cut));
@@ -805,13 +835,187 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         free(dist); free(cc);
     }
 done:
-    for (int s = 0; s < N; s++) { free(C[s]); free(cv[s]); }
-    free(C); free(nc); free(cv); free(vis); free(sp);
+    for (int s = 0; s < N; s++) { free(C[s]); free(cv[s]); free(hug[s]); }
+    free(C); free(nc); free(cv); free(hug); free(vis); free(sp);
     return rc;
 }
 
+/* Is local face f = (a, b, d) positive in every shape?  Y[s] holds the
+ * piece's local positions in shape s (exact predicate). */
+static int local_positive(int N, double *const *Y, int a, int b, int d)
+{
+    for (int s = 0; s < N; s++)
+        if (orient2_sign(Y[s] + 2 * a, Y[s] + 2 * b, Y[s] + 2 * d) <= 0) return 0;
+    return 1;
+}
+
+/* The smallest sine of an angle, over every shape, of the faces that
+ * collapsing Steiner vertex v onto its neighbour u would leave around u;
+ * -1 if the collapse is not allowed: a face would not be positive in some
+ * shape, or the link condition fails (u and v share a neighbour other than
+ * the apexes of their common faces, so the collapse would pinch the disc). */
+static double collapse_score(int N, double *const *Y, const int *F, int nf, int nvl, int v, int u,
+                             unsigned char *mark)
+{
+    memset(mark, 0, (size_t)nvl);
+    for (int f = 0; f < nf; f++) {
+        const int *t = F + 3 * f;
+        if (t[0] == u || t[1] == u || t[2] == u)
+            for (int e = 0; e < 3; e++) mark[t[e]] |= 1;
+    }
+    int apex = 0;
+    for (int f = 0; f < nf; f++) {
+        const int *t = F + 3 * f;
+        int hv = t[0] == v || t[1] == v || t[2] == v, hu = t[0] == u || t[1] == u || t[2] == u;
+        if (hv && hu) {
+            for (int e = 0; e < 3; e++)
+                if (t[e] != u && t[e] != v) { mark[t[e]] |= 4; apex++; }
+        } else if (hv)
+            for (int e = 0; e < 3; e++)
+                if (t[e] != v) mark[t[e]] |= 2;
+    }
+    if (apex == 0) return -1;
+    for (int w = 0; w < nvl; w++)
+        if ((mark[w] & 3) == 3 && !(mark[w] & 4) && w != u && w != v) return -1;
+    double q = 2;
+    for (int f = 0; f < nf; f++) {
+        const int *t = F + 3 * f;
+        if (t[0] != v && t[1] != v && t[2] != v) continue;
+        if (t[0] == u || t[1] == u || t[2] == u) continue;
+        int w[3];
+        for (int e = 0; e < 3; e++) w[e] = t[e] == v ? u : t[e];
+        if (!local_positive(N, Y, w[0], w[1], w[2])) return -1;
+        for (int s = 0; s < N; s++) {
+            double a = compat_sin_min_angle(Y[s] + 2 * w[0], Y[s] + 2 * w[1], Y[s] + 2 * w[2]);
+            if (a < q) q = a;
+        }
+    }
+    return q;
+}
+
+/* The smallest sine of an angle of the faces around vertex v in shape s
+ * (positions Ys, #V by 2) with v moved to p; -1 if one of them is not
+ * positive (exact predicate). */
+static double moved_star_score(const double *Ys, const int *F, int nf, int v, const double *p)
+{
+    double q = 2;
+    for (int f = 0; f < nf; f++) {
+        const int *t = F + 3 * f;
+        int k = t[0] == v ? 0 : t[1] == v ? 1 : t[2] == v ? 2 : -1;
+        if (k < 0) continue;
+        const double *b = Ys + 2 * t[(k + 1) % 3], *d = Ys + 2 * t[(k + 2) % 3];
+        if (orient2_sign(p, b, d) <= 0) return -1;
+        q = fmin(q, compat_sin_min_angle(p, b, d));
+    }
+    return q;
+}
+
+/* A new position in shape s for vertex v whose star is not positive
+ * there: the mean of its neighbours, or a point on the way to it (1/2,
+ * 1/4, ... of the way); the one whose star has the largest smallest angle
+ * goes to p.  Returns that score, or -1 if none is positive. */
+static double relocate(const double *Ys, const int *F, int nf, int v, double *p)
+{
+    double mx = 0, my = 0;
+    int n = 0;
+    for (int f = 0; f < nf; f++) {
+        const int *t = F + 3 * f;
+        int k = t[0] == v ? 0 : t[1] == v ? 1 : t[2] == v ? 2 : -1;
+        if (k < 0) continue;
+        const double *b = Ys + 2 * t[(k + 1) % 3];
+        mx += b[0]; my += b[1]; n++;
+    }
+    if (!n) return -1;
+    mx /= n; my /= n;
+    const double *o = Ys + 2 * v;
+    double best = -1;
+    for (double w = 1; w > 1e-6; w *= 0.5) {
+        double c[2] = {o[0] + w * (mx - o[0]), o[1] + w * (my - o[1])};
+        double q = moved_star_score(Ys, F, nf, v, c);
+        if (q > best) { best = q; p[0] = c[0]; p[1] = c[1]; }
+    }
+    return best;
+}
+
+/* Rounding the overlay's crossings to doubles can leave a triangle between
+ * nearly coincident crossings, or a crossing on a nearly flat corner, with
+ * zero or negative area in some shape (exactly, it is positive).  Such a
+ * triangle is repaired through one of its Steiner vertices (local index >=
+ * m): moved in that shape only (relocate) if its star becomes positive
+ * there, else collapsed onto a neighbour, choosing the collapse whose new
+ * faces have the largest smallest angle, and only if every new face is
+ * positive in every shape (exact predicate) and the disc stays a disc.  F and *nf are updated; removed vertices get dead[v] = 1.
+ * Returns the number of collapses, or -1 when a bad face has no allowed
+ * collapse (cm_errmsg set). */
+static int overlay_repair(int N, double *const *Y, int m, int nvl, int *F, int *nf, unsigned char *dead)
+{
+    unsigned char *mark = malloc((size_t)nvl + 1);
+    if (!mark) return cm_seterr("out of memory");
+    int ncol = 0;
+    for (;;) {
+        int found = 0, fixed = 0, badshape = 0, bv = -1, bu = -1;
+        double best = -1;
+        for (int f = 0; f < *nf && !fixed; f++) {
+            const int *t = F + 3 * f;
+            if (local_positive(N, Y, t[0], t[1], t[2])) continue;
+            int bs = 0;
+            while (orient2_sign(Y[bs] + 2 * t[0], Y[bs] + 2 * t[1], Y[bs] + 2 * t[2]) > 0) bs++;
+            if (!found) badshape = bs;
+            found = 1;
+            double rbest = -1, rp[2] = {0, 0}, p[2] = {0, 0};
+            int rv = -1;
+            for (int e = 0; e < 3; e++) {
+                if (t[e] < m) continue;
+                double q = relocate(Y[bs], F, *nf, t[e], p);
+                if (q > rbest) { rbest = q; rv = t[e]; rp[0] = p[0]; rp[1] = p[1]; }
+            }
+            if (rv >= 0) {
+                Y[bs][2 * rv] = rp[0];
+                Y[bs][2 * rv + 1] = rp[1];
+                fixed = 2;
+                break;
+            }
+            for (int e = 0; e < 3; e++) {
+                int v = t[e];
+                if (v < m) continue;
+                /* candidates: every neighbour of v */
+                for (int g = 0; g < *nf; g++) {
+                    const int *r = F + 3 * g;
+                    int k = r[0] == v ? 0 : r[1] == v ? 1 : r[2] == v ? 2 : -1;
+                    if (k < 0) continue;
+                    int u = r[(k + 1) % 3];
+                    double q = collapse_score(N, Y, F, *nf, nvl, v, u, mark);
+                    if (q > best) { best = q; bv = v; bu = u; }
+                }
+            }
+            if (bv >= 0) fixed = 1;
+        }
+        if (!found) break;
+        if (fixed == 2) continue;
+        if (!fixed) {
+            free(mark);
+            return cm_seterr("a %d-gon piece is too thin in shape %d (an overlay triangle rounds to zero area "
+                             "and no move or collapse removes it)", m, badshape);
+        }
+        int w = 0;
+        for (int f = 0; f < *nf; f++) {
+            int *t = F + 3 * f;
+            int hv = t[0] == bv || t[1] == bv || t[2] == bv, hu = t[0] == bu || t[1] == bu || t[2] == bu;
+            if (hv && hu) continue;
+            for (int e = 0; e < 3; e++) F[3 * w + e] = t[e] == bv ? bu : t[e];
+            w++;
+        }
+        *nf = w;
+        dead[bv] = 1;
+        ncol++;
+    }
+    free(mark);
+    return ncol;
+}
+
 /* triangulate the piece by overlay (cdt2_overlay): always possible; the
- * chord crossings become Steiner points */
+ * chord crossings become Steiner points (crossings that round into
+ * slivers are collapsed away: overlay_repair) */
 static int overlay_piece(struct compat *c, const int *poly, int m)
 {
     int N = c->N;
@@ -826,28 +1030,41 @@ static int overlay_piece(struct compat *c, const int *poly, int m)
     double *S = NULL;
     int k = 0, nf = 0, *F = NULL;
     int rc = cdt2_overlay(m, N, (const double *const *)X, &S, &k, &F, &nf);
-    for (int s = 0; s < N; s++) free(X[s]);
-    free(X);
-    if (rc < 0) return -1;
-    int base = c->nv;
-    if (compat_reserve_vertices(c, c->nv + k) < 0) { free(S); free(F); return -1; }
-    for (int s = 0; s < N; s++)
-        memcpy(c->X[s] + 2 * (size_t)base, S + 2 * (size_t)s * k, 2 * (size_t)k * sizeof *S);
-    c->nv += k;
-    c->nsteiner += k;
-    free(S);
-    for (int f = 0; f < nf && rc == 0; f++) {
-        int v[3];
-        for (int e = 0; e < 3; e++) v[e] = F[3 * f + e] < m ? poly[F[3 * f + e]] : base + F[3 * f + e] - m;
-        for (int s = 0; s < N; s++)
-            if (orient2_sign(c->X[s] + 2 * v[0], c->X[s] + 2 * v[1], c->X[s] + 2 * v[2]) <= 0) {
-                rc = cm_seterr("compatible triangulation failed: a %d-gon piece is too thin in shape %d "
-                               "(an overlay triangle rounds to zero area)", m, s);
-                break;
-            }
-        if (rc == 0) rc = add_face(c, v[0], v[1], v[2]);
+    if (rc < 0) {
+        for (int s = 0; s < N; s++) free(X[s]);
+        free(X);
+        return -1;
     }
-    free(F);
+    /* local positions: the m corners, then the k crossings */
+    int nvl = m + k;
+    unsigned char *dead = calloc((size_t)nvl + 1, 1);
+    int *id = malloc(((size_t)nvl + 1) * sizeof *id);
+    for (int s = 0; s < N && dead && id; s++) {
+        double *Y = realloc(X[s], 2 * ((size_t)nvl + 1) * sizeof *Y);
+        if (!Y) { rc = cm_seterr("out of memory"); break; }
+        memcpy(Y + 2 * (size_t)m, S + 2 * (size_t)s * k, 2 * (size_t)k * sizeof *S);
+        X[s] = Y;
+    }
+    free(S);
+    if (!dead || !id) rc = cm_seterr("out of memory");
+    if (rc == 0 && overlay_repair(N, X, m, nvl, F, &nf, dead) < 0)
+        rc = cm_seterr("compatible triangulation failed: %s", cm_errmsg());
+    int base = c->nv, kept = 0;
+    if (rc == 0) {
+        for (int v = 0; v < nvl; v++) id[v] = v < m ? poly[v] : dead[v] ? -1 : base + kept++;
+        rc = compat_reserve_vertices(c, c->nv + kept);
+    }
+    if (rc == 0) {
+        for (int s = 0; s < N; s++)
+            for (int v = m; v < nvl; v++)
+                if (!dead[v]) memcpy(c->X[s] + 2 * (size_t)id[v], X[s] + 2 * (size_t)v, 2 * sizeof(double));
+        c->nv += kept;
+        c->nsteiner += kept;
+    }
+    for (int f = 0; f < nf && rc == 0; f++)
+        rc = add_face(c, id[F[3 * f]], id[F[3 * f + 1]], id[F[3 * f + 2]]);
+    for (int s = 0; s < N; s++) free(X[s]);
+    free(X); free(F); free(dead); free(id);
     return rc;
 }
 

@@ -47,12 +47,15 @@ test_expect_success '-m off keeps the earlier behaviour: rows picked on one pose
 
 need_shared_data shapes2d/poses/elephant-pose6.rings.txt
 P="$SHARED_DATA/shapes2d/poses"
-test_expect_success 'elephant poses 1 2 3 5 6: the matched points give no triangulation; the given rows are used and a warning says so' '
+# before the overlay's exact images and sliver collapses (and the stage II
+# rule against Steiner points within rounding of an edge) the matched points
+# gave "a 36-gon piece is too thin" here and the given rows were used
+test_expect_success 'elephant poses 1 2 3 5 6: the matched points triangulate (no fallback to the given rows)' '
 	grep -v "^#" "$STOPMO_ROOT/examples/morph2d/corr6.txt" | cut -d" " -f1,2,3,5,6 >c5 &&
 	compat-tri --refine none -c c5 --points-out used $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
 		$P/elephant-pose3.rings.txt $P/elephant-pose5.rings.txt $P/elephant-pose6.rings.txt >e.mesh 2>err &&
-	grep "warning: with the matched points: .*too thin.*used the given rows only" err &&
-	test $(grep -vc "^#" used) = 5 &&
+	! grep "warning" err &&
+	test $(grep -vc "^#" used) -gt 5 &&
 	test_le 1e-12 $(min_area e.mesh)
 '
 test_done
