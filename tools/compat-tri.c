@@ -256,7 +256,10 @@ static int *match_points(const struct options *o, int N, double **P, const int *
 }
 
 /* one outer ring per shape: the paper's pipeline */
-static void build_single(struct options *o, struct rings *R, struct compat *cp)
+/* the outline of every shape matched and simplified into cp; input errors
+ * die, a failed boundary matching returns -1 (cm_errmsg set) so that the
+ * second build of the default (-m off) can give up and keep the first */
+static int build_single(struct options *o, struct rings *R, struct compat *cp)
 {
     int N = o->nshapes;
     double **P = malloc(N * sizeof *P);
@@ -316,8 +319,12 @@ static void build_single(struct options *o, struct rings *R, struct compat *cp)
     if (o->match >= 0) corr = match_points(o, N, P, n, flipped, corr, &ncorr, want, nwant);
     else write_points(o, N, n, flipped, corr, ncorr);
     const char *corr_name = o->match >= 0 ? "the matched points" : o->corr;
-    if (compat_match(N, P, n, corr, ncorr, cp, &keep) < 0)
-        die("cannot read '%s': %s", corr_name, cm_errmsg());
+    if (compat_match(N, P, n, corr, ncorr, cp, &keep) < 0) {
+        cm_seterr("cannot read '%s': %s", corr_name, cm_errmsg());
+        free(keep); free(corr); free(want); columns_free(&C);
+        free(P); free(n); free(flipped);
+        return -1;
+    }
     int M = cp->nb;
     cp->split_mode = o->split;
     compat_simplify(cp, o->err, keep);
@@ -332,6 +339,7 @@ static void build_single(struct options *o, struct rings *R, struct compat *cp)
             "largest two-sided Hausdorff distance %.3g, in %s)", M, cp->nb, o->err, hmax, o->shapes[hs]);
     free(keep); free(corr); free(want); columns_free(&C);
     free(P); free(n); free(flipped);
+    return 0;
 }
 
 /* several rings or interior points: compat_holes.h */
@@ -387,7 +395,8 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
 }
 
 /* smoothing or compatible refinement of cp (q0: its worst angle before, radians),
- * reported with -v; returns the worst angle after over every pose (degrees) */
+ * reported with -v; returns the worst angle after over every pose (degrees),
+ * or -1 if the refinement failed (cm_errmsg set) */
 static double improve(const struct options *opt, struct compat *cpp, double q0)
 {
     const struct options o = *opt;
@@ -409,12 +418,12 @@ static double improve(const struct options *opt, struct compat *cpp, double q0)
         target = o.edge * target / o.nshapes;
     }
     if (!o.refine) {
-        if (compat_improve(cpp, target, o.smooth) < 0) die("%s", cm_errmsg());
+        if (compat_improve(cpp, target, o.smooth) < 0) return -1;
     } else {
         struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : cpp->nv + 10 * cpp->nb, 200,
                                           o.refine == 2 ? 0 : 200};
         struct compat_refine_stats rs;
-        if (compat_refine(cpp, &pa, &rs) < 0) die("%s", cm_errmsg());
+        if (compat_refine(cpp, &pa, &rs) < 0) return -1;
         double q1 = compat_min_angle(cpp, NULL) * 180 / M_PI;
         info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d collapses (%d coarsening), "
                 "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", rs.rounds,
@@ -462,7 +471,7 @@ int main(int argc, char **argv)
     struct compat cp;
     if (multi && !o.corr) die("several rings or interior points need -c CORR (the matching handles one outer ring)");
     if (multi) build_multi(&o, R, &cp);
-    else build_single(&o, R, &cp);
+    else if (build_single(&o, R, &cp) < 0) die("%s", cm_errmsg());
     if (!multi && compat_triangulate(&cp) < 0) {
         /* the points placed by the default matching between 3 or more given
          * rows can make a piece too thin to split; the given rows alone are
@@ -473,8 +482,7 @@ int main(int argc, char **argv)
         compat_free(&cp);
         o.match = -2;
         o.match_default = 0;   /* the rows alone already: nothing to compare */
-        build_single(&o, R, &cp);
-        if (compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
+        if (build_single(&o, R, &cp) < 0 || compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
         warn("with the matched points: %s; used the given rows only (-m off)", msg);
     }
     double ma0, q0 = compat_min_angle(&cp, &ma0);
@@ -482,6 +490,7 @@ int main(int argc, char **argv)
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
          cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
     double q1 = improve(&o, &cp, q0);
+    if (q1 < 0) die("%s", cm_errmsg());
     /* the default matching between 3 or more given rows against the given rows
      * alone (-m off): where the first stays below the goal, the second is built
      * too and the better worst angle kept (measured: the matching wins on the
@@ -491,11 +500,12 @@ int main(int argc, char **argv)
         off.match = -2;
         off.points_out = NULL;
         struct compat alt;
-        build_single(&off, R, &alt);
-        if (compat_triangulate(&alt) == 0) {
+        /* a second build that fails keeps the first mesh (-v says why) */
+        if (build_single(&off, R, &alt) == 0 && compat_triangulate(&alt) == 0) {
             double qa0 = compat_min_angle(&alt, NULL);
             info(1, "below the goal with the matched points (%.2f deg): the given rows only (-m off) too", q1);
             double qa = improve(&off, &alt, qa0);
+            if (qa < 0) info(1, "the given rows only (-m off): %s; kept the matched points", cm_errmsg());
             int use = qa > q1;
             info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", use ? "the given rows only (-m off)" : "the matched points",
                  use ? qa : q1, use ? "the matched points" : "-m off", use ? q1 : qa);
@@ -504,11 +514,13 @@ int main(int argc, char **argv)
                 cp = alt;
                 if (o.points_out) {   /* the rows actually used */
                     off.points_out = o.points_out;
-                    build_single(&off, R, &alt);
-                    compat_free(&alt);
+                    if (build_single(&off, R, &alt) == 0) compat_free(&alt);
                 }
             } else compat_free(&alt);
-        } else compat_free(&alt);
+        } else {
+            info(1, "the given rows only (-m off): %s; kept the matched points", cm_errmsg());
+            compat_free(&alt);   /* compat_match clears it first */
+        }
     }
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
