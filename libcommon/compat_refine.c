@@ -5,6 +5,7 @@
 #include "topology.h"
 #include "arap_deform2d.h"
 #include "rings.h"
+#include "parallel.h"
 #include <math.h>
 #include <stdlib.h>
 #include <limits.h>
@@ -227,14 +228,14 @@ static void touch_star(const struct topology *t, int v, unsigned char *dirty)
     for (int k = t->VVs[v]; k < t->VVs[v + 1]; k++) dirty[t->VV[k]] = 1;
 }
 
-/* dirty: N by #V flags; a vertex is visited only if it or a neighbour moved
- * since its last visit (else the visit would find the same: no move) */
-static int smooth_pass(struct compat *c, const struct topology *t, const unsigned char *bnd, unsigned char *dirty)
+/* one pass over shape s; dy: #V flags, a vertex is visited only if it or a
+ * neighbour moved since its last visit (else the visit would find the same:
+ * no move) */
+static int smooth_pass(struct compat *c, const struct topology *t, const unsigned char *bnd, int s, unsigned char *dy)
 {
     int moves = 0;
-    for (int s = 0; s < c->N; s++) {
+    {
         double *X = c->X[s];
-        unsigned char *dy = dirty + (size_t)s * c->nv;
         for (int v = 0; v < c->nv; v++) {
             if (!dy[v]) continue;
             dy[v] = 0;
@@ -495,23 +496,60 @@ static void seed_dirty(const struct topology *t, int nv, const unsigned char *se
         if (seed[v]) touch_star(t, v, dy);
 }
 
+/* what the per-pose smoothing jobs share (read-only but for their own
+ * pose's positions, moves[s] and their own dirty flags) */
+struct pose_jobs {
+    struct compat *c;
+    const struct topology *t;
+    const unsigned char *bnd, *seed;
+    const int *seg;
+    int sweeps;
+    double goal;
+    int threads;          /* compat_refine_params.threads */
+    int *moves;           /* N: moves made in each pose */
+    unsigned char *dirty; /* N by #V scratch flags */
+};
+
+/* run job over the N poses (in parallel: the poses' positions are
+ * independent); returns the sum of moves[], -1 if out of memory */
+static int run_poses(struct pose_jobs *pj, void (*job)(void *ctx, int s))
+{
+    struct compat *c = pj->c;
+    pj->moves = calloc(c->N, sizeof *pj->moves);
+    pj->dirty = malloc((size_t)c->N * c->nv + 1);
+    if (!pj->moves || !pj->dirty) { free(pj->moves); free(pj->dirty); return cm_seterr("out of memory"); }
+    parallel_run(c->N, pj->threads, job, pj);
+    int m = 0;
+    for (int s = 0; s < c->N; s++) m += pj->moves[s];
+    free(pj->moves); free(pj->dirty);
+    return m;
+}
+
+static void smooth_job(void *ctx, int s)
+{
+    struct pose_jobs *pj = ctx;
+    unsigned char *dy = pj->dirty + (size_t)s * pj->c->nv;
+    seed_dirty(pj->t, pj->c->nv, pj->seed, dy);
+    /* a pass without a move leaves no flag set: the later passes would
+     * do nothing (so sweeping each pose on its own is what sweeping all
+     * poses in turn did) */
+    for (int k = 0; k < pj->sweeps; k++) {
+        int m = smooth_pass(pj->c, pj->t, pj->bnd, s, dy);
+        pj->moves[s] += m;
+        if (!m) break;
+    }
+}
+
 /* seed: #V flags of the vertices whose neighbourhood changed since the last
  * smoothing (NULL: all); only they and whatever their moves disturb are
  * visited */
-static int smooth_sweeps(struct compat *c, const unsigned char *bnd, int sweeps, const unsigned char *seed)
+static int smooth_sweeps(struct compat *c, const unsigned char *bnd, int sweeps, const unsigned char *seed,
+                         int threads)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    int moves = 0;
-    unsigned char *dirty = malloc((size_t)c->N * c->nv);
-    if (!dirty) { topology_free(&t); return cm_seterr("out of memory"); }
-    for (int s = 0; s < c->N; s++) seed_dirty(&t, c->nv, seed, dirty + (size_t)s * c->nv);
-    for (int k = 0; k < sweeps; k++) {
-        int m = smooth_pass(c, &t, bnd, dirty);
-        moves += m;
-        if (!m) break;
-    }
-    free(dirty);
+    struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seed = seed, .sweeps = sweeps, .threads = threads};
+    int moves = run_poses(&pj, smooth_job);
     topology_free(&t);
     return moves;
 }
@@ -557,31 +595,31 @@ static double star_mips(const struct compat *c, const struct topology *t, int s,
  * it evens out the triangles of each shape as a whole, where the
  * smallest-angle smoothing only moves one vertex to a few candidates.
  * Returns the number of moves, -1 on error. */
-static int mips_sweeps(struct compat *c, const unsigned char *bnd, const int *seg, int sweeps,
-                       const unsigned char *seed)
+static void mips_job(void *ctx, int s)
 {
-    struct topology t;
-    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    int moves = 0;
-    unsigned char *dy = malloc(c->nv);
-    if (!dy) { topology_free(&t); return cm_seterr("out of memory"); }
-    for (int s = 0; s < c->N; s++) {
+    struct pose_jobs *pj = ctx;
+    struct compat *c = pj->c;
+    const struct topology *t = pj->t;
+    const unsigned char *bnd = pj->bnd;
+    const int *seg = pj->seg;
+    unsigned char *dy = pj->dirty + (size_t)s * c->nv;
+    {
         double *X = c->X[s];
-        seed_dirty(&t, c->nv, seed, dy);
-        for (int k = 0; k < sweeps; k++) {
+        seed_dirty(t, c->nv, pj->seed, dy);
+        for (int k = 0; k < pj->sweeps; k++) {
             int m = 0;
             for (int v = 0; v < c->nv; v++) {
                 if (!dy[v]) continue;
                 dy[v] = 0;
                 int sl = seg && seg[2 * v] >= 0;   /* slides along its outline segment */
-                if ((bnd[v] && !sl) || t.VFs[v + 1] == t.VFs[v]) continue;
+                if ((bnd[v] && !sl) || t->VFs[v + 1] == t->VFs[v]) continue;
                 double g[2], *x = X + 2 * v;
-                double E0 = star_mips(c, &t, s, v, x, g, INFINITY), gn = hypot(g[0], g[1]);
+                double E0 = star_mips(c, t, s, v, x, g, INFINITY), gn = hypot(g[0], g[1]);
                 if (!(gn > 0) || !isfinite(E0)) continue;
                 double L = 0;
-                int nn = t.VVs[v + 1] - t.VVs[v];
-                for (int i = t.VVs[v]; i < t.VVs[v + 1]; i++)
-                    L += hypot(X[2 * t.VV[i]] - x[0], X[2 * t.VV[i] + 1] - x[1]);
+                int nn = t->VVs[v + 1] - t->VVs[v];
+                for (int i = t->VVs[v]; i < t->VVs[v + 1]; i++)
+                    L += hypot(X[2 * t->VV[i]] - x[0], X[2 * t->VV[i] + 1] - x[1]);
                 L /= nn;
                 const double *A = sl ? X + 2 * seg[2 * v] : NULL, *B = sl ? X + 2 * seg[2 * v + 1] : NULL;
                 double ux = 0, uy = 0, tv = 0, lab = 1;
@@ -601,21 +639,30 @@ static int mips_sweeps(struct compat *c, const unsigned char *bnd, const int *se
                         p[0] = A[0] + tn * ux; p[1] = A[1] + tn * uy;
                     }
                     double ceil = E0 * (1 - 1e-6);
-                    if (star_mips(c, &t, s, v, p, NULL, ceil) < ceil) {
+                    if (star_mips(c, t, s, v, p, NULL, ceil) < ceil) {
                         x[0] = p[0]; x[1] = p[1]; m++;
                         /* a step under 1% of the mean edge does not wake
                          * the neighbours (nor v): the sweeps stay where
                          * something changed */
-                        if (h >= 0.01 * L) touch_star(&t, v, dy);
+                        if (h >= 0.01 * L) touch_star(t, v, dy);
                         break;
                     }
                 }
             }
-            moves += m;
+            pj->moves[s] += m;
             if (!m) break;
         }
     }
-    free(dy);
+}
+
+static int mips_sweeps(struct compat *c, const unsigned char *bnd, const int *seg, int sweeps,
+                       const unsigned char *seed, int threads)
+{
+    struct topology t;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seed = seed, .seg = seg, .sweeps = sweeps,
+                           .threads = threads};
+    int moves = run_poses(&pj, mips_job);
     topology_free(&t);
     return moves;
 }
@@ -680,35 +727,40 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
  * angle in that shape is below goal (and their neighbours) get
  * polish_vertex, in sweeps while something moves.  Returns the number of
  * moves, -1 on error. */
-static int polish(struct compat *c, const unsigned char *bnd, const int *seg, double goal, int sweeps)
+static void polish_job(void *ctx, int s)
+{
+    struct pose_jobs *pj = ctx;
+    struct compat *c = pj->c;
+    const struct topology *t = pj->t;
+    unsigned char *dy = pj->dirty + (size_t)s * c->nv;
+    const double *X = c->X[s];
+    double sg = sin(pj->goal);
+    for (int k = 0; k < pj->sweeps; k++) {
+        memset(dy, 0, c->nv);
+        int any = 0;
+        for (int f = 0; f < c->nf; f++) {
+            const int *F = c->F + 3 * f;
+            if (compat_sin_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) >= sg) continue;
+            for (int j = 0; j < 3; j++) { touch_star(t, F[j], dy); any = 1; }
+        }
+        if (!any) break;
+        int m = 0;
+        for (int v = 0; v < c->nv; v++) {
+            if (!dy[v] || (pj->bnd[v] && !(pj->seg && pj->seg[2 * v] >= 0)) || t->VFs[v + 1] == t->VFs[v]) continue;
+            m += polish_vertex(c, t, s, v, pj->seg);
+        }
+        pj->moves[s] += m;
+        if (!m) break;
+    }
+}
+
+static int polish(struct compat *c, const unsigned char *bnd, const int *seg, double goal, int sweeps, int threads)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    unsigned char *dy = malloc(c->nv ? c->nv : 1);
-    if (!dy) { topology_free(&t); return cm_seterr("out of memory"); }
-    double sg = sin(goal);
-    int moves = 0;
-    for (int s = 0; s < c->N; s++) {
-        const double *X = c->X[s];
-        for (int k = 0; k < sweeps; k++) {
-            memset(dy, 0, c->nv);
-            int any = 0;
-            for (int f = 0; f < c->nf; f++) {
-                const int *F = c->F + 3 * f;
-                if (compat_sin_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) >= sg) continue;
-                for (int j = 0; j < 3; j++) { touch_star(&t, F[j], dy); any = 1; }
-            }
-            if (!any) break;
-            int m = 0;
-            for (int v = 0; v < c->nv; v++) {
-                if (!dy[v] || (bnd[v] && !(seg && seg[2 * v] >= 0)) || t.VFs[v + 1] == t.VFs[v]) continue;
-                m += polish_vertex(c, &t, s, v, seg);
-            }
-            moves += m;
-            if (!m) break;
-        }
-    }
-    free(dy);
+    struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seg = seg, .sweeps = sweeps, .goal = goal,
+                           .threads = threads};
+    int moves = run_poses(&pj, polish_job);
     topology_free(&t);
     return moves;
 }
@@ -1165,15 +1217,15 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
             star_sigs(&w, sig);
             for (int v = 0; v < c->nv; v++) seed[v] = sig[v] != w.sig[v];
         }
-        int m = pa->mips > 0 ? mips_sweeps(c, w.bnd, w.seg, pa->mips, seed) : 0;
+        int m = pa->mips > 0 ? mips_sweeps(c, w.bnd, w.seg, pa->mips, seed, pa->threads) : 0;
         if (m < 0) goto out;
         st->moves += m;
-        m = smooth_sweeps(c, w.bnd, 8, seed);
+        m = smooth_sweeps(c, w.bnd, 8, seed, pa->threads);
         if (m < 0) goto out;
         st->moves += m;
         if (pa->mips > 0) {
             if (flips_until_done(c, &st->flips) < 0) goto out;
-            m = polish(c, w.bnd, w.seg, goal, 4);
+            m = polish(c, w.bnd, w.seg, goal, 4, pa->threads);
             if (m < 0) goto out;
             st->moves += m;
         }
@@ -1182,7 +1234,7 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
         int tc = pa->mips > 0 ? 0 : transfer(c, w.bnd, goal, &st->moves);
         if (tc < 0) goto out;
         if (tc > 0) {   /* whole shapes moved */
-            m = smooth_sweeps(c, w.bnd, 8, NULL);
+            m = smooth_sweeps(c, w.bnd, 8, NULL, pa->threads);
             if (m < 0) goto out;
             st->moves += m;
         }
@@ -1240,12 +1292,12 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
             st->collapses += m;
             st->coarsened += m;
         }
-        int m1 = smooth_sweeps(c, w.bnd, 8, NULL);
+        int m1 = smooth_sweeps(c, w.bnd, 8, NULL, pa->threads);
         if (m1 < 0) goto out;
         st->moves += m1;
         m += m1;
         if (pa->mips > 0) {
-            int m2 = polish(c, w.bnd, w.seg, goal, 4);
+            int m2 = polish(c, w.bnd, w.seg, goal, 4, pa->threads);
             if (m2 < 0) goto out;
             st->moves += m2;
             m += m2;

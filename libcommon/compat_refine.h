@@ -118,6 +118,9 @@ struct compat_refine_params {
                           with 20 a heavily distorted start was split
                           before the smoothing had settled, and the splits
                           ran into max_nv) */
+    int threads;       /* the smoothing and polish run pose by pose on this
+                          many threads (0: one per processor); the result
+                          does not depend on it */
 };
 
 /* Refine c in place.

@@ -28,4 +28,17 @@ test_expect_success 'the correspondence points are mesh vertices exactly on thei
 			$P/elephant-pose$k.rings.txt e6.mesh || return 1
 	done
 '
+test_expect_success '--threads 1 and 2 give the same bytes (the poses are smoothed independently)' '
+	compat-tri -m off --threads 1 -c "$STOPMO_ROOT/examples/morph2d/corr6.txt" $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
+		$P/elephant-pose3.rings.txt $P/elephant-pose4.rings.txt $P/elephant-pose5.rings.txt \
+		$P/elephant-pose6.rings.txt >t1.mesh &&
+	compat-tri -m off --threads 2 -c "$STOPMO_ROOT/examples/morph2d/corr6.txt" $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
+		$P/elephant-pose3.rings.txt $P/elephant-pose4.rings.txt $P/elephant-pose5.rings.txt \
+		$P/elephant-pose6.rings.txt >t2.mesh &&
+	cmp t1.mesh t2.mesh && cmp t1.mesh e6.mesh
+'
+test_expect_success 'bad --threads is a usage error' '
+	test_must_fail_usage compat-tri --threads -1 $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt >o.mesh 2>err &&
+	test ! -s o.mesh && grep "threads" err
+'
 test_done

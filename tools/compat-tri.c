@@ -80,6 +80,8 @@ static const char help[] =
 "      --max-vertices K  --refine stops splitting at K vertices (default: the\n"
 "                        triangulation's vertices plus 10 times the simplified\n"
 "                        outline's vertex count)\n"
+"      --threads N       the refinement smooths the poses on N threads (default\n"
+"                        0: one per core); the output does not depend on N\n"
 "      --split MODE      pieces that no common diagonal or single Steiner point\n"
 "                        splits: 'overlay' (default: overlay of the shapes'\n"
 "                        triangulations, always succeeds) or 'linkpath' (the\n"
@@ -96,7 +98,7 @@ struct options {
     int match, match_points, match_default;
     double bend, feature;
     double err, edge;
-    int smooth, raw, split, nearest, refine, max_nv;
+    int smooth, raw, split, nearest, refine, max_nv, threads;
     double min_angle;
     int nshapes;
     char **shapes;
@@ -107,7 +109,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     static const struct option lo[] = {
         {"corr", 1, 0, 'c'}, {"interior", 1, 0, 'i'}, {"error", 1, 0, 'e'}, {"edge-length", 1, 0, 'l'},
         {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"match-rings", 1, 0, 'M'},
-        {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'X'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
+        {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'X'}, {"threads", 1, 0, 'T'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
         {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -139,6 +141,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'a': o->min_angle = arg_double(optarg, "--min-angle"); break;
         case 'X': o->max_nv = arg_int(optarg, "--max-vertices"); break;
+        case 'T': o->threads = arg_int(optarg, "--threads"); break;
         case 'R': o->raw = 1; break;
         case 'm':
             if (!strcmp(optarg, "multiscale")) o->match = BMATCH_MULTISCALE;
@@ -168,6 +171,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->smooth < 0 || o->smooth > 10000) usage_error("--smooth must be in 0..10000");
     if (!(o->min_angle > 0 && o->min_angle <= 60)) usage_error("--min-angle must be in (0, 60] degrees");
     if (o->max_nv < 0) usage_error("--max-vertices must be >= 0");
+    if (o->threads < 0) usage_error("--threads must be >= 0");
     o->nshapes = argc - optind;
     o->shapes = argv + optind;
     if (o->nshapes < 1) usage_error("expected at least one SHAPE file");
@@ -421,7 +425,7 @@ static double improve(const struct options *opt, struct compat *cpp, double q0)
         if (compat_improve(cpp, target, o.smooth) < 0) return -1;
     } else {
         struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : cpp->nv + 10 * cpp->nb, 200,
-                                          o.refine == 2 ? 0 : 200};
+                                          o.refine == 2 ? 0 : 200, o.threads};
         struct compat_refine_stats rs;
         if (compat_refine(cpp, &pa, &rs) < 0) return -1;
         double q1 = compat_min_angle(cpp, NULL) * 180 / M_PI;
