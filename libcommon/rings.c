@@ -303,10 +303,10 @@ static int cmp_seg(const void *x, const void *y)
     return (s->xmin > t->xmin) - (s->xmin < t->xmin);
 }
 
-int rings_check_simple(const struct rings *r)
+int rings_first_crossing(const struct rings *r, int *e1, int *e2)
 {
     int total = r->start[r->nrings];
-    struct seg *S = malloc((size_t)total * sizeof *S);
+    struct seg *S = malloc((size_t)total * sizeof *S + 1);
     if (!S) return cm_seterr("out of memory");
     int m = 0;
     for (int k = 0; k < r->nrings; k++)
@@ -334,13 +334,22 @@ int rings_check_simple(const struct rings *r)
             else
                 hit = segments_intersect(a, b, c, d);
             if (hit) {
-                cm_seterr("cannot read '%s': line %ld: outline intersects itself (edge from line %ld crosses edge from line %ld)",
-                          r->name, r->line[S[s].a] > r->line[S[t].a] ? r->line[S[s].a] : r->line[S[t].a],
-                          r->line[S[s].a], r->line[S[t].a]);
+                *e1 = S[s].a < S[t].a ? S[s].a : S[t].a;
+                *e2 = S[s].a < S[t].a ? S[t].a : S[s].a;
                 bad = 1;
                 break;
             }
         }
     free(S);
-    return bad ? -1 : 0;
+    return bad;
+}
+
+int rings_check_simple(const struct rings *r)
+{
+    int e1, e2, rc = rings_first_crossing(r, &e1, &e2);
+    if (rc < 0) return -1;
+    if (rc)
+        return cm_seterr("cannot read '%s': line %ld: outline intersects itself (edge from line %ld crosses edge from line %ld)",
+                         r->name, r->line[e2], r->line[e1], r->line[e2]);
+    return 0;
 }

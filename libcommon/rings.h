@@ -68,6 +68,11 @@ int rings_degenerate(const struct rings *r, int k);
  * onto its neighbour.  Error names both edges by file line. */
 int rings_check_simple(const struct rings *r);
 
+/* The first crossing rings_check_simple would report: 1 and the start
+ * points e1 < e2 of the two edges (edge e runs from point e to the next
+ * point of its ring), 0 if the rings are simple, -1 if out of memory. */
+int rings_first_crossing(const struct rings *r, int *e1, int *e2);
+
 /* Make the first ring counter-clockwise and all others clockwise by
  * rings_orientation (exact; reverses rings as needed, leaves a ring of
  * orientation 0 as it is; returns the number of rings reversed). */

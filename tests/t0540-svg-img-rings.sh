@@ -72,7 +72,20 @@ test_expect_success 'bitmap bad input fails cleanly' '
 	printf "P2\n2 1\n255\n0 300\n" >big.pgm && test_fails_cleanly img2rings big.pgm &&
 	printf "P1\n2 2\n0 0\n0 0\n" >empty.pbm && test_fails_cleanly img2rings empty.pbm &&
 	printf "GIF89a" >g.gif && test_fails_cleanly img2rings g.gif &&
-	printf "P1\n4 4\n1 0 0 0\n0 1 0 0\n0 0 0 0\n0 0 0 0\n" >diag.pbm && test_fails_cleanly img2rings -s 0 -a 0 diag.pbm &&
-	img2rings -1 -s 0 -a 0 diag.pbm >one.rings
+	printf "P1\n4 4\n1 0 0 0\n0 1 0 0\n0 0 0 0\n0 0 0 0\n" >diag.pbm && img2rings -1 -s 0 -a 0 diag.pbm >one.rings
+'
+# before 2026-11-26 pixels touching at a corner made rings that touch, and
+# img2rings refused them (a render of an elephant walk frame with legs
+# touching diagonally could not be traced at all)
+test_expect_success 'pixels touching at a corner: separate rings, kept apart by a quarter-pixel chamfer' '
+	img2rings -s 0 -a 0 diag.pbm >two.rings &&
+	test $(grep -c "^ring" two.rings) = 2 &&
+	test $(grep -v "^ring" two.rings | sort -u | wc -l) = 10
+'
+test_expect_success 'an outline that touches itself at a corner (a U whose arms meet diagonally) traces as one simple ring' '
+	printf "P1\n5 4\n1 1 1 0 0\n1 0 0 1 0\n1 1 1 1 0\n0 0 0 0 0\n" >u.pbm &&
+	img2rings -1 -s 0 -a 0 u.pbm >u.rings &&
+	compat-tri --refine none u.rings >u.mesh &&
+	img2rings -1 -s 1 -a 0 u.pbm >u1.rings && compat-tri --refine none u1.rings >/dev/null
 '
 test_done

@@ -79,7 +79,7 @@ int main(int argc, char **argv)
     snprintf(r.name, sizeof r.name, "%s (traced)", name);
     if (o.outer) r.nrings = 1;
     if (rings_check_simple(&r) < 0)
-        die("cannot read '%s': traced outlines touch or cross (pixels touching at a corner, or --simplify too large); try -1 or a smaller --simplify", name);
+        die("cannot read '%s': traced outlines cross after simplification (a hole or piece within --simplify of another outline); try -1 or a smaller --simplify", name);
     info(1, "%dx%d image: %d rings, %d points", g.w, g.h, r.nrings, r.start[r.nrings]);
     FILE *f = out_open(o.output);
     if (rings_write(f, &r) < 0) die("cannot write output: %s", cm_errmsg());
