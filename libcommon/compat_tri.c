@@ -379,8 +379,10 @@ static int incone(const struct sub *p, int i, const double *q)
     return o1 > 0 || o2 > 0;
 }
 
-/* smallest of the two angles the direction q makes at corner i */
-static double cone_quality(const struct sub *p, int i, const double *q)
+/* smallest of the two angles the direction q makes at corner i; an angle
+ * clearly at most cut (by pseudo-angles, with a margin for rounding) is
+ * returned as 0 without its atan2 (cut <= 0: always the angle) */
+static double cone_quality_cut(const struct sub *p, int i, const double *q, double cut)
 {
     const double *a = V(p, i), *pr = V(p, (i + p->m - 1) % p->m), *nx = V(p, (i + 1) % p->m);
     /* the smaller by pseudo-angles (monotone in the ccw angle), then one atan2 */
@@ -393,8 +395,10 @@ static double cone_quality(const struct sub *p, int i, const double *q)
      * sliver; either angle wider than the corner is that case */
     double pa = ccw_pseudo(ux * vy - uy * vx, ux * vx + uy * vy);
     if (p1 > pa || p2 > pa) return 0;
+    if (cut > 0 && cut < M_PI && fmin(p1, p2) < ccw_pseudo(sin(cut), cos(cut)) * (1 - 1e-9)) return 0;
     return p1 <= p2 ? ccw_angle(ux, uy, qx, qy) : ccw_angle(qx, qy, vx, vy);
 }
+
 
 /* segment from P (corner i, or a free interior point if i < 0) to Q (corner
  * j or free) lies in the open interior of the polygon */
@@ -575,10 +579,15 @@ static int path_crosses(const struct sub *p, int i, int j, const double *pts, in
 
 
 
-/* quality of path corner i -> points -> corner j in one shape: min angle */
-static double path_quality(const struct sub *p, int i, int j, const double *pts, int k)
+/* quality of path corner i -> points -> corner j in one shape: min angle
+ * (0 if an end angle is clearly below cut > 0: the callers drop such paths) */
+static double path_quality(const struct sub *p, int i, int j, const double *pts, int k, double cut)
 {
-    double q = fmin(cone_quality(p, i, k ? pts : V(p, j)), cone_quality(p, j, k ? pts + 2 * (k - 1) : V(p, i)));
+    /* the end angles first: one clearly at most cut (0 from
+     * cone_quality_cut) decides without the rest */
+    double q = cone_quality_cut(p, i, k ? pts : V(p, j), cut);
+    if (q > 0) q = fmin(q, cone_quality_cut(p, j, k ? pts + 2 * (k - 1) : V(p, i), cut));
+    if (q == 0) return 0;
     for (int t = 0; t < k; t++) {
         const double *a = t ? pts + 2 * (t - 1) : V(p, i), *b = t + 1 < k ? pts + 2 * (t + 1) : V(p, j);
         const double *x = pts + 2 * t;
@@ -608,7 +617,11 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
              * visibility matrix is only needed by stage II, rarely) */
             for (int s = 0; s < N && all; s++) {
                 if (!incone(&sp[s], i, V(&sp[s], j)) || !incone(&sp[s], j, V(&sp[s], i))) { all = 0; break; }
-                double qq = fmin(cone_quality(&sp[s], i, V(&sp[s], j)), cone_quality(&sp[s], j, V(&sp[s], i)));
+                /* a cone angle that cannot beat the best score needs no
+                 * atan2 (cone_quality_cut gives 0: rejected below) */
+                double cq = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
+                double qq = cone_quality_cut(&sp[s], i, V(&sp[s], j), cq);
+                if (qq > 0) qq = fmin(qq, cone_quality_cut(&sp[s], j, V(&sp[s], i), cq));
                 /* a diagonal along a run of (nearly) collinear corners cuts off
                  * a zero-width sliver: leave such pieces to the overlay */
                 if (qq < STAGE1_MIN && c->split_mode != COMPAT_LINKPATH) { all = 0; break; }
@@ -675,7 +688,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                     const double *A = V(&sp[s], i), *B = V(&sp[s], j);
                     double mid[2];
                     if (bent_point(&sp[s], i, A, j, B, mid) == 0) {
-                        bq = hugs_edge(&sp[s], mid) ? -1 : path_quality(&sp[s], i, j, mid, 1);
+                        bq = hugs_edge(&sp[s], mid) ? -1 : path_quality(&sp[s], i, j, mid, 1, qcut);
                         if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], i, A, -1, mid, qcut));
                         if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], -1, mid, j, B, qcut));
                         tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
@@ -685,7 +698,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                     if (cv[s][(size_t)a * m + i] && cv[s][(size_t)a * m + j]) {
                         const double *x = C[s] + 2 * a;
                         if (hug[s][a]) continue;
-                        double pq = path_quality(&sp[s], i, j, x, 1), cut = fmax(bq, qcut);
+                        double cut = fmax(bq, qcut), pq = path_quality(&sp[s], i, j, x, 1, cut);
                         if (pq > cut) pq = fmin(pq, clearance_cut(&sp[s], i, V(&sp[s], i), -1, x, cut));
                         if (pq > cut) pq = fmin(pq, clearance_cut(&sp[s], -1, x, j, V(&sp[s], j), cut));
                         if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
