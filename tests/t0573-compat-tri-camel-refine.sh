@@ -35,12 +35,17 @@ test_expect_success 'poses 1 2, seven landmarks, -m off (the given rows, arc len
 test_expect_success '-v says why the refinement stopped below the goal, where, and how stretched the maps are there' '
 	grep "refinement stopped below the goal of 20 deg: neither the worst angle nor the number of triangles below the goal improved in [0-9]* rounds (back to the best round.s mesh); worst angle [0-9.]* deg; the poses. maps are stretched [0-9.]*x at (" m12.log
 '
-test_expect_success 'poses 2 5, seven landmarks, -m off: the goal is reached, worst angle >= 19.99 deg with <= 420 vertices (measured 20.04, 387; before 20.08, 441)' '
+# camel 5's outline has one diagonal pixel contact, which img2rings chamfers
+# since 2026-11-26 (one point 0.25 px lower): measured 20.01 deg, 491
+# vertices (with the old tracing 20.04, 387; before the stall detection
+# 20.08, 441): the vertex count of a refinement this close to its goal
+# moves with small changes of the input
+test_expect_success 'poses 2 5, seven landmarks, -m off: the goal is reached, worst angle >= 19.99 deg with <= 600 vertices' '
 	corr "1 2 3 4 5 6 7" "2 5" >c25 &&
 	compat-tri -m off -v -c c25 camel2.rings camel5.rings >m25.mesh 2>m25.log &&
 	test_le 1e-12 $(min_area m25.mesh) &&
 	test_le 19.99 $(worst_angle m25.mesh) &&
-	test_le $(mesh_vertices m25.mesh) 420 &&
+	test_le $(mesh_vertices m25.mesh) 600 &&
 	! grep "refinement stopped" m25.log
 '
 test_done
