@@ -126,3 +126,31 @@ arc_error_max() {
 	{ d = c[$1] - c[$2]; if (d < 0) d = -d; if (L - d < d) d = L - d; if (d > m) m = d }
 	END { printf "%.2f\n", 100 * m / L }' "$1" "$2"
 }
+
+# every_subset LM RINGS ROWS [compat-tri options]: compat-tri on every subset
+# of 2..6 of six poses; LM and RINGS are printf patterns of the pose number
+# 0-5 (e.g. horselm%d, horse%d.rings), ROWS a sed script picking the rows of
+# the pasted landmark files ("p": all).  Prints "ok total worst": the worst
+# angle over every triangle of every mesh made; failures on stderr.
+every_subset() {
+	lmf=$1 rf=$2 rows=$3 && shift 3 && ok=0 tot=0 worst=90 mask=3 &&
+	while [ $mask -lt 64 ]; do
+		cols= files=
+		for k in 0 1 2 3 4 5; do
+			if [ $(((mask >> k) & 1)) = 1 ]; then
+				cols="$cols $(printf "$lmf" $k)" files="$files $(printf "$rf" $k)"
+			fi
+		done
+		case $cols in *" "*" "*)
+			tot=$((tot + 1))
+			paste -d" " $cols | sed -n "$rows" >sub.corr
+			if compat-tri "$@" -c sub.corr $files >sub.mesh 2>sub.err && test_le 1e-12 $(min_area sub.mesh)
+			then
+				ok=$((ok + 1))
+				worst=$(awk -v a=$(worst_angle sub.mesh) -v b=$worst "BEGIN { print (a < b ? a : b) }")
+			else echo "poses$files: $(tail -1 sub.err)" >&2; fi ;;
+		esac
+		mask=$((mask + 1))
+	done &&
+	echo "$ok $tot $worst"
+}

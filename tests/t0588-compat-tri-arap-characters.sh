@@ -16,29 +16,6 @@ pose() {
 		test $(wc -l <$1.lm$k) = 5 || return 1
 	done
 }
-# subsets NAME [options]: every subset of 2..6 poses; prints "ok total worst"
-# (worst angle over every triangle of every pose, measured from the mesh);
-# failures and rows that are not vertices on their input point on stderr
-subsets() {
-	ch=$1 && shift && ok=0 tot=0 worst=90 mask=3 &&
-	while [ $mask -lt 64 ]; do
-		cols= files= i=0
-		for k in 0 1 2 3 4 5; do
-			if [ $(((mask >> i) & 1)) = 1 ]; then cols="$cols $ch.lm$k"; files="$files $ch$k.rings"; fi
-			i=$((i + 1))
-		done
-		case $cols in *" "*" "*)
-			tot=$((tot + 1))
-			paste -d" " $cols >sub.corr
-			if compat-tri "$@" -c sub.corr $files >sub.mesh 2>sub.err && test_le 1e-12 $(min_area sub.mesh)
-			then ok=$((ok + 1)); w=$(worst_angle sub.mesh); worst=$(awk -v a=$w -v b=$worst "BEGIN { print (a < b ? a : b) }")
-			else echo "$ch poses$files: $(tail -1 sub.err)" >&2; fi ;;
-		esac
-		mask=$((mask + 1))
-	done &&
-	echo "$ok $tot $worst"
-}
-
 test_expect_success 'generate: six poses each of the hippo, horse, dog and cat' '
 	pose hippo && pose horse && pose dog && pose cat
 '
@@ -52,12 +29,12 @@ test_expect_success 'every pose is a simple outline of its own sampling' '
 # s a subset on average
 test_expect_success 'hippo and horse: every subset of 2-6 poses succeeds at 20 degrees' '
 	for ch in hippo horse; do
-		r=$(subsets $ch) && echo "$ch: $r" && set -- $r && test "$1 $2" = "57 57" && test_le 19.99 $3 || return 1
+		r=$(every_subset $ch.lm%d $ch%d.rings p) && echo "$ch: $r" && set -- $r && test "$1 $2" = "57 57" && test_le 19.99 $3 || return 1
 	done
 '
 test_expect_success 'dog and cat: every subset succeeds without refinement (--refine none)' '
 	for ch in dog cat; do
-		r=$(subsets $ch --refine none) && echo "$ch: $r" && set -- $r && test "$1 $2" = "57 57" || return 1
+		r=$(every_subset $ch.lm%d $ch%d.rings p --refine none) && echo "$ch: $r" && set -- $r && test "$1 $2" = "57 57" || return 1
 	done
 '
 test_expect_success 'dog and cat, all six poses: 20 degrees' '
