@@ -699,9 +699,27 @@ static void derive_costs(const struct replib_data *D, double mu, struct work *w)
     }
 }
 
+/* Direct back end: P = Z Rw^T (frames only) and Q = Rw Rw^T from the
+ * library w->Rw (d by zdim); Q from DSYRK's upper triangle, mirrored:
+ * exactly symmetric. */
+static void library_q(const struct replib_data *D, struct work *w)
+{
+    int d = w->d, m3 = D->zdim;
+    cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, m3, 1.0, w->Rw, m3, 0.0, w->Q, d);
+    for (int a = 0; a < d; a++)
+        for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+}
+
+static void direct_products(const struct replib_data *D, struct work *w)
+{
+    int n = D->n, d = w->d, m3 = D->zdim;
+    cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, m3, 1.0, D->Z, m3, w->Rw, m3, 0.0, w->P, d);
+    library_q(D, w);
+}
+
 static int compute_costs(const struct replib_data *D, const struct lstate *s, double mu, struct work *w)
 {
-    int N = D->N, n = D->n, d = w->d, m3 = D->zdim;
+    int N = D->N, d = w->d, m3 = D->zdim;
     w->have = 0;
     if (D->K) {
         if (gram_costs(D, s, w) < 0) return -1;
@@ -712,12 +730,8 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
                 w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a] = v;
             }
     } else {
-        /* Q from DSYRK's upper triangle, mirrored: exactly symmetric */
         if (lstate_apply(s, D->Z, N, NULL, m3, w->Rw) < 0) return -1;
-        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, m3, 1.0, D->Z, m3, w->Rw, m3, 0.0, w->P, d);
-        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, m3, 1.0, w->Rw, m3, 0.0, w->Q, d);
-        for (int a = 0; a < d; a++)
-            for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+        direct_products(D, w);
     }
     derive_costs(D, mu, w);
     return 0;
@@ -815,9 +829,7 @@ static int costs_incremental(const struct replib_data *D, const struct lstate *s
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nf, r, ns, 1.0, M, ns, E, r, 1.0, Rf, r);
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, ns, r, 1.0, Z, r, E, r, 0.0, G, ns);
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, nf, ns, 1.0, G, ns, M, ns, 1.0, w->P + nfix, d);
-        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, r, 1.0, w->Rw, r, 0.0, w->Q, d);
-        for (int a = 0; a < d; a++)
-            for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+        library_q(D, w);
         free(E); free(M); free(G);
         w->ninc++;
     }
@@ -1724,10 +1736,7 @@ static int learn_sampled(const struct replib_data *D, const struct replib_opts *
         struct work w;
         rc = work_init(&w, D, d);
         if (rc == 0 && (rc = lstate_apply(&ls, S.Z, S.N, NULL, zd, w.Rw)) == 0) {
-            cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, zd, 1.0, D->Z, zd, w.Rw, zd, 0.0, w.P, d);
-            cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, zd, 1.0, w.Rw, zd, 0.0, w.Q, d);
-            for (int a = 0; a < d; a++)
-                for (int b = 0; b < a; b++) w.Q[(size_t)a * d + b] = w.Q[(size_t)b * d + a];
+            direct_products(D, &w);
             derive_costs(D, mu, &w);
             if (isnan(label_step(&w, o->method, l0, 0)))
                 rc = cm_seterr("replib: the energy is not a number (squared coordinate differences overflow: scale the input down, e.g. with mesh-normalize)");

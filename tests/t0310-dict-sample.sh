@@ -14,7 +14,7 @@ test_expect_success 'setup: a 400-frame head, 6 decimals, with noise (full rank)
 '
 test_expect_success '-v says the sample ran; same bytes twice and on 1 and 2 threads' '
 	dict-learn -v -d 24 -l 2 --seed 4 --gram off --sample 192 --threads 1 --report a.rep --labels-out a.lab noisy.mesh 2>log >a.lib &&
-	grep "restarts and search on a sample of 192 frames (3 blocks of 64; energy .* there), then one descent on all 400 frames" log &&
+	grep "restarts and search on a sample of 192 frames (3 blocks of 64; energy .* there), then one restart on all 400 frames" log &&
 	dict-learn -d 24 -l 2 --seed 4 --gram off --sample 192 --threads 2 --report b.rep --labels-out b.lab noisy.mesh >b.lib &&
 	test_cmp a.lib b.lib && test_cmp a.lab b.lab && test_cmp a.rep b.rep
 '

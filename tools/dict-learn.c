@@ -235,7 +235,7 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     }
     const struct replib_result *r = &run->res;
     if (r->sampled)
-        info(1, "d %d: restarts and search on a sample of %d frames (%d blocks of %d; energy %.10g there), then one descent on all %d frames",
+        info(1, "d %d: restarts and search on a sample of %d frames (%d blocks of %d; energy %.10g there), then one restart on all %d frames",
              d, r->sampled, r->sampled / REPLIB_SAMPLE_BLOCK, REPLIB_SAMPLE_BLOCK, r->sample_energy, r->n);
     info(1, "d %d: energy %.10g (data %.6g, velocity %.6g), mean error %.6g, max error %.6g",
          d, run->rep.energy, run->rep.data, run->rep.velocity, run->rep.mean_err, run->rep.max_err);
