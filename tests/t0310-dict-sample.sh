@@ -51,6 +51,15 @@ test_expect_success 'no sample when the frames do not exceed it, nor on the Gram
 	dict-learn -d 24 -l 2 --gram on --sample 0 noisy.mesh >g0.lib &&
 	test_cmp g0.lib g.lib
 '
+test_expect_success '--fixed: the fixed pieces stay pieces 0..5 as given, energy <= the plain method' '
+	dict-learn -d 6 -l 2 --gram off noisy.mesh >fix6.lib &&
+	dict-learn -v -d 20 -l 2 --gram off --sample 192 --fixed fix6.lib --report fx.rep noisy.mesh 2>log >fx.lib &&
+	grep "sample of 192 frames" log &&
+	anim-slice -f 0:6 fx.lib >fx6.lib &&
+	anim-diff fix6.lib fx6.lib >d.txt && grep "^# max 0\$" d.txt &&
+	dict-learn -d 20 -l 2 --gram off --sample 0 --start kmeans++ --search 0 --fixed fix6.lib --report fp.rep noisy.mesh >/dev/null &&
+	test_le "$(awk "/^energy /{print \$2}" fx.rep)" "$(awk "/^energy /{print \$2}" fp.rep)"
+'
 test_expect_success 'bad uses fail cleanly' '
 	test_must_fail_usage dict-learn --sample -1 noisy.mesh &&
 	test_must_fail_usage dict-learn --sample x noisy.mesh
