@@ -288,9 +288,13 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
     while ((rc = mesh_prefetch_next(&pf, &x, &cut)) == 1) {
         int f = m->nframes;
         if (!sk && (size_t)(f + 1) * fb > lim) {
-            /* switch to the sketch: feed it what was buffered */
-            if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL,
-                                   (size_t)(o->memory * 1048576.0), (uint64_t)o->seed) < 0)
+            /* switch to the sketch: feed it what was buffered.  When the
+             * header announces more frames than --memory keeps, none are
+             * kept (they would be dropped at the budget anyway: the same
+             * result, without filling and freeing the budget) */
+            size_t keep = (size_t)(o->memory * 1048576.0);
+            if (r.nframes > 0 && (double)r.nframes * 12 * m->nv > o->memory * 1048576.0) keep = 0;
+            if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
                 die("%s", cm_errmsg());
             for (int g = 0; g < f; g++)
                 if (replib_sketch_add(S, m->V + (size_t)g * 3 * m->nv, m->cut[g]) < 0)
