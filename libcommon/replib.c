@@ -1755,7 +1755,7 @@ static int learn_sampled(const struct replib_data *D, const struct replib_opts *
         res->restarts = rs.restarts;
         res->best_restart = rs.best_restart;
         res->iterations += rs.iterations;
-        res->accepted = rs.accepted;
+        res->accepted += rs.accepted;
         res->label_seconds += rs.label_seconds;
         res->sampled = m;
         res->sample_energy = rs.energy;
