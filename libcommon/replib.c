@@ -1,5 +1,6 @@
 /* replib.c -- replacement library by block coordinate descent (see replib.h). */
 #include "replib.h"
+#include "big_alloc.h"
 #include "chainlabel.h"
 #include "cm_error.h"
 #include "rng.h"
@@ -10,7 +11,6 @@
 #include <time.h>
 #include <pthread.h>
 #include <unistd.h>
-#include <sys/mman.h>
 
 /* LAPACK (column-major Fortran interface, from OpenBLAS/liblapack) */
 extern int openblas_get_num_threads(void);
@@ -26,22 +26,6 @@ static double wall(void)
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-/* Large arrays (the centered frames, the Gram matrix: up to gigabytes) on
- * transparent huge pages when the kernel allows it: first-touch page faults
- * of 4 KB pages cost seconds of system time per gigabyte here (measured:
- * 4.6 s sys for the Bunny-size benchmark). */
-static void *big_alloc(size_t bytes)
-{
-    if (bytes < ((size_t)32 << 20)) return malloc(bytes);
-    void *p = NULL;
-    size_t align = (size_t)2 << 20;
-    if (posix_memalign(&p, align, (bytes + align - 1) / align * align) != 0) return NULL;
-#ifdef MADV_HUGEPAGE
-    madvise(p, (bytes + align - 1) / align * align, MADV_HUGEPAGE);
-#endif
-    return p;
 }
 
 #define GRAM_AUTO_MAX 12000       /* N above this: K would exceed ~1.1 GB; use direct */

@@ -280,6 +280,10 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
     if (o->weights && columns_read(o->weights, 1, m->nv, "vertices", wc) < 0) die("%s", cm_errmsg());
     size_t fb = sizeof(double) * 3 * (size_t)m->nv;
     size_t lim = o->stream == 0 ? (size_t)-1 : o->stream == 1 ? 0 : (size_t)512 << 20;
+    /* frames announced past the limit: to the sketch from the first frame
+     * (buffering 512 MB first and feeding them to it gives the same bytes,
+     * at the cost of a copy and a page fault per 4 KB) */
+    if (r.nframes > 0 && (double)r.nframes * fb > (double)lim) lim = 0;
     int cap = 0, sk = 0, rc, cut;
     /* frames parsed on a second thread while this one sketches or stores */
     struct mesh_prefetch pf;
@@ -296,6 +300,7 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
             if (r.nframes > 0 && (double)r.nframes * 12 * m->nv > o->memory * 1048576.0) keep = 0;
             if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
                 die("%s", cm_errmsg());
+            S->expect = r.nframes > 0 ? r.nframes : 0;
             for (int g = 0; g < f; g++)
                 if (replib_sketch_add(S, m->V + (size_t)g * 3 * m->nv, m->cut[g]) < 0)
                     die("cannot read '%s': %s", r.name, cm_errmsg());
