@@ -108,6 +108,16 @@ test-deps:
 	  echo "test-deps: chromium could not be installed; the browser tests will be skipped"; \
 	else echo "test-deps: no chromium (sudo apt-get install chromium); the browser tests will be skipped"; fi
 
+# bench-deps: the peer of bench/b-dictq.sh, scikit-learn (Debian's, for
+# /usr/bin/python3); without it that bench prints why it is skipped
+bench-deps:
+	@if /usr/bin/python3 -c 'import sklearn' 2>/dev/null; then :; \
+	elif [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then echo "bench-deps: installing python3-sklearn"; \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends python3-sklearn >/dev/null 2>&1 || \
+	  { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends python3-sklearn; } || \
+	  echo "bench-deps: python3-sklearn could not be installed; the scikit-learn comparison will be skipped"; \
+	else echo "bench-deps: no scikit-learn (sudo apt-get install python3-sklearn); the scikit-learn comparison will be skipped"; fi
+
 check: deps test-deps
 	$(MAKE) all
 	prove -j2 --timer tests/t[0-9]*.sh $(UNITS)
@@ -116,7 +126,7 @@ demo: deps
 	$(MAKE) all
 	$(MAKE) -C examples/stopshop demo
 
-bench: deps
+bench: deps bench-deps
 	$(MAKE) all $(BENCHES)
 	sh bench/run.sh
 
@@ -173,6 +183,6 @@ check-fuzz: deps fuzz-deps
 clean:
 	rm -rf build bin build-asan bin-asan build-fuzz
 
-.PHONY: all deps test-deps check check-sanitize fuzz fuzz-deps check-fuzz demo bench install clean
+.PHONY: all deps test-deps bench-deps check check-sanitize fuzz fuzz-deps check-fuzz demo bench install clean
 .PRECIOUS: $(BUILD)/tools/%.o
 -include $(DEPFILES)

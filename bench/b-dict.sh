@@ -18,7 +18,8 @@
 # largest rounding of the frames kept beside the sketch (int32 of the
 # input's decimal step, or floats) against half that step.  BENCH_FULL=1 adds the Bunny under the old release (4.3 GB,
 # about a minute) and the film-scale stream (100,000 frames of a
-# 10,000-vertex part piped from dict-tile, against 5,000 frames).
+# 10,000-vertex part piped from dict-tile, against 5,000 frames and against
+# the search on all frames; about 15 min on 2 shared cores).
 set -u
 OLDREV=361189f
 PREREV=c460fba
@@ -96,18 +97,43 @@ line monkey 9971 2653 150 39 1 "$T/monkey.mesh"
 line bunny 17260 5177 200 152 "${BENCH_FULL:-0}" "$T/bunny.mesh"
 rm -f "$T/bunny.mesh"    # 2.1 GB
 if [ "${BENCH_FULL:-0}" = 1 ]; then
-    # film scale: a 10,000-vertex part read once from a pipe
-    for F in 5000 100000; do
-        /usr/bin/time -f "%e %U %S %M" -o "$T/time" sh -c \
-            "'$TILE' 10000 $F 3 '$T/elephant.mesh' '$T/facecap.mesh' | dict-learn -v -d 50 -l 2 --stream on --report '$T/rep' >/dev/null 2>'$T/err'" ||
-            { echo "film $F: failed"; tail -2 "$T/err"; continue; }
+    # film scale: a 10,000-vertex part read once from a pipe (dict-tile
+    # writes it; only dict-learn is timed: CPU seconds and peak RSS of its
+    # process).  5,000 frames (all frames searched), 100,000 frames with
+    # the defaults (restarts and search on a sample of 16,384 frames, then
+    # one restart on all frames) and with --sample 0 (the search on all
+    # frames, the method before --sample) in the same run; energies in the
+    # sketch's coordinates (same sketch maps: same seed).  Then 5,000
+    # frames held in memory (--stream off, 1.2 GB as doubles) against the
+    # streamed run: what the sketch costs where both fit.
+    film() { # frames tag [options]
+        F=$1 tag=$2; shift 2
+        "$TILE" 10000 $F 3 "$T/elephant.mesh" "$T/facecap.mesh" |
+            /usr/bin/time -f "%e %U %S %M" -o "$T/time" dict-learn -v -d 50 -l 2 --report "$T/rep" "$@" >/dev/null 2>"$T/err" ||
+            { echo "film $F $tag: failed"; tail -2 "$T/err"; return 1; }
         e=$(awk '/^energy /{print $2}' "$T/rep")
+        l=$(sed -n 's/.*time: learn + evaluate [0-9.]* s wall, \([0-9.]*\) s cpu/\1/p' "$T/err")
         kept=$(grep -c "frames kept" "$T/err")
-        awk -v F=$F -v e="$e" -v k=$kept '{ printf "%s %s %.2f %.0f %s %s\n", F, $1, $2 + $3, $4 / 1024, e, k }' "$T/time" >>"$T/film"
-    done
-    awk '{ w[NR] = $2 / $1 * 1000; c[NR] = $3 / $1 * 1000; f[NR] = $1; m[NR] = $4; e[NR] = $5; k[NR] = $6 }
-        END { if (NR == 2) printf "film %d frames x 10000 v (pipe, d 50, lambda 2, %s): %.2f ms/frame wall (%.2f cpu, peak %d MB, energy %.6g) | baseline %d frames (%s) %.2f ms/frame wall (%.2f cpu, %d MB) | ratio %.2f (cpu %.2f)\n",
-            f[2], (k[2] ? "frames kept" : "sketch only"), w[2], c[2], m[2], e[2], f[1], (k[1] ? "frames kept" : "sketch only"), w[1], c[1], m[1], w[1] / w[2], c[1] / c[2] }' "$T/film"
+        awk -v F=$F -v t=$tag -v e="$e" -v l="$l" -v k=$kept '{ printf "%s %s %s %.2f %.0f %s %s %s\n", t, F, $1, $2 + $3, $4 / 1024, e, l, k }' "$T/time" >>"$T/film"
+    }
+    rm -f "$T/film"
+    load=$(cut -d" " -f1-3 /proc/loadavg)
+    film 5000 s5k --stream on && film 100000 s100k --stream on && film 100000 all100k --stream on --sample 0
+    film 5000 mem5k --stream off
+    awk -v load="$load" '{ t[$1] = $1; F[$1] = $2; w[$1] = $3; c[$1] = $4; m[$1] = $5; e[$1] = $6; l[$1] = $7; k[$1] = $8 }
+        END {
+            if (("s5k" in t) && ("s100k" in t))
+                printf "film 100000 frames x 10000 v (pipe, d 50, lambda 2, defaults: sample 16384, %s): %.3f ms/frame cpu (dict-learn alone; learning %.3f), peak %d MB, energy %.6g | baseline 5000 frames (all searched, %s) %.3f ms/frame cpu (learning %.3f), peak %d MB | ratio %.2f (learning %.2f; load %s)\n",
+                    (k["s100k"] ? "frames kept" : "sketch only"), c["s100k"] / 100, l["s100k"] / 100, m["s100k"], e["s100k"],
+                    (k["s5k"] ? "frames kept" : "sketch only"), c["s5k"] / 5, l["s5k"] / 5, m["s5k"],
+                    (c["s5k"] / 5) / (c["s100k"] / 100), (l["s5k"] / 5) / (l["s100k"] / 100), load
+            if (("s100k" in t) && ("all100k" in t))
+                printf "film 100000 frames, sample 16384: %.1f s cpu (learning %.1f), energy %.10g | baseline --sample 0 (search on all frames) %.1f s cpu (learning %.1f), energy %.10g | ratio cpu %.2f, energy %.5f\n",
+                    c["s100k"], l["s100k"], e["s100k"], c["all100k"], l["all100k"], e["all100k"], c["all100k"] / c["s100k"], e["s100k"] / e["all100k"]
+            if (("s5k" in t) && ("mem5k" in t))
+                printf "film 5000 frames streamed (sketch rank 128): energy %.10g, %.1f s cpu, peak %d MB | baseline in memory (--stream off) energy %.10g, %.1f s cpu, peak %d MB | ratio energy %.6f\n",
+                    e["s5k"], c["s5k"], m["s5k"], e["mem5k"], c["mem5k"], m["mem5k"], e["s5k"] / e["mem5k"]
+        }' "$T/film"
     rm -f "$T/film"
 fi
 # OpenBLAS kernel: Debian's 0.3.21 falls back to Prescott on this CPU; dict-learn

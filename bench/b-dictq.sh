@@ -6,7 +6,9 @@
 # dict-learn: defaults (5 restarts, greedy start, local search), the whole
 # tool (read, Gram matrix, learn, write); KMeans: the fit alone.  Also the
 # plain method (k-means++ start, block coordinate descent: --start kmeans++
-# --search 0).  Wall and CPU seconds (the machine may be shared).
+# --search 0).  Wall and CPU seconds (the machine may be shared); "fit
+# alone" is dict-learn's prepare and learn stages (-v), as KMeans' time is
+# its fit without reading the data.
 set -u
 SHARED=${SHARED_DATA:-$ROOT/../shared/data}
 T=$BENCH_TMP/dictq
@@ -28,9 +30,11 @@ if [ ! -s "$T/elephant.mesh" ] && [ -r "$SHARED/anim/elephant-walk-457.tar.xz" ]
     rm -rf "$T/el" && mkdir "$T/el" && tar -xJf "$SHARED/anim/elephant-walk-457.tar.xz" -C "$T/el" &&
     mesh-import --raw "$T/el/*/frame_*.obj" >"$T/elephant.mesh" && rm -rf "$T/el"
 fi
-timed() { # output: "wall cpu" of the command, its stderr to $T/err
-    /usr/bin/time -f "%e %U %S" -o "$T/time" "$@" >/dev/null 2>"$T/err" || return 1
-    awk '{ printf "%s %.2f", $1, $2 + $3 }' "$T/time"
+timed() { # output: "wall cpu fit" of dict-learn -v (fit: wall seconds of its prepare and learn
+           # stages, what KMeans' fit does: no reading or writing), its stderr to $T/err
+    /usr/bin/time -f "%e %U %S" -o "$T/time" "$@" -v >/dev/null 2>"$T/err" || return 1
+    fit=$(sed -n 's/.*time: \(prepare\|learn + evaluate\) \([0-9.]*\) s wall.*/\2/p' "$T/err" | awk '{ s += $1 } END { printf "%.3f", s }')
+    awk -v fit="$fit" '{ printf "%s %.2f %s", $1, $2 + $3, fit }' "$T/time"
 }
 for part in lower upper elephant; do
     f=$T/$part.mesh
@@ -43,10 +47,10 @@ for part in lower upper elephant; do
         tp=$(timed dict-learn -l 0 -d $d --start kmeans++ --search 0 --report "$T/repp" "$f")
         ep=$(awk '/^energy /{print $2}' "$T/repp")
         sk=$($PY "$ROOT/bench/dict-sklearn.py" "$f" $d 10) || { echo "dict-quality $part d=$d: sklearn failed"; continue; }
-        echo "$t $e $tp $ep $sk" | awk -v name="$part" -v d=$d '{
-            for (i = 5; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
-            printf "dict-quality %s (%s frames x %s) d=%d lambda=0: energy %.6g in %.2f s wall (%.2f s cpu); plain method %.6g in %.2f s | baseline sklearn KMeans n_init=10 energy %.6g in %.2f s wall (%.2f s cpu) | ratio energy %.4f, time %.1f (cpu %.1f)\n",
-                name, v["frames"], v["dims"], d, $3, $1, $2, $6, $4, v["energy"], v["seconds"], v["cpu"],
-                $3 / v["energy"], v["seconds"] / $1, v["cpu"] / ($2 > 0.005 ? $2 : 0.005) }'
+        echo "$t $e $tp $ep $sk" | awk -v name="$part" -v d=$d -v load="$(cut -d' ' -f1 /proc/loadavg)" '{
+            for (i = 9; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
+            printf "dict-quality %s (%s frames x %s) d=%d lambda=0: energy %.6g in %.2f s wall (%.2f s cpu; fit alone %.2f s wall); plain method %.6g in %.2f s | baseline sklearn KMeans n_init=10 energy %.6g in %.2f s wall (%.2f s cpu, fit alone) | ratio energy %.4f, time %.1f (cpu %.1f, fit alone %.1f; load %s)\n",
+                name, v["frames"], v["dims"], d, $4, $1, $2, $3, $8, $5, v["energy"], v["seconds"], v["cpu"],
+                $4 / v["energy"], v["seconds"] / $1, v["cpu"] / ($2 > 0.005 ? $2 : 0.005), v["seconds"] / ($3 > 0.005 ? $3 : 0.005), load }'
     done
 done

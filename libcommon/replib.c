@@ -1,5 +1,6 @@
 /* replib.c -- replacement library by block coordinate descent (see replib.h). */
 #include "replib.h"
+#include "big_alloc.h"
 #include "chainlabel.h"
 #include "cm_error.h"
 #include "rng.h"
@@ -10,7 +11,6 @@
 #include <time.h>
 #include <pthread.h>
 #include <unistd.h>
-#include <sys/mman.h>
 
 /* LAPACK (column-major Fortran interface, from OpenBLAS/liblapack) */
 extern int openblas_get_num_threads(void);
@@ -28,22 +28,6 @@ static double wall(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-/* Large arrays (the centered frames, the Gram matrix: up to gigabytes) on
- * transparent huge pages when the kernel allows it: first-touch page faults
- * of 4 KB pages cost seconds of system time per gigabyte here (measured:
- * 4.6 s sys for the Bunny-size benchmark). */
-static void *big_alloc(size_t bytes)
-{
-    if (bytes < ((size_t)32 << 20)) return malloc(bytes);
-    void *p = NULL;
-    size_t align = (size_t)2 << 20;
-    if (posix_memalign(&p, align, (bytes + align - 1) / align * align) != 0) return NULL;
-#ifdef MADV_HUGEPAGE
-    madvise(p, (bytes + align - 1) / align * align, MADV_HUGEPAGE);
-#endif
-    return p;
-}
-
 #define GRAM_AUTO_MAX 12000       /* N above this: K would exceed ~1.1 GB; use direct */
 /* candidates per frame in the label steps of split/merge trials at lambda
  * > 0 (the cheapest pieces by data cost, plus the current label): on the
@@ -52,6 +36,7 @@ static void *big_alloc(size_t bytes)
  * 8 gave the same final energies as 16 on the 16 cases of the dict tests
  * and benches (facecap parts, elephant, d 20-150, lambda 0 and 2) */
 #define REPLIB_TRIAL_CANDIDATES 8
+#define REPLIB_SAMPLE_MAX_BYTES (512.0 * 1048576)   /* copy of the sample's rows of Z */
 
 /* Exact low-rank Gram matrix.  Blend-shape animations (faces) have a small
  * rank: facecap's 335 frames span 52 dimensions to rounding.  With a random
@@ -698,9 +683,27 @@ static void derive_costs(const struct replib_data *D, double mu, struct work *w)
     }
 }
 
+/* Direct back end: P = Z Rw^T (frames only) and Q = Rw Rw^T from the
+ * library w->Rw (d by zdim); Q from DSYRK's upper triangle, mirrored:
+ * exactly symmetric. */
+static void library_q(const struct replib_data *D, struct work *w)
+{
+    int d = w->d, m3 = D->zdim;
+    cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, m3, 1.0, w->Rw, m3, 0.0, w->Q, d);
+    for (int a = 0; a < d; a++)
+        for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+}
+
+static void direct_products(const struct replib_data *D, struct work *w)
+{
+    int n = D->n, d = w->d, m3 = D->zdim;
+    cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, m3, 1.0, D->Z, m3, w->Rw, m3, 0.0, w->P, d);
+    library_q(D, w);
+}
+
 static int compute_costs(const struct replib_data *D, const struct lstate *s, double mu, struct work *w)
 {
-    int N = D->N, n = D->n, d = w->d, m3 = D->zdim;
+    int N = D->N, d = w->d, m3 = D->zdim;
     w->have = 0;
     if (D->K) {
         if (gram_costs(D, s, w) < 0) return -1;
@@ -711,12 +714,8 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
                 w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a] = v;
             }
     } else {
-        /* Q from DSYRK's upper triangle, mirrored: exactly symmetric */
         if (lstate_apply(s, D->Z, N, NULL, m3, w->Rw) < 0) return -1;
-        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, d, m3, 1.0, D->Z, m3, w->Rw, m3, 0.0, w->P, d);
-        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, m3, 1.0, w->Rw, m3, 0.0, w->Q, d);
-        for (int a = 0; a < d; a++)
-            for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+        direct_products(D, w);
     }
     derive_costs(D, mu, w);
     return 0;
@@ -814,9 +813,7 @@ static int costs_incremental(const struct replib_data *D, const struct lstate *s
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nf, r, ns, 1.0, M, ns, E, r, 1.0, Rf, r);
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, ns, r, 1.0, Z, r, E, r, 0.0, G, ns);
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, n, nf, ns, 1.0, G, ns, M, ns, 1.0, w->P + nfix, d);
-        cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, d, r, 1.0, w->Rw, r, 0.0, w->Q, d);
-        for (int a = 0; a < d; a++)
-            for (int b = 0; b < a; b++) w->Q[(size_t)a * d + b] = w->Q[(size_t)b * d + a];
+        library_q(D, w);
         free(E); free(M); free(G);
         w->ninc++;
     }
@@ -1588,7 +1585,10 @@ static void *worker_run(void *arg)
     return NULL;
 }
 
-int replib_learn(const struct replib_data *D, const struct replib_opts *o, struct replib_result *res)
+/* The restarts on D; the best library goes to res->R, or with keep != NULL
+ * its state (rows of D) to *keep and res->R stays NULL. */
+static int learn_run(const struct replib_data *D, const struct replib_opts *o, struct replib_result *res,
+                     struct lstate *keep)
 {
     int n = D->n, d = o->d, m3 = D->m3;
     memset(res, 0, sizeof *res);
@@ -1612,8 +1612,8 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
     if (nth > 16) nth = 16;
     struct restart *out = calloc(restarts, sizeof *out);
     res->labels = malloc(sizeof(int) * n);
-    res->R = malloc(sizeof(double) * (size_t)d * m3);
-    if (!out || !res->labels || !res->R) {
+    res->R = keep ? NULL : malloc(sizeof(double) * (size_t)d * m3);
+    if (!out || !res->labels || (!keep && !res->R)) {
         free(out); replib_result_free(res);
         return cm_seterr("replib: out of memory");
     }
@@ -1654,7 +1654,7 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
         res->best_restart = best;
         res->energy = out[best].E; res->data = out[best].data; res->velocity = out[best].velocity;
         memcpy(res->labels, out[best].labels, sizeof(int) * n);
-        if (library_out(D, &out[best].s, res->R) < 0) rc = -1;
+        if (keep ? lstate_copy(keep, &out[best].s) < 0 : library_out(D, &out[best].s, res->R) < 0) rc = -1;
     } else {
         const char *why = "";
         for (int t = 0; t < nth && !*why; t++) if (wk[t].rc) why = wk[t].msg;
@@ -1668,6 +1668,95 @@ int replib_learn(const struct replib_data *D, const struct replib_opts *o, struc
     if (rc) { replib_result_free(res); return -1; }
     res->seconds = wall() - t0;
     return 0;
+}
+
+/* Sampled learning (o->sample, replib.h): the restarts (start and search)
+ * run on nb = sample / B blocks of B consecutive frames spread evenly over
+ * the animation (block j starts at frame j n / nb; a block is a clip of
+ * its own, the input's cuts inside it kept, so the velocity term sees
+ * B - 1 of every B transitions); the best library, solved in the sample's
+ * coordinates, labels all n frames (one exact label step: its costs are
+ * one DGEMM n x zdim x d), and from those labels one restart on all frames
+ * runs the descent and the search (o->search trials).  Direct back end
+ * only (the sample's rows of Z are copied).  The iterations of both
+ * stages are counted in res; res->sampled = nb B. */
+static int learn_sampled(const struct replib_data *D, const struct replib_opts *o, struct replib_result *res)
+{
+    int n = D->n, d = o->d, nfix = D->nfix, zd = D->zdim, B = REPLIB_SAMPLE_BLOCK;
+    int nb = o->sample / B > 0 ? o->sample / B : 1, m = nb * B;
+    double t0 = wall(), mu = o->lambda / 2;
+    memset(res, 0, sizeof *res);
+    struct replib_data S = {0};
+    S.n = m; S.nv = D->nv; S.nfix = nfix; S.N = m + nfix; S.m3 = D->m3; S.zdim = zd;
+    S.lowrank = D->lowrank; S.step = D->step;
+    int *idx = malloc(sizeof(int) * m), *l0 = malloc(sizeof(int) * n);
+    S.link = calloc(m, 1);
+    S.Z = big_alloc(sizeof(double) * (size_t)S.N * zd);
+    S.zz = malloc(sizeof(double) * S.N);
+    S.dd = calloc(m, sizeof(double));
+    if (!idx || !l0 || !S.link || !S.Z || !S.zz || !S.dd) {
+        free(idx); free(l0); replib_data_free(&S);
+        return cm_seterr("replib: out of memory (a sample of %d frames)", m);
+    }
+    for (int j = 0; j < nb; j++) {
+        int f0 = (int)((long long)j * n / nb);
+        for (int i = 0; i < B; i++) idx[j * B + i] = f0 + i;
+    }
+    for (int i = 0; i < S.N; i++) {
+        int g = i < m ? idx[i] : n + (i - m);
+        memcpy(S.Z + (size_t)i * zd, D->Z + (size_t)g * zd, sizeof(double) * zd);
+        S.zz[i] = D->zz[g];
+    }
+    for (int i = 0; i + 1 < m; i++)
+        if ((i + 1) % B != 0 && D->link[idx[i]]) { S.link[i] = 1; S.dd[i] = D->dd[idx[i]]; }
+    free(idx);
+    struct replib_opts os = *o;
+    os.sample = 0;
+    struct replib_result rs;
+    struct lstate ls = {0};
+    int rc = learn_run(&S, &os, &rs, &ls);
+    if (rc == 0) {
+        /* all frames labelled with the sample's library */
+        struct work w;
+        rc = work_init(&w, D, d);
+        if (rc == 0 && (rc = lstate_apply(&ls, S.Z, S.N, NULL, zd, w.Rw)) == 0) {
+            direct_products(D, &w);
+            derive_costs(D, mu, &w);
+            if (isnan(label_step(&w, o->method, l0, 0)))
+                rc = cm_seterr("replib: the energy is not a number (squared coordinate differences overflow: scale the input down, e.g. with mesh-normalize)");
+        }
+        if (w.P) work_free(&w);
+    }
+    lstate_free(&ls);
+    replib_data_free(&S);
+    if (rc == 0) {
+        struct replib_opts of = *o;
+        of.sample = 0; of.init_labels = l0; of.restarts = 1; of.search = o->search;
+        rc = learn_run(D, &of, res, NULL);
+    }
+    free(l0);
+    if (rc == 0) {
+        res->restarts = rs.restarts;
+        res->best_restart = rs.best_restart;
+        res->iterations += rs.iterations;
+        res->accepted += rs.accepted;
+        res->label_seconds += rs.label_seconds;
+        res->sampled = m;
+        res->sample_energy = rs.energy;
+        res->seconds = wall() - t0;
+    }
+    replib_result_free(&rs);
+    return rc;
+}
+
+int replib_learn(const struct replib_data *D, const struct replib_opts *o, struct replib_result *res)
+{
+    /* sampled when the sample is smaller and its rows are few enough to copy */
+    int m = o->sample > 0 ? (o->sample / REPLIB_SAMPLE_BLOCK > 0 ? o->sample / REPLIB_SAMPLE_BLOCK : 1) * REPLIB_SAMPLE_BLOCK : 0;
+    if (m > 0 && D->n > m && D->n > o->sample && !D->K && D->Z && !o->init_labels && o->d - D->nfix <= m &&
+        (double)(m + D->nfix) * D->zdim * sizeof(double) <= REPLIB_SAMPLE_MAX_BYTES)
+        return learn_sampled(D, o, res);
+    return learn_run(D, o, res, NULL);
 }
 
 void replib_result_free(struct replib_result *res)

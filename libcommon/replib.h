@@ -38,6 +38,7 @@ extern "C" {
 #endif
 
 #define REPLIB_KEEP_CHUNK 64      /* frames per base of the kept 32-bit frames */
+#define REPLIB_SAMPLE_BLOCK 64    /* consecutive frames per block of a sample (replib_opts.sample) */
 
 enum replib_method { REPLIB_DP = 0, REPLIB_EXPANSION = 1, REPLIB_SWAP = 2 };
 
@@ -139,6 +140,14 @@ struct replib_opts {
                                    point of the exact label step.  On reduced coordinates
                                    (direct back end) a step that changes few labels updates
                                    the library and P incrementally (replib.c) */
+    int sample;                 /* > 0: when the frames exceed this many (direct back end: reduced
+                                   coordinates, e.g. the sketch, or rows that copy within 512 MB),
+                                   the restarts and the search run on a sample of about this many
+                                   frames, blocks of REPLIB_SAMPLE_BLOCK consecutive frames spread
+                                   evenly over the animation, each block its own clip; the best
+                                   library labels all frames (exact label step) and one restart
+                                   on all frames from those labels (descent and search) follows,
+                                   instead of o->restarts on all frames.  0: off */
     int threads;                /* restarts run in parallel on this many threads (0: one per core);
                                    the result does not depend on it */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
@@ -155,6 +164,8 @@ struct replib_result {
     int accepted;               /* split/merge trials kept, over all restarts */
     double seconds;             /* wall time of replib_learn (excl. prepare) */
     double label_seconds;       /* of which in label steps */
+    int sampled;                /* frames of the sample (o->sample), 0 if all frames were searched */
+    double sample_energy;       /* the sample's best energy (on its frames), if sampled */
 };
 
 /* Block coordinate descent with restarts, run on o->threads threads (BLAS

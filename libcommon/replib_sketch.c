@@ -1,5 +1,6 @@
 /* replib_sketch.c -- one-pass low-rank sketch of an animation (see replib_sketch.h). */
 #include "replib_sketch.h"
+#include "big_alloc.h"
 #include "cm_error.h"
 #include "rng.h"
 #include <cblas.h>
@@ -318,8 +319,9 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
             void *nx = S->Xk;
             if (f == S->xcap) {
                 size_t nc = S->xcap ? 2 * (size_t)S->xcap : 256, lim = S->keep_bytes / ((size_t)m3 * 4);
+                if (!S->xcap && S->expect > 0) nc = (size_t)S->expect;
                 if (nc > lim) nc = lim;
-                nx = realloc(S->Xk, nc * m3 * 4);
+                nx = S->xcap ? realloc(S->Xk, nc * m3 * 4) : big_alloc(nc * m3 * 4);
                 if (nx) S->xcap = (int)nc;
             }
             if (!nx) { free(S->Xk); S->Xk = NULL; S->keeping = 0; }

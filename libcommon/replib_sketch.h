@@ -62,6 +62,8 @@ struct replib_sketch {
     double *zb;                 /* 64 by 3#V batch */
     double *zprev;              /* 3 by 3#V scratch (keep_chunk) */
     int nb, cap, xcap;
+    int expect;                 /* frames announced (0: unknown; set before the first add): the
+                                   kept frames are then allocated once, on huge pages */
     uint64_t seed;
     double zn;                  /* |Z|_F^2 */
     double float_err;           /* max |kept(x - x_0) - (x - x_0)| over kept frames (model units) */

@@ -47,6 +47,13 @@ test_expect_success 'read once from a pipe: same bytes as from the file' '
 	cat head.mesh | dict-learn -d 8 --stream on >pipe.lib &&
 	test_cmp file.lib pipe.lib
 '
+test_expect_success 'more frames announced than --memory keeps: none kept, same bytes as a "frames ?" stream that fills the budget and drops it' '
+	sed "s/^frames 200\$/frames ?/" head.mesh >unknown.mesh && grep "^frames ?\$" unknown.mesh &&
+	dict-learn -v -d 12 --stream on --memory 2 head.mesh 2>a.log >ann.lib &&
+	dict-learn -v -d 12 --stream on --memory 2 unknown.mesh 2>u.log >unk.lib &&
+	grep "frames not kept (pieces from the sketch)" a.log && grep "frames not kept" u.log &&
+	test_cmp unk.lib ann.lib
+'
 test_expect_success 'auto switches to the sketch past 512 MB only (small input: in memory, same bytes)' '
 	dict-learn -d 8 head.mesh >auto.lib && dict-learn -d 8 --stream off head.mesh >off8.lib &&
 	test_cmp auto.lib off8.lib

@@ -23,6 +23,10 @@
 #include <string.h>
 #include <time.h>
 
+#define DEFAULT_SAMPLE 16384    /* --sample */
+#define STR_(x) #x
+#define STR(x) STR_(x)
+
 static const char help[] =
 "Usage: dict-learn [options] [FILE]\n"
 "Learn a replacement library of D pieces and per-frame labels for one part's\n"
@@ -69,6 +73,9 @@ static const char help[] =
 "      --rank K           sketch size (default 128)\n"
 "      --memory MB        budget for the 32-bit frames (default 4096);\n"
 "                         beyond it pieces come from the sketch (approximate)\n"
+"      --sample N         past N frames (default " STR(DEFAULT_SAMPLE) "), restarts and search\n"
+"                         run on a sample of N frames (blocks of 64), then one\n"
+"                         descent on all frames; 0 = search all frames\n"
 "      --threads N        restarts run on N threads (default 0: one per core);\n"
 "                         the result does not depend on N\n"
 "  -o, --output FILE      write the library to FILE instead of stdout\n"
@@ -84,7 +91,7 @@ struct options {
     const char *input, *weights, *fixed, *init_labels, *labels_out, *report, *output, *sweep;
     double swap_cost, *swap_sweep;
     int nswap;
-    int d, restarts, iterations, raw, gram, threads, search, stream, rank;
+    int d, restarts, iterations, raw, gram, threads, search, stream, rank, sample;
     double memory;
     enum replib_start start;
     double lambda, max_error;
@@ -99,12 +106,13 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"iterations", 1, 0, 'i'}, {"seed", 1, 0, 'S'}, {"weights", 1, 0, 'w'},
         {"fixed", 1, 0, 'F'}, {"method", 1, 0, 'm'}, {"init-labels", 1, 0, 'I'},
         {"labels-out", 1, 0, 'L'}, {"swap-cost", 1, 0, 'c'}, {"swap-sweep", 1, 0, 'Z'}, {"report", 1, 0, 'P'}, {"max-error", 1, 0, 'E'},
-        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"threads", 1, 0, 'T'}, {"start", 1, 0, 's'}, {"stream", 1, 0, 'y'}, {"rank", 1, 0, 'k'}, {"memory", 1, 0, 'M'}, {"search", 1, 0, 'X'}, {"output", 1, 0, 'o'},
+        {"sweep", 1, 0, 'W'}, {"gram", 1, 0, 'G'}, {"threads", 1, 0, 'T'}, {"start", 1, 0, 's'}, {"stream", 1, 0, 'y'}, {"rank", 1, 0, 'k'}, {"memory", 1, 0, 'M'}, {"search", 1, 0, 'X'}, {"sample", 1, 0, 'A'}, {"output", 1, 0, 'o'},
         {"raw", 0, 0, 'R'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->d = 20; o->lambda = 2; o->restarts = 5; o->iterations = 50; o->seed = 1;
     o->gram = -1; o->max_error = -1; o->search = -1; o->stream = -1; o->rank = 128; o->memory = 4096;
+    o->sample = DEFAULT_SAMPLE;
     int c;
     while ((c = getopt_long(argc, argv, "d:l:r:i:w:m:c:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -150,6 +158,9 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'X': o->search = arg_int(optarg, "--search");
             if (o->search < 0) usage_error("--search must be >= 0");
+            break;
+        case 'A': o->sample = arg_int(optarg, "--sample");
+            if (o->sample < 0) usage_error("--sample must be >= 0");
             break;
         case 'y':
             if (!strcmp(optarg, "auto")) o->stream = -1;
@@ -202,6 +213,7 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     ro.seed = (uint64_t)o->seed; ro.method = o->method; ro.init_labels = init; ro.tol = 1e-10;
     ro.threads = o->threads;
     ro.start = o->start; ro.search = o->search >= 0 ? o->search : 10 + d / 5;
+    ro.sample = o->sample;
     ro.log = log_iter;
     if (replib_learn(D, &ro, &run->res) < 0) die("%s", cm_errmsg());
     if (D->X)
@@ -222,6 +234,9 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
         run->rep.worst_frame = -1;
     }
     const struct replib_result *r = &run->res;
+    if (r->sampled)
+        info(1, "d %d: restarts and search on a sample of %d frames (%d blocks of %d; energy %.10g there), then one restart on all %d frames",
+             d, r->sampled, r->sampled / REPLIB_SAMPLE_BLOCK, REPLIB_SAMPLE_BLOCK, r->sample_energy, r->n);
     info(1, "d %d: energy %.10g (data %.6g, velocity %.6g), mean error %.6g, max error %.6g",
          d, run->rep.energy, run->rep.data, run->rep.velocity, run->rep.mean_err, run->rep.max_err);
     info(1, "d %d: %d restarts, %d iterations, %d split/merge moves kept, %.4f s per iteration (labels %.4f s), best restart %d, %.3f s",
@@ -265,6 +280,10 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
     if (o->weights && columns_read(o->weights, 1, m->nv, "vertices", wc) < 0) die("%s", cm_errmsg());
     size_t fb = sizeof(double) * 3 * (size_t)m->nv;
     size_t lim = o->stream == 0 ? (size_t)-1 : o->stream == 1 ? 0 : (size_t)512 << 20;
+    /* frames announced past the limit: to the sketch from the first frame
+     * (buffering 512 MB first and feeding them to it gives the same bytes,
+     * at the cost of a copy and a page fault per 4 KB) */
+    if (r.nframes > 0 && (double)r.nframes * fb > (double)lim) lim = 0;
     int cap = 0, sk = 0, rc, cut;
     /* frames parsed on a second thread while this one sketches or stores */
     struct mesh_prefetch pf;
@@ -273,10 +292,15 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
     while ((rc = mesh_prefetch_next(&pf, &x, &cut)) == 1) {
         int f = m->nframes;
         if (!sk && (size_t)(f + 1) * fb > lim) {
-            /* switch to the sketch: feed it what was buffered */
-            if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL,
-                                   (size_t)(o->memory * 1048576.0), (uint64_t)o->seed) < 0)
+            /* switch to the sketch: feed it what was buffered.  When the
+             * header announces more frames than --memory keeps, none are
+             * kept (they would be dropped at the budget anyway: the same
+             * result, without filling and freeing the budget) */
+            size_t keep = (size_t)(o->memory * 1048576.0);
+            if (r.nframes > 0 && (double)r.nframes * 12 * m->nv > o->memory * 1048576.0) keep = 0;
+            if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
                 die("%s", cm_errmsg());
+            S->expect = r.nframes > 0 ? r.nframes : 0;
             for (int g = 0; g < f; g++)
                 if (replib_sketch_add(S, m->V + (size_t)g * 3 * m->nv, m->cut[g]) < 0)
                     die("cannot read '%s': %s", r.name, cm_errmsg());
