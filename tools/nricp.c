@@ -75,6 +75,9 @@ static const char help[] =
 "      --untangle R      after the fit, smooth out the pleats where the target's\n"
 "                        skin folds (faces on the target but turned over) on the\n"
 "                        target, with R rings around them (default 1; 0: off)\n"
+"      --fit-release R   the ARAP fit's vertices released at folds keep their place\n"
+"                        (stay), take their neighbours' mean (mean: irons flaps of\n"
+"                        surplus skin flat), or both, the better score kept (default)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -543,7 +546,9 @@ int main(int argc, char **argv)
         } else
             cand[nc++] = o.start;
         /* the ARAP fit's released vertices: kept in place, pulled to their
-         * neighbours' mean, or both tried (--fit-release) */
+         * neighbours' mean, or both tried (--fit-release both: the mean
+         * only where keeping the place ends with more than START_FLIPS
+         * flipped faces) */
         int nrel = o.fit_release == 2 && o.p.fit > 0 ? 2 : 1;
         double best = INFINITY;
         int bestc = -1, bestn = 0, bfl = 0, bestr = 0, bestv = 0;
@@ -587,6 +592,8 @@ int main(int argc, char **argv)
                     bh = h;
                     bfl = fl;
                 }
+                /* the neighbours' mean only where keeping the place left folds */
+                if (nrel == 2 && v == 0 && fl <= START_FLIPS) rv++;
             }
             free(VS);
             if (cand[c] == START_NONE && bh <= START_ACCEPT && bfl <= START_FLIPS) break;
