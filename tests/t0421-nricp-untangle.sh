@@ -1,12 +1,11 @@
 #!/bin/sh
 test_description='nricp --untangle: the pleats in the skin folds of the camel scans smoothed out on the target'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/estop-lib.sh"
 need_shared_data scans/camel-gallop-04.off
 
 test_expect_success 'setup: clean scans 03 and 04' '
-	for k in 03 04; do
-		mesh-import "$SHARED_DATA/scans/camel-gallop-$k.off" | mesh-clean >c$k.mesh 2>/dev/null || return 1
-	done
+	camel_scans 03 04
 '
 # measured (thin-shell start): 0.92% of the diagonal, 14 flipped faces
 # without untangling, 8 with it; the Hausdorff distance the same

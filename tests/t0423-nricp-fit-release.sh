@@ -1,12 +1,11 @@
 #!/bin/sh
 test_description='nricp --fit-release: folded vertices pulled to their neighbours mean iron out the flaps of far camel pairs'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/estop-lib.sh"
 need_shared_data scans/camel-gallop-04.off
 
 test_expect_success 'setup: clean scans 01 and 04' '
-	for k in 01 04; do
-		mesh-import "$SHARED_DATA/scans/camel-gallop-$k.off" | mesh-clean >c$k.mesh 2>/dev/null || return 1
-	done
+	camel_scans 01 04
 '
 # measured (thin-shell start, the start --start auto keeps here): released
 # vertices kept in place (the earlier fit) 1.46% of the diagonal with 129
