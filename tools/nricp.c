@@ -77,7 +77,8 @@ static const char help[] =
 "                        target, with R rings around them (default 1; 0: off)\n"
 "      --fit-release R   the ARAP fit's vertices released at folds keep their place\n"
 "                        (stay), take their neighbours' mean (mean: irons flaps of\n"
-"                        surplus skin flat), or both, the better score kept (default)\n"
+"                        surplus skin flat), or both (default): the mean too where\n"
+"                        stay leaves more than 10 flipped faces, the better kept\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -548,7 +549,7 @@ int main(int argc, char **argv)
         /* the ARAP fit's released vertices: kept in place, pulled to their
          * neighbours' mean, or both tried (--fit-release both: the mean
          * only where keeping the place ends with more than START_FLIPS
-         * flipped faces) */
+         * flipped faces, within twice the best Hausdorff distance so far) */
         int nrel = o.fit_release == 2 && o.p.fit > 0 ? 2 : 1;
         double best = INFINITY;
         int bestc = -1, bestn = 0, bfl = 0, bestr = 0, bestv = 0;
@@ -592,8 +593,9 @@ int main(int argc, char **argv)
                     bh = h;
                     bfl = fl;
                 }
-                /* the neighbours' mean only where keeping the place left folds */
-                if (nrel == 2 && v == 0 && fl <= START_FLIPS) rv++;
+                /* the neighbours' mean only where keeping the place left folds,
+                 * and not at a start already twice as far as the best one */
+                if (nrel == 2 && v == 0 && (fl <= START_FLIPS || h > 2 * bh)) rv++;
             }
             free(VS);
             if (cand[c] == START_NONE && bh <= START_ACCEPT && bfl <= START_FLIPS) break;
