@@ -46,6 +46,7 @@ void arap_fit_defaults(struct arap_fit_params *p)
     p->rest_smooth = 1;
     p->plane = 0.9;
     p->levels = 6;
+    p->release_mean = 0;
 }
 
 /* the matrix L + mu I (upper triangle), L the edge graph Laplacian */
@@ -156,10 +157,19 @@ int arap_fit(const double *R0, const int *F, int nv, int nf,
         }
         /* every vertex ends with one goal of weight mu (the matrix stays
          * L + mu I): the weighted mean of its goals, or its own position
-         * when it has none (rejected, released) */
-        for (int i = 0; i < nv; i++)
+         * when it has none (rejected, released); with release_mean a
+         * released vertex the mean of its neighbours instead */
+        for (int i = 0; i < nv; i++) {
+            if (p->release_mean && loose[i] && !iso[i] && !(Gw[i] > 0)) {
+                double a[3] = {0, 0, 0}, w = 1.0 / (ts.VVs[i + 1] - ts.VVs[i]);
+                for (int q = ts.VVs[i]; q < ts.VVs[i + 1]; q++)
+                    for (int d = 0; d < 3; d++) a[d] += P[3 * ts.VV[q] + d];
+                for (int d = 0; d < 3; d++) G[3 * i + d] = a[d] * w;
+                continue;
+            }
             for (int d = 0; d < 3; d++)
                 G[3 * i + d] = Gw[i] > 0 ? G[3 * i + d] / Gw[i] : P[3 * i + d];
+        }
         for (int it = 0; it < p->inner; it++) {
             /* local step: the rotation of every one-ring, rest -> pose */
             arap_ring_rotations(&ts, R, P, nv, Rot);

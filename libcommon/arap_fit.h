@@ -21,7 +21,8 @@
  *   - for every target vertex t whose closest point c on the current mesh
  *     lies in a face with corner i (barycentric b_i): p_i + (t - c), weight
  *     backward * b_i * #V / #T (coverage: every part of the target pulls);
- *   - its own position when it has neither, or when it was released.
+ *   - its own position when it has neither, or when it was released
+ *     (release_mean: the mean of its neighbours' positions when released).
  * So every vertex has one goal of weight mu and the matrix is L + mu I, L
  * the graph Laplacian of the edges: CHOLMOD factors it once per data weight
  * (levels of them, mu_min .. mu_max geometrically: first the shape, then
@@ -61,6 +62,11 @@ struct arap_fit_params {
                            triangles, knife-edge rims) that the target does not share */
     int release_rings;  /* folded faces free their vertices and this many rings around
                            them from the data terms for the next iteration (default 1) */
+    int release_mean;   /* 0: a released vertex keeps its own place as its goal (default);
+                           1: the mean of its neighbours (a membrane): a flap of surplus
+                           skin folded off the target is ironed flat instead of held where
+                           it is, but a folded thin tip may be pulled in (nricp
+                           --fit-release tries both) */
 };
 
 void arap_fit_defaults(struct arap_fit_params *p);

@@ -34,6 +34,7 @@ void nricp_defaults(struct nricp_params *p)
     p->rigid = 0;
     p->rigid_iters = 4;
     p->untangle = 1;
+    p->fit_release = 0;
 }
 
 /* right-hand side of the ARAP edge rows: w ([v_i 1] X_i - [v_j 1] X_j)
@@ -348,6 +349,7 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
         ap.max_dist = p->max_dist;
         ap.search = p->search;
         ap.rest_smooth = p->fit_smooth;
+        ap.release_mean = p->fit_release;
         int frc = arap_fit(RS ? RS : VS, FS, nvs, nfs, VT, FT, nvt, nft, TT, &ap, P, cb ? fit_step : NULL, &fc);
         if (frc < 0) goto done;
     }

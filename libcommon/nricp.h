@@ -74,6 +74,9 @@ struct nricp_params {
                               flipped against it, mesh-metrics' test) are smoothed out on the
                               target, with this many rings around them (nricp_untangle.h;
                               default 1; 0: off) */
+    int fit_release;       /* the ARAP fit's released vertices (folded faces and a ring
+                              around them): 0 keep their place as goal (default), 1 the
+                              mean of their neighbours (arap_fit_params.release_mean) */
     int rigid_iters;       /* local/global iterations of that term per correspondence
                               update (rotations refitted, same factorization; default 4) */
 };

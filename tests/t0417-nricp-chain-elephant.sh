@@ -19,7 +19,9 @@ truth_err() {
 # the previous registered one with its own rest shape, the old recipe: 2.40,
 # 2.10, 3.06, 4.01%); with untangling 2.19, 1.43, 2.00, 2.26%.  The default
 # --chain-rest both keeps SOURCE as the rest shape on every key here (the
-# same keys, nricp(1)) for 1.7 times the CPU, so this test names first
+# same keys, nricp(1)) for 1.7 times the CPU, so this test names first; with
+# --fit-release both (the default since) 2.18, 1.55, 2.14, 2.16% (the last
+# key 0.99 times the first), 118 s CPU against 80 s
 test_expect_success 'the last key is within 1.2 times the first key from its truth' '
 	nricp --chain --chain-rest first e0000.mesh r0040.mesh r0080.mesh r0120.mesh r0160.mesh >keys.mesh &&
 	anim-slice -f 1 keys.mesh >k1.mesh && anim-slice -f 4 keys.mesh >k4.mesh &&

@@ -1,12 +1,11 @@
 #!/bin/sh
 test_description='nricp --chain on the camel scans 01-05 without landmark files: every key close, few flipped faces'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/estop-lib.sh"
 need_shared_data scans/camel-gallop-05.off
 
 test_expect_success 'setup: clean scans 01-05' '
-	for k in 01 02 03 04 05; do
-		mesh-import "$SHARED_DATA/scans/camel-gallop-$k.off" | mesh-clean >c$k.mesh 2>/dev/null || return 1
-	done
+	camel_scans 01 02 03 04 05
 '
 # measured (shared machine): 0.34, 0.60, 0.58, 0.93% of the diagonal with 0,
 # 10, 4, 5 flipped faces, the previous key kept as the rest shape every time;

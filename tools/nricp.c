@@ -75,6 +75,10 @@ static const char help[] =
 "      --untangle R      after the fit, smooth out the pleats where the target's\n"
 "                        skin folds (faces on the target but turned over) on the\n"
 "                        target, with R rings around them (default 1; 0: off)\n"
+"      --fit-release R   the ARAP fit's vertices released at folds keep their place\n"
+"                        (stay), take their neighbours' mean (mean: irons flaps of\n"
+"                        surplus skin flat), or both (default): the mean too where\n"
+"                        stay leaves more than 10 flipped faces, the better kept\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -126,6 +130,7 @@ struct options {
     int start;             /* START_* */
     int start_given;       /* --start on the command line */
     int paper;             /* --paper: the thesis' method */
+    int fit_release;       /* 0 stay, 1 mean, 2 both (nricp_params.fit_release per run) */
     struct nricp_params p;
 };
 
@@ -134,14 +139,14 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN, O_UNTANGLE };
+           O_RIGIDN, O_UNTANGLE, O_FITREL };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
-        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE},
+        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"fit-release", 1, 0, O_FITREL},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
@@ -150,6 +155,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     memset(o, 0, sizeof *o);
     nricp_defaults(&o->p);
     o->align = "rigid";
+    o->fit_release = 2;
     int c;
     while ((c = getopt_long(argc, argv, "l:k:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -178,6 +184,12 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_PAPER: o->paper = 1; break;
         case O_RIGID: o->p.rigid = arg_double(optarg, "--rigid"); break;
         case O_UNTANGLE: o->p.untangle = arg_int(optarg, "--untangle"); break;
+        case O_FITREL:
+            if (!strcmp(optarg, "stay")) o->fit_release = 0;
+            else if (!strcmp(optarg, "mean")) o->fit_release = 1;
+            else if (!strcmp(optarg, "both")) o->fit_release = 2;
+            else usage_error("--fit-release must be stay, mean or both");
+            break;
         case O_RIGIDN: o->p.rigid_iters = arg_int(optarg, "--rigid-iters"); break;
         case O_REST: o->rest = optarg; break;
         case O_CREST:
@@ -381,11 +393,11 @@ static void measure(const double *X, const struct mesh *S, const struct mesh *T,
     closest_point_tree_free(TT);
 }
 
-/* one key: align SOURCE's pose START (#V by 3) on the landmarks L, the clay
- * start, NRICP with the ARAP fit relative to REST (NULL: START); X (out) */
-static void register_key(const struct options *op, const struct mesh *S, const double *start,
-                         const double *rest, const struct mesh *T,
-                         const struct landmarks *Lp, struct steps *st, double *X)
+/* the start of one key: SOURCE's pose START (#V by 3) aligned on the
+ * landmarks L, then the clay start toward them (o.init_deform); returns it
+ * (#V by 3, malloc'd) */
+static double *key_start(const struct options *op, const struct mesh *S, const double *start,
+                         const struct landmarks *Lp)
 {
     const struct options o = *op;
     const struct landmarks L = *Lp;
@@ -448,17 +460,25 @@ static void register_key(const struct options *op, const struct mesh *S, const d
         thin_shell_free(sh);
         free(X0); free(TL); free(k);
     }
-    st->t0 = t0;
+    return VS;
+}
+
+/* one key from its start VS (key_start): NRICP with the ARAP fit relative
+ * to REST (NULL: VS) toward T and the landmarks L; X (out, #V by 3) */
+static void key_register(const struct options *o, const struct mesh *S, const double *VS,
+                         const double *rest, const struct mesh *T, const struct landmarks *L,
+                         struct steps *st, double *X)
+{
+    st->t0 = now_seconds();
     if (st->frames) {
         memcpy(st->frames, VS, (size_t)S->nv * 3 * sizeof *VS);
         st->n = 1;
     }
-    progress_start(&st->pr, progname, o.p.steps);
-    if (nricp_register(VS, rest, S->F, S->nv, S->nf, T->V, T->F, T->nv, T->nf, L.src, L.P, L.n,
-                       &o.p, X, on_step, st) < 0)
+    progress_start(&st->pr, progname, o->p.steps);
+    if (nricp_register(VS, rest, S->F, S->nv, S->nf, T->V, T->F, T->nv, T->nf, L->src, L->P, L->n,
+                       &o->p, X, on_step, st) < 0)
         die("%s", cm_errmsg());
     progress_end(&st->pr);
-    free(VS);
 }
 
 int main(int argc, char **argv)
@@ -526,48 +546,64 @@ int main(int argc, char **argv)
             if (have_lm) cand[nc++] = START_SHELL;     /* only if neither ends well */
         } else
             cand[nc++] = o.start;
+        /* the ARAP fit's released vertices: kept in place, pulled to their
+         * neighbours' mean, or both tried (--fit-release both: the mean
+         * only where keeping the place ends with more than START_FLIPS
+         * flipped faces, within twice the best Hausdorff distance so far) */
+        int nrel = o.fit_release == 2 && o.p.fit > 0 ? 2 : 1;
         double best = INFINITY;
-        int bestc = -1, bestn = 0, bfl = 0, bestr = 0;
+        int bestc = -1, bestn = 0, bfl = 0, bestr = 0, bestv = 0;
         double bh = 0;
-        for (int cr = 0; cr < nc * nrest; cr++) {
-            int c = cr / nrest;
-            const double *rest = cr % nrest ? NULL : rest_first;
+        for (int c = 0; c < nc; c++) {
             struct options oc = o;
             struct landmarks none = {0};
+            const struct landmarks *Lc = cand[c] == START_NONE ? &none : &L;
             if (cand[c] == START_SHELL) oc.init_deform = oc.init_shell = 1;
             if (cand[c] == START_NONE) oc.init_deform = 0;
             double t0 = now_seconds();
-            register_key(&oc, &S, start, rest, &T[k], cand[c] == START_NONE ? &none : &L,
-                         &st, Xc);
-            double dt = now_seconds() - t0;
-            double h = 0, str = 0;
-            int fl = 0;
-            if (verbose || nc * nrest > 1) {
-                measure(Xc, &S, &T[k], &h, &fl);
-                str = nricp_stretch(S.V, Xc, S.F, S.nf);
-                info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), "
-                     "%d flipped faces, edge stretch %.3f (start %s%s)", o.chain ? o.targets[k] : "",
-                     o.chain ? ": " : "", dt, h * bbox_diagonal(T[k].V, T[k].nv), 100 * h, fl, str,
-                     start_name[cand[c]], nrest == 2 ? rest ? ", rest first" : ", rest previous" : "");
+            double *VS = key_start(&oc, &S, start, Lc);
+            for (int rv = 0; rv < nrest * nrel; rv++) {
+                int r = rv / nrel, v = rv % nrel;
+                const double *rest = r ? NULL : rest_first;
+                oc.p.fit_release = nrel == 2 ? v : o.fit_release;
+                if (rv > 0) t0 = now_seconds();
+                key_register(&oc, &S, VS, rest, &T[k], Lc, &st, Xc);
+                double dt = now_seconds() - t0;
+                double h = 0, str = 0;
+                int fl = 0;
+                if (verbose || nc * nrest * nrel > 1) {
+                    measure(Xc, &S, &T[k], &h, &fl);
+                    str = nricp_stretch(S.V, Xc, S.F, S.nf);
+                    info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), "
+                         "%d flipped faces, edge stretch %.3f (start %s%s%s)",
+                         o.chain ? o.targets[k] : "", o.chain ? ": " : "", dt,
+                         h * bbox_diagonal(T[k].V, T[k].nv), 100 * h, fl, str, start_name[cand[c]],
+                         nrest == 2 ? rest ? ", rest first" : ", rest previous" : "",
+                         nrel == 2 ? v ? ", fit release mean" : ", fit release stay" : "");
+                }
+                double score = h + START_FLIP_COST * fl + START_STRETCH_COST * str;
+                if (score < best) {
+                    best = score;
+                    bestc = cand[c];
+                    bestr = r;
+                    bestv = v;
+                    memcpy(X, Xc, (size_t)S.nv * 3 * sizeof *X);
+                    if (Fc) memcpy(Fc, st.frames, (size_t)st.n * S.nv * 3 * sizeof *Fc);
+                    bestn = st.n;
+                    bh = h;
+                    bfl = fl;
+                }
+                /* the neighbours' mean only where keeping the place left folds,
+                 * and not at a start already twice as far as the best one */
+                if (nrel == 2 && v == 0 && (fl <= START_FLIPS || h > 2 * bh)) rv++;
             }
-            double score = h + START_FLIP_COST * fl + START_STRETCH_COST * str;
-            if (score < best) {
-                best = score;
-                bestc = cand[c];
-                bestr = cr % nrest;
-                memcpy(X, Xc, (size_t)S.nv * 3 * sizeof *X);
-                if (Fc) memcpy(Fc, st.frames, (size_t)st.n * S.nv * 3 * sizeof *Fc);
-                bestn = st.n;
-                bh = h;
-                bfl = fl;
-            }
-            if (cand[c] == START_NONE && cr % nrest == nrest - 1 && bh <= START_ACCEPT &&
-                bfl <= START_FLIPS)
-                break;
+            free(VS);
+            if (cand[c] == START_NONE && bh <= START_ACCEPT && bfl <= START_FLIPS) break;
         }
-        if (nc * nrest > 1)
-            info(1, "%s%skept start %s%s", o.chain ? o.targets[k] : "", o.chain ? ": " : "",
-                 start_name[bestc], nrest == 2 ? bestr ? ", rest previous" : ", rest first" : "");
+        if (nc * nrest * nrel > 1)
+            info(1, "%s%skept start %s%s%s", o.chain ? o.targets[k] : "", o.chain ? ": " : "",
+                 start_name[bestc], nrest == 2 ? bestr ? ", rest previous" : ", rest first" : "",
+                 nrel == 2 ? bestv ? ", fit release mean" : ", fit release stay" : "");
         if (Fc) {
             memcpy(st.frames, Fc, (size_t)bestn * S.nv * 3 * sizeof *Fc);
             st.n = bestn;
