@@ -4,14 +4,14 @@
 #include "tap.h"
 #include <string.h>
 
-struct ctx { int count[100]; long value[100]; };
+struct ctx { int count[100]; unsigned long value[100]; };
 
 static void job(void *p, int i)
 {
     struct ctx *c = p;
     c->count[i]++;
-    long x = i;
-    for (int k = 0; k < 1000; k++) x = (x * 6364136223846793005L + 1442695040888963407L) >> 1;
+    unsigned long x = (unsigned long)i;
+    for (int k = 0; k < 1000; k++) x = (x * 6364136223846793005UL + 1442695040888963407UL) >> 1;
     c->value[i] = x;
 }
 
