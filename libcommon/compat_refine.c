@@ -1144,160 +1144,221 @@ static double face_stretch(const struct compat *c, int f)
     return worst;
 }
 
-int compat_refine(struct compat *c, const struct compat_refine_params *pa, struct compat_refine_stats *st)
+/* the state of one refinement between rounds (compat_refine_begin) */
+struct compat_refiner {
+    struct compat *c;
+    struct compat_refine_params pa;
+    struct compat_refine_stats *st, own;
+    struct snapshot snap;     /* the input, kept if refinement made it worse */
+    struct best best;         /* the round with the best worst angle */
+    struct work w;
+    double q0;                /* the input's worst angle (sine) */
+    double wbest, wcur;       /* best and last worst ratio to the goal */
+    int nb0, nv0;             /* the input's boundary and vertex counts */
+    int full;                 /* 1 until the first round: smooth everything */
+    int remesh;               /* pa.mips > 0: collapses, stall rule, best round */
+    int nvin;                 /* vertices below it are the input's */
+    int stall, wf, ws, capped, nbad, nbest;
+    int done;                 /* 1 once the splitting stopped (st->stop) */
+    unsigned char *seed;
+    unsigned long long *sig;
+};
+
+static void refiner_free(struct compat_refiner *r)
 {
-    double goal = pa->goal;
-    int rounds = pa->rounds, max_nv = pa->max_nv;
-    struct compat_refine_stats z;
-    if (!st) st = &z;
-    memset(st, 0, sizeof *st);
-    struct snapshot snap;
-    memset(&snap, 0, sizeof snap);
-    struct best best;
-    memset(&best, 0, sizeof best);
-    double q0 = compat_min_angle(c, NULL);
-    struct work w = {c, NULL, NULL, NULL, NULL, NULL, NULL, 0, 0};
-    int nb0 = c->nb, nv0 = c->nv, rc = -1;
-    unsigned char *seed = NULL;
-    unsigned long long *sig = NULL;
-    w.diag = malloc(c->N * sizeof *w.diag);
-    if (!w.diag) { cm_seterr("out of memory"); goto out; }
+    struct work *w = &r->w;
+    snap_free(r->c->N, &r->snap);
+    best_free(r->c->N, &r->best);
+    free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->id); free(w->sig);
+    free(r->sig); free(r->seed);
+    free(r);
+}
+
+struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat_refine_params *pa,
+                                           struct compat_refine_stats *st)
+{
+    struct compat_refiner *r = calloc(1, sizeof *r);
+    if (!r) { cm_seterr("out of memory"); return NULL; }
+    r->c = c;
+    r->pa = *pa;
+    r->st = st ? st : &r->own;
+    memset(r->st, 0, sizeof *r->st);
+    r->q0 = compat_min_angle(c, NULL);
+    r->w = (struct work){c, NULL, NULL, NULL, NULL, NULL, NULL, 0, 0};
+    r->nb0 = c->nb;
+    r->nv0 = c->nv;
+    struct work *w = &r->w;
+    w->diag = malloc(c->N * sizeof *w->diag);
+    if (!w->diag) { cm_seterr("out of memory"); goto fail; }
     for (int s = 0; s < c->N; s++) {
         double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
         for (int v = 0; v < c->nb; v++)
             for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], c->X[s][2 * v + d]); hi[d] = fmax(hi[d], c->X[s][2 * v + d]); }
-        w.diag[s] = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+        w->diag[s] = hypot(hi[0] - lo[0], hi[1] - lo[1]);
     }
-    if (snap_take(c, &snap) < 0 || grow_v(&w, c->nv) < 0) goto out;
+    if (snap_take(c, &r->snap) < 0 || grow_v(w, c->nv) < 0) goto fail;
     /* boundary flags and successors from the faces */
-    memset(w.bnd, 0, c->nv);
+    memset(w->bnd, 0, c->nv);
     for (int v = 0; v < c->nv; v++) {
-        w.bsucc[v] = w.seg[2 * v] = w.seg[2 * v + 1] = -1;
-        w.id[v] = v;
-        w.sig[v] = 0;
+        w->bsucc[v] = w->seg[2 * v] = w->seg[2 * v + 1] = -1;
+        w->id[v] = v;
+        w->sig[v] = 0;
     }
-    w.nextid = c->nv;
+    w->nextid = c->nv;
     {
         struct topology t;
-        if (topology_build(c->F, c->nf, c->nv, &t) < 0) goto out;
+        if (topology_build(c->F, c->nf, c->nv, &t) < 0) goto fail;
         for (int e = 0; e < t.ne; e++) {
             if (t.EFn[e] != 1) continue;
             int a = t.E[2 * e], b = t.E[2 * e + 1], f = t.EF[2 * e];
             if (!runs(c->F, f, a, b)) { int x = a; a = b; b = x; }
-            w.bnd[a] = w.bnd[b] = 1;
-            w.bsucc[a] = b;
+            w->bnd[a] = w->bnd[b] = 1;
+            w->bsucc[a] = b;
         }
         topology_free(&t);
         /* interior correspondence points (compat_holes) never move either */
-        for (int v = 0; v < c->nb; v++) w.bnd[v] = 1;
+        for (int v = 0; v < c->nb; v++) w->bnd[v] = 1;
     }
     /* after the first round only what splits, flips and collapses changed
      * is smoothed (seed: vertices whose star signature differs from w.sig,
      * taken after the last smoothing; new vertices) */
-    int full = 1, remesh = pa->mips > 0;
-    int nvin = nv0;   /* vertices below it: the input's (collapses lower it) */
-    if (remesh) {
-        int k = collapse_all(&w, goal, 0, INT_MAX, &nvin);
-        if (k < 0) goto out;
-        st->collapses = k;
+    r->full = 1;
+    r->remesh = pa->mips > 0;
+    r->nvin = r->nv0;
+    if (r->remesh) {
+        int k = collapse_all(w, pa->goal, 0, INT_MAX, &r->nvin);
+        if (k < 0) goto fail;
+        r->st->collapses = k;
     }
-    double wbest = -1, wcur = -1;
-    int stall = 0, wf = 0, ws = 0, capped = 0, nbad = 0, nbest = INT_MAX;
-    st->stop = COMPAT_REFINE_ROUNDS;
-    for (int r = 0; r < rounds; r++) {
-        st->rounds++;
-        if (flips_until_done(c, &st->flips) < 0) goto out;
-        free(seed);
-        seed = NULL;
-        if (!full) {
-            seed = malloc(c->nv);
-            unsigned long long *sn = realloc(sig, c->nv * sizeof *sn);
-            if (!seed || !sn) { cm_seterr("out of memory"); goto out; }
-            sig = sn;
-            star_sigs(&w, sig);
-            for (int v = 0; v < c->nv; v++) seed[v] = sig[v] != w.sig[v];
-        }
-        int m = pa->mips > 0 ? mips_sweeps(c, w.bnd, w.seg, pa->mips, seed, pa->threads) : 0;
-        if (m < 0) goto out;
-        st->moves += m;
-        m = smooth_sweeps(c, w.bnd, 8, seed, pa->threads);
-        if (m < 0) goto out;
-        st->moves += m;
-        if (pa->mips > 0) {
-            if (flips_until_done(c, &st->flips) < 0) goto out;
-            m = polish(c, w.bnd, w.seg, goal, 4, pa->threads);
-            if (m < 0) goto out;
-            st->moves += m;
-        }
-        /* the ARAP transfer between shapes: with the MIPS smoothing it was
-         * never kept (creature and elephant poses), so it runs without */
-        int tc = pa->mips > 0 ? 0 : transfer(c, w.bnd, goal, &st->moves);
-        if (tc < 0) goto out;
-        if (tc > 0) {   /* whole shapes moved */
-            m = smooth_sweeps(c, w.bnd, 8, NULL, pa->threads);
-            if (m < 0) goto out;
-            st->moves += m;
-        }
-        full = 0;
-        if (flips_until_done(c, &st->flips) < 0) goto out;
-        if (remesh) {   /* the input's pieces that smoothing left bad (undoing
-                           splits here would only have them made again) */
-            int k = collapse_all(&w, goal, 0, nv0, &nvin);
-            if (k < 0) goto out;
-            st->collapses += k;
-            if (k && flips_until_done(c, &st->flips) < 0) goto out;
-        }
-        wcur = worst_ratio(&w, goal, &wf, &ws, &nbad);
-        if (wcur < 0) goto out;
-        if (wcur >= 1) { st->stop = COMPAT_REFINE_GOAL; break; }
-        /* progress: the worst angle rose, or fewer triangles are below
-         * the goal (where the maps between the shapes are stretched,
-         * splits only make more bad triangles) */
-        int better = nbad < 0.95 * nbest;
-        if (nbad < nbest) nbest = nbad;
-        if (wcur > wbest + COMPAT_REFINE_GAIN / goal) {
-            wbest = wcur;
-            better = 1;
-            if (remesh && best_take(&w, nvin, &best) < 0) goto out;
-        }
-        /* stalled: several rounds without progress that doubled the best
-         * round's vertices (cheap local rounds go on longer: near the
-         * goal the worst angle and the bad count jitter for a while) */
-        if (better) stall = 0;
-        else if (++stall >= COMPAT_REFINE_STALL && remesh &&
-                 (c->nv > 2 * best.nv || stall >= 4 * COMPAT_REFINE_STALL)) {
-            st->stop = COMPAT_REFINE_STALLED;
-            break;
-        }
-        if (c->nv >= max_nv || capped) { st->stop = COMPAT_REFINE_MAXNV; break; }
-        star_sigs(&w, w.sig);
-        int n = split_pass(&w, pa, &st->splits, &st->bsplits);
-        if (n < 0) goto out;
-        if (n == 0) { st->stop = COMPAT_REFINE_NOSPLIT; break; }
-        capped = c->nv >= max_nv;   /* smoothed once more, then stop */
+    r->wbest = r->wcur = -1;
+    r->nbest = INT_MAX;
+    r->st->stop = COMPAT_REFINE_ROUNDS;
+    r->done = pa->rounds <= 0;
+    return r;
+fail:
+    refiner_free(r);
+    return NULL;
+}
+
+int compat_refine_step(struct compat_refiner *r)
+{
+    if (r->done) return 0;
+    struct compat *c = r->c;
+    struct compat_refine_stats *st = r->st;
+    const struct compat_refine_params *pa = &r->pa;
+    struct work *w = &r->w;
+    double goal = pa->goal;
+    st->rounds++;
+    if (flips_until_done(c, &st->flips) < 0) return -1;
+    free(r->seed);
+    r->seed = NULL;
+    if (!r->full) {
+        r->seed = malloc(c->nv);
+        unsigned long long *sn = realloc(r->sig, c->nv * sizeof *sn);
+        if (sn) r->sig = sn;
+        if (!r->seed || !sn) return cm_seterr("out of memory");
+        star_sigs(w, r->sig);
+        for (int v = 0; v < c->nv; v++) r->seed[v] = r->sig[v] != w->sig[v];
     }
-    st->stalled = stall;
+    int m = pa->mips > 0 ? mips_sweeps(c, w->bnd, w->seg, pa->mips, r->seed, pa->threads) : 0;
+    if (m < 0) return -1;
+    st->moves += m;
+    m = smooth_sweeps(c, w->bnd, 8, r->seed, pa->threads);
+    if (m < 0) return -1;
+    st->moves += m;
+    if (pa->mips > 0) {
+        if (flips_until_done(c, &st->flips) < 0) return -1;
+        m = polish(c, w->bnd, w->seg, goal, 4, pa->threads);
+        if (m < 0) return -1;
+        st->moves += m;
+    }
+    /* the ARAP transfer between shapes: with the MIPS smoothing it was
+     * never kept (creature and elephant poses), so it runs without */
+    int tc = pa->mips > 0 ? 0 : transfer(c, w->bnd, goal, &st->moves);
+    if (tc < 0) return -1;
+    if (tc > 0) {   /* whole shapes moved */
+        m = smooth_sweeps(c, w->bnd, 8, NULL, pa->threads);
+        if (m < 0) return -1;
+        st->moves += m;
+    }
+    r->full = 0;
+    if (flips_until_done(c, &st->flips) < 0) return -1;
+    if (r->remesh) {   /* the input's pieces that smoothing left bad (undoing
+                          splits here would only have them made again) */
+        int k = collapse_all(w, goal, 0, r->nv0, &r->nvin);
+        if (k < 0) return -1;
+        st->collapses += k;
+        if (k && flips_until_done(c, &st->flips) < 0) return -1;
+    }
+    r->wcur = worst_ratio(w, goal, &r->wf, &r->ws, &r->nbad);
+    if (r->wcur < 0) return -1;
+    if (r->wcur >= 1) { st->stop = COMPAT_REFINE_GOAL; r->done = 1; return 0; }
+    /* progress: the worst angle rose, or fewer triangles are below
+     * the goal (where the maps between the shapes are stretched,
+     * splits only make more bad triangles) */
+    int better = r->nbad < 0.95 * r->nbest;
+    if (r->nbad < r->nbest) r->nbest = r->nbad;
+    if (r->wcur > r->wbest + COMPAT_REFINE_GAIN / goal) {
+        r->wbest = r->wcur;
+        better = 1;
+        if (r->remesh && best_take(w, r->nvin, &r->best) < 0) return -1;
+    }
+    /* stalled: several rounds without progress that doubled the best
+     * round's vertices (cheap local rounds go on longer: near the
+     * goal the worst angle and the bad count jitter for a while) */
+    if (better) r->stall = 0;
+    else if (++r->stall >= COMPAT_REFINE_STALL && r->remesh &&
+             (c->nv > 2 * r->best.nv || r->stall >= 4 * COMPAT_REFINE_STALL)) {
+        st->stop = COMPAT_REFINE_STALLED;
+        r->done = 1;
+        return 0;
+    }
+    if (c->nv >= pa->max_nv || r->capped) { st->stop = COMPAT_REFINE_MAXNV; r->done = 1; return 0; }
+    star_sigs(w, w->sig);
+    int n = split_pass(w, pa, &st->splits, &st->bsplits);
+    if (n < 0) return -1;
+    if (n == 0) { st->stop = COMPAT_REFINE_NOSPLIT; r->done = 1; return 0; }
+    r->capped = c->nv >= pa->max_nv;   /* smoothed once more, then stop */
+    if (st->rounds >= pa->rounds) { r->done = 1; return 0; }
+    return 1;
+}
+
+void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad)
+{
+    if (worst) *worst = r->wcur < 0 ? 0 : r->wcur * r->pa.goal;
+    if (nbad) *nbad = r->wcur < 0 ? INT_MAX : r->nbad;
+}
+
+int compat_refine_finish(struct compat_refiner *r)
+{
+    struct compat *c = r->c;
+    struct compat_refine_stats *st = r->st;
+    const struct compat_refine_params *pa = &r->pa;
+    struct work *w = &r->w;
+    double goal = pa->goal;
+    int rc = -1;
+    st->stalled = r->stall;
     /* back to the best round if the later ones only added vertices */
-    if (remesh && best.nv && wbest > wcur) {
-        best_restore(&w, &best, &nvin);
+    if (r->remesh && r->best.nv && r->wbest > r->wcur) {
+        best_restore(w, &r->best, &r->nvin);
         st->restored = 1;
     }
     /* final polish; with remeshing, edge collapses that keep every good
      * triangle good and make no triangle worse first */
     for (int k = 0; k < 4; k++) {
         int m = 0;
-        if (remesh) {
-            m = collapse_all(&w, goal, 1, INT_MAX, &nvin);
+        if (r->remesh) {
+            m = collapse_all(w, goal, 1, INT_MAX, &r->nvin);
             if (m < 0) goto out;
             st->collapses += m;
             st->coarsened += m;
         }
-        int m1 = smooth_sweeps(c, w.bnd, 8, NULL, pa->threads);
+        int m1 = smooth_sweeps(c, w->bnd, 8, NULL, pa->threads);
         if (m1 < 0) goto out;
         st->moves += m1;
         m += m1;
         if (pa->mips > 0) {
-            int m2 = polish(c, w.bnd, w.seg, goal, 4, pa->threads);
+            int m2 = polish(c, w->bnd, w->seg, goal, 4, pa->threads);
             if (m2 < 0) goto out;
             st->moves += m2;
             m += m2;
@@ -1307,30 +1368,43 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa, struc
         if (st->flips == f0 && m == 0) break;
     }
     /* where the worst triangle is and how stretched the maps are there */
-    wcur = worst_ratio(&w, goal, &wf, &ws, &nbad);
-    if (wcur < 0) goto out;
+    r->wcur = worst_ratio(w, goal, &r->wf, &r->ws, &r->nbad);
+    if (r->wcur < 0) goto out;
     if (c->nf > 0) {
-        const int *F = c->F + 3 * wf;
-        const double *X = c->X[ws];
-        st->worst_shape = ws;
+        const int *F = c->F + 3 * r->wf;
+        const double *X = c->X[r->ws];
+        st->worst_shape = r->ws;
         for (int d = 0; d < 2; d++) st->worst_at[d] = (X[2 * F[0] + d] + X[2 * F[1] + d] + X[2 * F[2] + d]) / 3;
-        st->stretch = face_stretch(c, wf);
+        st->stretch = face_stretch(c, r->wf);
     }
     /* the input's Steiner points that collapses removed */
     {
-        int lost = nv0 - nvin;
+        int lost = r->nv0 - r->nvin;
         c->nsteiner = c->nsteiner > lost ? c->nsteiner - lost : 0;
     }
-    if (renumber(&w, nb0, nvin) < 0) goto out;
+    if (renumber(w, r->nb0, r->nvin) < 0) goto out;
     double minarea, q1 = compat_min_angle(c, &minarea);
-    if (!(minarea > 0) || q1 < q0) {
-        snap_restore(c, &snap);
+    if (!(minarea > 0) || q1 < r->q0) {
+        snap_restore(c, &r->snap);
         st->kept_input = 1;
     }
     rc = 0;
 out:
-    snap_free(c->N, &snap);
-    best_free(c->N, &best);
-    free(w.bnd); free(w.bsucc); free(w.seg); free(w.diag); free(w.id); free(w.sig); free(sig); free(seed);
+    refiner_free(r);
     return rc;
+}
+
+void compat_refine_abandon(struct compat_refiner *r)
+{
+    if (r) refiner_free(r);
+}
+
+int compat_refine(struct compat *c, const struct compat_refine_params *pa, struct compat_refine_stats *st)
+{
+    struct compat_refiner *r = compat_refine_begin(c, pa, st);
+    if (!r) return -1;
+    int k;
+    while ((k = compat_refine_step(r)) > 0) {}
+    if (k < 0) { compat_refine_abandon(r); return -1; }
+    return compat_refine_finish(r);
 }

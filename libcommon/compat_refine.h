@@ -136,6 +136,35 @@ struct compat_refine_params {
 int compat_refine(struct compat *c, const struct compat_refine_params *pa,
                   struct compat_refine_stats *st);
 
+/* The same refinement a round at a time, so that a caller can run several
+ * candidate triangulations side by side and drop the ones falling behind
+ * (compat-tri: the matched points against the given rows alone).
+ * compat_refine(c, pa, st) is begin, step until it returns 0, finish.
+ *
+ * compat_refine_begin  starts on c (as compat_refine; c belongs to the
+ *                      refiner until finish or abandon); NULL on out of
+ *                      memory (cm_errmsg).  st (may be NULL) is filled as
+ *                      the rounds go.
+ * compat_refine_step   one round (flips, smoothing, collapses, splits);
+ *                      1: more rounds may help, 0: the splitting has
+ *                      stopped (st->stop says why), -1: out of memory.
+ * compat_refine_progress  after a step: worst = the smallest angle
+ *                      (radians) measured against what each corner allows
+ *                      (>= pa->goal: done), nbad = triangles below it
+ *                      (INT_MAX before the first step).
+ * compat_refine_finish back to the best round, final polish and
+ *                      coarsening, renumbering; frees the refiner.  0 or -1.
+ * compat_refine_abandon frees the refiner; c stays a valid compatible
+ *                      triangulation of the last round (unpolished, its
+ *                      vertices not renumbered) to be freed by the caller. */
+struct compat_refiner;
+struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat_refine_params *pa,
+                                           struct compat_refine_stats *st);
+int compat_refine_step(struct compat_refiner *r);
+void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad);
+int compat_refine_finish(struct compat_refiner *r);
+void compat_refine_abandon(struct compat_refiner *r);
+
 /* Quality of shape s: smallest angle (radians) of any triangle, and the
  * share of triangles (0..1) whose smallest angle is below 10 and below 20
  * degrees.  Any output pointer may be NULL. */
