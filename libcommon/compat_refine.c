@@ -1323,10 +1323,11 @@ int compat_refine_step(struct compat_refiner *r)
     return 1;
 }
 
-void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad)
+void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad, int *fewest)
 {
     if (worst) *worst = r->wcur < 0 ? 0 : r->wcur * r->pa.goal;
     if (nbad) *nbad = r->wcur < 0 ? INT_MAX : r->nbad;
+    if (fewest) *fewest = r->nbest;
 }
 
 int compat_refine_finish(struct compat_refiner *r)

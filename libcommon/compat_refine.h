@@ -151,7 +151,9 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa,
  * compat_refine_progress  after a step: worst = the smallest angle
  *                      (radians) measured against what each corner allows
  *                      (>= pa->goal: done), nbad = triangles below it
- *                      (INT_MAX before the first step).
+ *                      (INT_MAX before the first step), fewest = the
+ *                      fewest such triangles after any step so far (any
+ *                      output may be NULL).
  * compat_refine_finish back to the best round, final polish and
  *                      coarsening, renumbering; frees the refiner.  0 or -1.
  * compat_refine_abandon frees the refiner; c stays a valid compatible
@@ -161,7 +163,7 @@ struct compat_refiner;
 struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat_refine_params *pa,
                                            struct compat_refine_stats *st);
 int compat_refine_step(struct compat_refiner *r);
-void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad);
+void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad, int *fewest);
 int compat_refine_finish(struct compat_refiner *r);
 void compat_refine_abandon(struct compat_refiner *r);
 

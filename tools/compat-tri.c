@@ -11,6 +11,7 @@
 #include "rings.h"
 #include "tool.h"
 #include "cm_error.h"
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,8 +49,9 @@ static const char help[] =
 "                        same points placed by arc length from the given rows) or\n"
 "                        'off' (3 or more rows: only the given rows, arc length\n"
 "                        between them: the earlier default); with 3 or more rows\n"
-"                        and no -m, a refined mesh below --min-angle is built\n"
-"                        with 'off' too and the better worst angle kept (-v)\n"
+"                        and no -m, where the matched points are not at\n"
+"                        --min-angle after 3 rounds, 'off' is refined side by\n"
+"                        side and the one falling behind dropped (-v)\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
 "                        rows plus SHAPE0's most salient corners (default 12)\n"
 "      --bend R          weight of the bending term of the matching (default 0.03)\n"
@@ -398,6 +400,45 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (o->interior) columns_free(&I);
 }
 
+/* the refinement's parameters for cp (compat_refine_params) */
+static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
+{
+    struct compat_refine_params pa = {o->min_angle * M_PI / 180, 0, o->max_nv ? o->max_nv : cpp->nv + 10 * cpp->nb, 200,
+                                      o->refine == 2 ? 0 : 200, o->threads};
+    return pa;
+}
+
+/* -v lines of a finished refinement of cpp (q0: its worst angle before,
+ * radians; rs, pa: its counts and parameters); returns the worst angle
+ * after over every pose (degrees) */
+static double refine_report(const struct options *o, const struct compat *cpp, double q0,
+                            const struct compat_refine_stats *rs, const struct compat_refine_params *pa,
+                            const char *who)
+{
+    const char *sep = who ? ": " : "";
+    if (!who) who = "";
+    double q1 = compat_min_angle(cpp, NULL) * 180 / M_PI;
+    info(1, "%s%srefinement: %d rounds, %d interior and %d boundary splits, %d collapses (%d coarsening), "
+            "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", who, sep, rs->rounds,
+         rs->splits, rs->bsplits, rs->collapses, rs->coarsened, rs->flips, rs->moves, q0 * 180 / M_PI, q1,
+         rs->kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI);
+    if (rs->stop != COMPAT_REFINE_GOAL && !rs->kept_input) {
+        char why[160];
+        if (rs->stop == COMPAT_REFINE_STALLED)
+            snprintf(why, sizeof why, "neither the worst angle nor the number of triangles below the goal improved in %d rounds%s", rs->stalled,
+                     rs->restored ? " (back to the best round's mesh)" : "");
+        else if (rs->stop == COMPAT_REFINE_MAXNV)
+            snprintf(why, sizeof why, "--max-vertices %d reached%s", pa->max_nv,
+                     rs->restored ? " (back to the best round's mesh)" : "");
+        else if (rs->stop == COMPAT_REFINE_NOSPLIT) snprintf(why, sizeof why, "no split keeps every pose positive");
+        else snprintf(why, sizeof why, "%d rounds used up", pa->rounds);
+        info(1, "%s%srefinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
+                "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", who, sep, o->min_angle, why, q1, rs->stretch,
+             rs->worst_at[0], rs->worst_at[1], rs->worst_shape, o->shapes[rs->worst_shape]);
+    }
+    return q1;
+}
+
 /* smoothing or compatible refinement of cp (q0: its worst angle before, radians),
  * reported with -v; returns the worst angle after over every pose (degrees),
  * or -1 if the refinement failed (cm_errmsg set) */
@@ -423,32 +464,149 @@ static double improve(const struct options *opt, struct compat *cpp, double q0)
     }
     if (!o.refine) {
         if (compat_improve(cpp, target, o.smooth) < 0) return -1;
-    } else {
-        struct compat_refine_params pa = {o.min_angle * M_PI / 180, 0, o.max_nv ? o.max_nv : cpp->nv + 10 * cpp->nb, 200,
-                                          o.refine == 2 ? 0 : 200, o.threads};
-        struct compat_refine_stats rs;
-        if (compat_refine(cpp, &pa, &rs) < 0) return -1;
-        double q1 = compat_min_angle(cpp, NULL) * 180 / M_PI;
-        info(1, "refinement: %d rounds, %d interior and %d boundary splits, %d collapses (%d coarsening), "
-                "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", rs.rounds,
-             rs.splits, rs.bsplits, rs.collapses, rs.coarsened, rs.flips, rs.moves, q0 * 180 / M_PI, q1,
-             rs.kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI);
-        if (rs.stop != COMPAT_REFINE_GOAL && !rs.kept_input) {
-            char why[160];
-            if (rs.stop == COMPAT_REFINE_STALLED)
-                snprintf(why, sizeof why, "neither the worst angle nor the number of triangles below the goal improved in %d rounds%s", rs.stalled,
-                         rs.restored ? " (back to the best round's mesh)" : "");
-            else if (rs.stop == COMPAT_REFINE_MAXNV)
-                snprintf(why, sizeof why, "--max-vertices %d reached%s", pa.max_nv,
-                         rs.restored ? " (back to the best round's mesh)" : "");
-            else if (rs.stop == COMPAT_REFINE_NOSPLIT) snprintf(why, sizeof why, "no split keeps every pose positive");
-            else snprintf(why, sizeof why, "%d rounds used up", pa.rounds);
-            info(1, "refinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
-                    "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", o.min_angle, why, q1, rs.stretch,
-                 rs.worst_at[0], rs.worst_at[1], rs.worst_shape, o.shapes[rs.worst_shape]);
+        return compat_min_angle(cpp, NULL) * 180 / M_PI;
+    }
+    struct compat_refine_params pa = refine_params(&o, cpp);
+    struct compat_refine_stats rs;
+    if (compat_refine(cpp, &pa, &rs) < 0) return -1;
+    return refine_report(&o, cpp, q0, &rs, &pa, NULL);
+}
+
+/* one of the two candidates of the default with 3 or more rows */
+struct candidate {
+    const char *name;                 /* for -v */
+    struct compat cp;
+    struct compat_refiner *r;         /* NULL once finished or dropped */
+    struct compat_refine_params pa;
+    struct compat_refine_stats rs;
+    double q0, q;                     /* worst angle before (radians), after (degrees; -1: none) */
+    int built;
+};
+
+/* a round of candidate k; finishes it when its splitting stops; 0 or -1 */
+static int cand_step(const struct options *o, struct candidate *k)
+{
+    int st = compat_refine_step(k->r);
+    if (st < 0) return -1;
+    if (st == 0) {
+        int rc = compat_refine_finish(k->r);
+        k->r = NULL;
+        if (rc < 0) return -1;
+        k->q = refine_report(o, &k->cp, k->q0, &k->rs, &k->pa, k->name);
+    }
+    return 0;
+}
+
+/* worst angle (degrees) and triangles below the goal of a running or finished candidate */
+static void cand_state(const struct candidate *k, double *worst, int *nbad)
+{
+    if (k->r) {
+        compat_refine_progress(k->r, worst, nbad, NULL);
+        *worst *= 180 / M_PI;
+    } else { *worst = k->q; *nbad = k->rs.stop == COMPAT_REFINE_GOAL ? 0 : INT_MAX; }
+}
+
+/* The default with 3 or more given rows: the points the matching placed
+ * between the rows (cp, built and triangulated) and the given rows alone
+ * (-m off) are both candidates (measured: the matching wins on the traced
+ * camel and horse, the rows alone on the shared elephant poses, and no
+ * count of the triangulations told them apart in advance).  The matched
+ * points are refined first; if they are not at the goal after RACE_ROUNDS
+ * rounds, the rows alone are built and the two are refined a round each
+ * in turn.  A candidate is dropped once it falls behind: a smaller worst
+ * angle than the other's with at least RACE_BEHIND times its triangles
+ * below the goal, from the third round on (on the six elephant poses the
+ * matched points have 434 bad triangles at 3.7 deg against 201 at 6.8 and
+ * would go on to 3041 vertices at 18.5 deg).  One that reaches the goal
+ * is kept; otherwise the larger worst angle (the matched points on a tie).
+ * On return cp holds the kept mesh; returns its worst angle (degrees). */
+#define RACE_ROUNDS 3
+#define RACE_BEHIND 2
+static double race(struct options *o, struct rings *R, struct compat *cp, double q0)
+{
+    struct options off = *o;
+    off.match = -2;
+    off.points_out = NULL;
+    struct candidate K[2];
+    memset(K, 0, sizeof K);
+    K[0].name = "the matched points";
+    K[1].name = "the given rows only (-m off)";
+    K[0].cp = *cp;
+    K[0].built = 1;
+    K[0].q0 = q0;
+    K[0].q = K[1].q = -1;
+    K[0].pa = refine_params(o, cp);
+    if (!(K[0].r = compat_refine_begin(&K[0].cp, &K[0].pa, &K[0].rs))) die("%s", cm_errmsg());
+    int rounds[2] = {0, 0};
+    for (;;) {
+        int live0 = K[0].r != NULL, live1 = K[1].r != NULL;
+        if (!live0 && !live1 && (K[1].built || K[0].q >= o->min_angle)) break;
+        /* the matched points at the goal: kept */
+        if (!live0 && K[0].q >= o->min_angle) break;
+        if (live0 && (rounds[0] <= rounds[1] || !live1)) {
+            if (cand_step(o, &K[0]) < 0) die("%s", cm_errmsg());
+            rounds[0]++;
+        } else if (live1) {
+            if (cand_step(o, &K[1]) < 0) die("%s", cm_errmsg());
+            rounds[1]++;
+        }
+        int nbad0 = 0, fewest0 = 0;
+        if (K[0].r) compat_refine_progress(K[0].r, NULL, &nbad0, &fewest0);
+        if (!K[1].built && ((rounds[0] >= RACE_ROUNDS && nbad0 > fewest0) || !K[0].r) && K[0].q < o->min_angle) {
+            /* the second candidate; if it cannot be built the first goes on alone */
+            K[1].built = 1;
+            if (build_single(&off, R, &K[1].cp) == 0 && compat_triangulate(&K[1].cp) == 0) {
+                if (K[0].r)
+                    info(1, "the matched points not at the goal after %d rounds, %d triangles below it (%d after an earlier "
+                            "round): the given rows only (-m off) too", rounds[0], nbad0, fewest0);
+                else info(1, "below the goal with the matched points (%.2f deg): the given rows only (-m off) too", K[0].q);
+                K[1].q0 = compat_min_angle(&K[1].cp, NULL);
+                K[1].pa = refine_params(&off, &K[1].cp);
+                if (!(K[1].r = compat_refine_begin(&K[1].cp, &K[1].pa, &K[1].rs))) die("%s", cm_errmsg());
+            } else {
+                info(1, "the given rows only (-m off): %s; kept the matched points", cm_errmsg());
+                compat_free(&K[1].cp);   /* compat_match clears it first */
+                memset(&K[1].cp, 0, sizeof K[1].cp);
+                K[1].q = -1;
+            }
+            continue;
+        }
+        /* the one behind after the same number of rounds is dropped */
+        if (K[1].built && (rounds[0] == rounds[1] || !K[0].r || !K[1].r) &&
+            (rounds[0] >= RACE_ROUNDS || !K[0].r) && (rounds[1] >= RACE_ROUNDS || !K[1].r)) {
+            for (int a = 0; a < 2; a++) {
+                if (!K[a].r || (!K[1 - a].r && K[1 - a].q < 0)) continue;
+                double wa, wb;
+                int na, nb;
+                cand_state(&K[a], &wa, &na);
+                cand_state(&K[1 - a], &wb, &nb);
+                if (wa < wb && (double)na >= RACE_BEHIND * (double)nb) {
+                    info(1, "%s dropped after %d rounds: worst angle %.2f deg with %d triangles below the goal (%s: %.2f deg, %d)",
+                         K[a].name, rounds[a], wa, na, K[1 - a].name, wb, nb);
+                    compat_refine_abandon(K[a].r);
+                    K[a].r = NULL;
+                    K[a].q = -1;
+                    break;
+                }
+            }
         }
     }
-    return compat_min_angle(cpp, NULL) * 180 / M_PI;
+    /* kept: the matched points at the goal, else the larger worst angle */
+    int use = K[0].q >= o->min_angle ? 0 : K[1].q > K[0].q;
+    for (int a = 0; a < 2; a++)
+        if (K[a].r) { compat_refine_abandon(K[a].r); K[a].r = NULL; }
+    if (K[1].built && K[1].q >= 0 && K[0].q >= 0)
+        info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", K[use].name, K[use].q, K[1 - use].name, K[1 - use].q);
+    else if (K[1].built && K[use].q >= 0)
+        info(1, "kept %s: worst angle %.2f deg", K[use].name, K[use].q);
+    if (K[1 - use].built) compat_free(&K[1 - use].cp);
+    *cp = K[use].cp;
+    if (use == 1 && o->points_out) {   /* the rows actually used */
+        struct compat tmp;
+        off.points_out = o->points_out;
+        if (build_single(&off, R, &tmp) == 0) compat_free(&tmp);
+    }
+    return K[use].q;
 }
 
 int main(int argc, char **argv)
@@ -493,39 +651,8 @@ int main(int argc, char **argv)
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
          cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
-    double q1 = improve(&o, &cp, q0);
+    double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
-    /* the default matching between 3 or more given rows against the given rows
-     * alone (-m off): where the first stays below the goal, the second is built
-     * too and the better worst angle kept (measured: the matching wins on the
-     * traced camel and horse, the rows alone on the shared elephant poses) */
-    if (o.match_default && o.refine && q1 < o.min_angle) {
-        struct options off = o;
-        off.match = -2;
-        off.points_out = NULL;
-        struct compat alt;
-        /* a second build that fails keeps the first mesh (-v says why) */
-        if (build_single(&off, R, &alt) == 0 && compat_triangulate(&alt) == 0) {
-            double qa0 = compat_min_angle(&alt, NULL);
-            info(1, "below the goal with the matched points (%.2f deg): the given rows only (-m off) too", q1);
-            double qa = improve(&off, &alt, qa0);
-            if (qa < 0) info(1, "the given rows only (-m off): %s; kept the matched points", cm_errmsg());
-            int use = qa > q1;
-            info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", use ? "the given rows only (-m off)" : "the matched points",
-                 use ? qa : q1, use ? "the matched points" : "-m off", use ? q1 : qa);
-            if (use) {
-                compat_free(&cp);
-                cp = alt;
-                if (o.points_out) {   /* the rows actually used */
-                    off.points_out = o.points_out;
-                    if (build_single(&off, R, &alt) == 0) compat_free(&alt);
-                }
-            } else compat_free(&alt);
-        } else {
-            info(1, "the given rows only (-m off): %s; kept the matched points", cm_errmsg());
-            compat_free(&alt);   /* compat_match clears it first */
-        }
-    }
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
         compat_pose_quality(&cp, s, &mn, &u10, &u20);
