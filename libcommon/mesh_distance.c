@@ -138,6 +138,7 @@ struct frame_compare {
     double *SR, *NR; int nsr;           /* the reference's samples, face normals */
     int *HC;                            /* nsr: closest frame face of each reference sample */
     int *OR;                            /* nsr: the order of the reference's samples */
+    unsigned char *ZF, *ZS;             /* nfr, nsr: the zone's faces and samples (or NULL) */
     /* the frame side, kept while the connectivity stays the same */
     int nv, nf, nsx, have; int *F;
     struct topology tx;
@@ -187,9 +188,31 @@ void frame_compare_free(struct frame_compare *C)
     topology_free(&C->tr);
     topology_free(&C->tx);
     free(C->FR); free(C->SR); free(C->NR); free(C->HC); free(C->DC); free(C->OR);
-    free(C->OX);
+    free(C->OX); free(C->ZF); free(C->ZS);
     free(C->F); free(C->HX); free(C->SX); free(C->BX); free(C->DX); free(C->NX);
     free(C);
+}
+
+int frame_compare_set_zone(struct frame_compare *C, const unsigned char *zone)
+{
+    free(C->ZF); free(C->ZS);
+    C->ZF = C->ZS = NULL;
+    if (!zone) return 0;
+    C->ZF = malloc((size_t)C->nfr + 1);
+    C->ZS = calloc((size_t)C->nsr + 1, 1);
+    if (!C->ZF || !C->ZS) { cm_seterr("out of memory"); return -1; }
+    memcpy(C->ZF, zone, (size_t)C->nfr);
+    /* the samples in the order of samples(): vertices, centroids, edge midpoints */
+    const struct topology *t = &C->tr;
+    for (int v = 0; v < t->nv; v++)
+        for (int q = t->VFs[v]; q < t->VFs[v + 1]; q++) C->ZS[v] |= zone[t->VF[q]];
+    for (int f = 0; f < t->nf; f++) C->ZS[t->nv + f] = zone[f];
+    for (int e = 0; e < t->ne; e++)
+        for (int q = 0; q < 2; q++) {
+            int f = t->EF[2 * e + q];
+            if (f >= 0) C->ZS[t->nv + t->nf + e] |= zone[f];
+        }
+    return 0;
 }
 
 /* (re)make the frame side for connectivity F */
@@ -249,15 +272,19 @@ int frame_compare_run(struct frame_compare *C, const double *X, int nv, const in
             o[s]->sumsq += Dd[s][i] * Dd[s][i];
         }
     }
+    out->cover_clear = 0;
+    for (int i = 0; i < C->nsr; i++)
+        if (!(C->ZS && C->ZS[i]) && C->DC[i] > out->cover_clear) out->cover_clear = C->DC[i];
     /* flipped faces: the centroid samples (nv .. nv+nf-1) already know
      * their closest reference points */
     face_normals(X, F, nf, C->NX);
-    out->flipped = 0;
+    out->flipped = out->flipped_zone = 0;
     for (int f = 0; f < nf; f++) {
         int k = nv + f;
         int fl = face_flipped(C->NX + 3 * f, C->SX + 3 * k, C->HX[k], C->BX + 3 * k, C->DX[k],
                               C->FR, C->NR, &C->tr, C->TR, tol);
         out->flipped += fl;
+        if (fl && C->ZF && C->ZF[C->HX[k]]) out->flipped_zone++;
         if (flip) flip[f] = (unsigned char)fl;
         if (face_fit) {
             double m = C->DX[k];

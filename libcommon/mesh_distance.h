@@ -74,6 +74,10 @@ struct frame_distance {
     struct one_sided fit;    /* the frame's samples to the reference */
     struct one_sided cover;  /* the reference's samples to the frame */
     int flipped;             /* faces of the frame pointing against the reference */
+    int flipped_zone;        /* of those, the faces whose centroid's closest reference point
+                                lies on a face of the zone (frame_compare_set_zone; 0 without) */
+    double cover_clear;      /* the largest distance to the frame of a reference sample off
+                                the zone (cover.max without a zone) */
 };
 /* VR: #VR by 3 (nvr), FR: #FR by 3 (nfr).  NULL on error (cm_errmsg). */
 struct frame_compare *frame_compare_new(const double *VR, int nvr, const int *FR, int nfr);
@@ -86,6 +90,12 @@ struct frame_compare *frame_compare_new(const double *VR, int nvr, const int *FR
 int frame_compare_run(struct frame_compare *C, const double *X, int nv, const int *F, int nf,
                       double tol, struct frame_distance *out, unsigned char *flip, double *face_fit);
 void frame_compare_free(struct frame_compare *C);
+/* A zone of the reference reported apart by frame_compare_run() (e.g. the
+ * reference's buried skin, buried.h): zone (#F of the reference, copied)
+ * flags its faces; a sample of the reference is in the zone when a face
+ * it lies on is (a vertex: any incident face).  NULL: no zone.  Returns 0,
+ * -1 (out of memory). */
+int frame_compare_set_zone(struct frame_compare *C, const unsigned char *zone);
 
 #ifdef __cplusplus
 }

@@ -3,11 +3,13 @@
  * (any connectivity), flipped faces, and, when the connectivity matches,
  * the relative area and volume distortion of thesis Eq. 3.6.
  */
+#include "buried.h"
 #include "closest_point.h"
 #include "distortion.h"
 #include "geometry.h"
 #include "mesh.h"
 #include "mesh_distance.h"
+#include "progress.h"
 #include "tool.h"
 #include "cm_error.h"
 #include <math.h>
@@ -23,6 +25,8 @@ static const char help[] =
 "  volume_rel area_mean area_sigma vol_mean vol_sigma edge_max area_abs\n"
 "and last, the two one-sided distances over the diagonal\n"
 "  fit_rel cover_rel\n"
+"and with --buried\n"
+"  buried flipped_buried cover_clear_rel\n"
 "(hausdorff_rel: over the reference's bounding-box diagonal; see mesh-metrics(1)).\n"
 "\n"
 "Options:\n"
@@ -33,19 +37,23 @@ static const char help[] =
 "                        frame face flipped distance distance_rel (the largest\n"
 "                        distance of the face's samples to the reference; _rel:\n"
 "                        over the diagonal), for mesh-render --color\n"
+"      --buried          the reference's own defects apart: its buried faces (front\n"
+"                        inside its own volume: parts of a scan passing through each\n"
+"                        other), the flipped faces on them or one ring around, and\n"
+"                        the cover distance of the reference's other samples\n"
 "  -o, --output FILE     write to FILE (atomically) instead of stdout\n"
 "  -h, --help            show this help\n"
 "      --version         show the version\n"
 "\n"
 "Example: arap-interp a.mesh b.mesh | mesh-metrics -r a.mesh\n";
 
-struct options { const char *input, *ref, *output, *per_face; int ref_frame, no_header; };
+struct options { const char *input, *ref, *output, *per_face; int ref_frame, no_header, buried; };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"reference", 1, 0, 'r'}, {"ref-frame", 1, 0, 'K'}, {"no-header", 0, 0, 'N'},
-        {"per-face", 1, 0, 'P'},
+        {"per-face", 1, 0, 'P'}, {"buried", 0, 0, 'B'},
         {"output", 1, 0, 'o'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, 'V'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -56,6 +64,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'K': o->ref_frame = arg_int(optarg, "--ref-frame"); break;
         case 'N': o->no_header = 1; break;
         case 'P': o->per_face = optarg; break;
+        case 'B': o->buried = 1; break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);
@@ -101,6 +110,17 @@ int main(int argc, char **argv)
     struct frame_compare *C = frame_compare_new(R, ref.nv, ref.F, ref.nf);
     if (!C) die("cannot use '%s': %s", o.ref, cm_errmsg());
     double diag = bbox_diagonal(R, ref.nv);
+    /* --buried: the reference's buried faces and one ring around them */
+    int nburied = 0;
+    if (o.buried) {
+        unsigned char *zone = malloc((size_t)ref.nf + 1);
+        double t0 = now_seconds();
+        if (!zone || (nburied = buried_faces(R, ref.nv, ref.F, ref.nf, BURIED_OFFSET * diag, 1, 0, zone)) < 0 ||
+            frame_compare_set_zone(C, zone) < 0)
+            die("cannot use '%s': %s", o.ref, cm_errmsg());
+        info(1, "%d buried faces of %d in '%s', %.2f s", nburied, ref.nf, o.ref, now_seconds() - t0);
+        free(zone);
+    }
     struct mesh_reader rd;
     if (mesh_reader_open(&rd, o.input) < 0) die("%s", cm_errmsg());
     int same = rd.nv == ref.nv && rd.nf == ref.nf &&
@@ -110,8 +130,9 @@ int main(int argc, char **argv)
     unsigned char *flip = o.per_face ? malloc((size_t)rd.nf + 1) : NULL;
     struct text out = {0}, pf = {0};
     if (!o.no_header)
-        text_add(&out, "# frame hausdorff hausdorff_rel rms flipped%s fit_rel cover_rel\n",
-                 same ? " volume_rel area_mean area_sigma vol_mean vol_sigma edge_max area_abs" : "");
+        text_add(&out, "# frame hausdorff hausdorff_rel rms flipped%s fit_rel cover_rel%s\n",
+                 same ? " volume_rel area_mean area_sigma vol_mean vol_sigma edge_max area_abs" : "",
+                 o.buried ? " buried flipped_buried cover_clear_rel" : "");
     if (o.per_face && !o.no_header) text_add(&pf, "# frame face flipped distance distance_rel\n");
     int rc;
     while ((rc = mesh_reader_next(&rd, X, NULL)) == 1) {
@@ -130,7 +151,10 @@ int main(int argc, char **argv)
             text_add(&out, " %.9g %.9g %.9g %.9g %.9g %.9g %.9g", d.volume_rel, d.area_mean,
                      d.area_sigma, d.vol_mean, d.vol_sigma, d.edge_max, d.area_abs);
         }
-        text_add(&out, " %.9g %.9g\n", diag > 0 ? fd.fit.max / diag : 0, diag > 0 ? fd.cover.max / diag : 0);
+        text_add(&out, " %.9g %.9g", diag > 0 ? fd.fit.max / diag : 0, diag > 0 ? fd.cover.max / diag : 0);
+        if (o.buried)
+            text_add(&out, " %d %d %.9g", nburied, fd.flipped_zone, diag > 0 ? fd.cover_clear / diag : 0);
+        text_add(&out, "\n");
         for (int f = 0; o.per_face && f < rd.nf; f++)
             text_add(&pf, "%d %d %d %.9g %.9g\n", k, f, flip[f], ffit[f], diag > 0 ? ffit[f] / diag : 0);
     }

@@ -79,6 +79,10 @@ static const char help[] =
 "                        (stay), take their neighbours' mean (mean: irons flaps of\n"
 "                        surplus skin flat), or both (default): the mean too where\n"
 "                        stay leaves more than 10 flipped faces, the better kept\n"
+"      --fit-smooth-retry N  where the key kept ends farther than 1% of the diagonal\n"
+"                        or with more than 10 flipped faces, fit it once more with\n"
+"                        the rest shape smoothed N times, the better kept (default\n"
+"                        3; 0: off)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -131,6 +135,7 @@ struct options {
     int start_given;       /* --start on the command line */
     int paper;             /* --paper: the thesis' method */
     int fit_release;       /* 0 stay, 1 mean, 2 both (nricp_params.fit_release per run) */
+    int fit_smooth_retry;  /* > fit_smooth: the kept key's second fit with this rest smoothing */
     struct nricp_params p;
 };
 
@@ -139,7 +144,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN, O_UNTANGLE, O_FITREL };
+           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
@@ -147,6 +152,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
         {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"fit-release", 1, 0, O_FITREL},
+        {"fit-smooth-retry", 1, 0, O_FITSR},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
@@ -156,6 +162,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     nricp_defaults(&o->p);
     o->align = "rigid";
     o->fit_release = 2;
+    o->fit_smooth_retry = 3;
     int c;
     while ((c = getopt_long(argc, argv, "l:k:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -203,6 +210,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_NOINIT: o->no_init = 1; break;
         case O_LMESH: o->lm_mesh = optarg; break;
         case O_FITS: o->p.fit_smooth = arg_int(optarg, "--fit-smooth"); break;
+        case O_FITSR: o->fit_smooth_retry = arg_int(optarg, "--fit-smooth-retry"); break;
         case O_SEARCH: o->p.search = arg_double(optarg, "--search"); break;
         case O_INITM:
             if (!strcmp(optarg, "shell")) o->init_shell = 1;
@@ -272,6 +280,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->p.untangle < 0 || o->p.untangle > 20) usage_error("--untangle must be in 0..20");
     if (o->p.rigid_iters < 1 || o->p.rigid_iters > 100) usage_error("--rigid-iters must be in 1..100");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
+    if (o->fit_smooth_retry < 0 || o->fit_smooth_retry > 100)
+        usage_error("--fit-smooth-retry must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
     if (!(o->p.fit_weight > 0) || o->p.fit_weight > 1e6)
         usage_error("--fit-weight must be in (0, 1e6]");
@@ -552,7 +562,8 @@ int main(int argc, char **argv)
          * flipped faces, within twice the best Hausdorff distance so far) */
         int nrel = o.fit_release == 2 && o.p.fit > 0 ? 2 : 1;
         double best = INFINITY;
-        int bestc = -1, bestn = 0, bfl = 0, bestr = 0, bestv = 0;
+        int bestc = -1, bestn = 0, bfl = 0, bestr = 0, bestv = 0, bests = 0;
+        double *VSbest = malloc((size_t)S.nv * 3 * sizeof *VSbest);
         double bh = 0;
         for (int c = 0; c < nc; c++) {
             struct options oc = o;
@@ -587,6 +598,7 @@ int main(int argc, char **argv)
                     bestc = cand[c];
                     bestr = r;
                     bestv = v;
+                    memcpy(VSbest, VS, (size_t)S.nv * 3 * sizeof *VS);
                     memcpy(X, Xc, (size_t)S.nv * 3 * sizeof *X);
                     if (Fc) memcpy(Fc, st.frames, (size_t)st.n * S.nv * 3 * sizeof *Fc);
                     bestn = st.n;
@@ -600,10 +612,43 @@ int main(int argc, char **argv)
             free(VS);
             if (cand[c] == START_NONE && bh <= START_ACCEPT && bfl <= START_FLIPS) break;
         }
+        /* the kept key fitted once more with a smoother rest shape, where it
+         * ended far or folded: the fit's rest keeps SOURCE's remeshing
+         * detail (knife-edge rims of an ear) that the target may not share */
+        if (o.fit_smooth_retry > o.p.fit_smooth && o.p.fit > 0 && nc * nrest * nrel > 1 &&
+            (bh > START_ACCEPT || bfl > START_FLIPS)) {
+            struct options oc = o;
+            struct landmarks none = {0};
+            oc.p.fit_smooth = o.fit_smooth_retry;
+            oc.p.fit_release = nrel == 2 ? bestv : o.fit_release;
+            const double *rest = bestr ? NULL : rest_first;
+            double t0 = now_seconds(), h, str;
+            int fl;
+            key_register(&oc, &S, VSbest, rest, &T[k], bestc == START_NONE ? &none : &L, &st, Xc);
+            measure(Xc, &S, &T[k], &h, &fl);
+            str = nricp_stretch(S.V, Xc, S.F, S.nf);
+            info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), %d flipped "
+                 "faces, edge stretch %.3f (start %s, the rest smoothed %d times)",
+                 o.chain ? o.targets[k] : "", o.chain ? ": " : "", now_seconds() - t0,
+                 h * bbox_diagonal(T[k].V, T[k].nv), 100 * h, fl, str, start_name[bestc],
+                 o.fit_smooth_retry);
+            double score = h + START_FLIP_COST * fl + START_STRETCH_COST * str;
+            if (score < best) {
+                best = score;
+                bests = 1;
+                memcpy(X, Xc, (size_t)S.nv * 3 * sizeof *X);
+                if (Fc) memcpy(Fc, st.frames, (size_t)st.n * S.nv * 3 * sizeof *Fc);
+                bestn = st.n;
+                bh = h;
+                bfl = fl;
+            }
+        }
+        free(VSbest);
         if (nc * nrest * nrel > 1)
-            info(1, "%s%skept start %s%s%s", o.chain ? o.targets[k] : "", o.chain ? ": " : "",
+            info(1, "%s%skept start %s%s%s%s", o.chain ? o.targets[k] : "", o.chain ? ": " : "",
                  start_name[bestc], nrest == 2 ? bestr ? ", rest previous" : ", rest first" : "",
-                 nrel == 2 ? bestv ? ", fit release mean" : ", fit release stay" : "");
+                 nrel == 2 ? bestv ? ", fit release mean" : ", fit release stay" : "",
+                 bests ? ", the rest smoothed more" : "");
         if (Fc) {
             memcpy(st.frames, Fc, (size_t)bestn * S.nv * 3 * sizeof *Fc);
             st.n = bestn;
