@@ -1345,8 +1345,20 @@ int compat_refine_finish(struct compat_refiner *r)
         st->restored = 1;
     }
     /* final polish; with remeshing, edge collapses that keep every good
-     * triangle good and make no triangle worse first */
-    for (int k = 0; k < 4; k++) {
+     * triangle good and make no triangle worse first.  Four sweeps, then
+     * (remeshing, still below the goal) more while each raises the worst
+     * angle by COMPAT_REFINE_GAIN: the max-min polish is local, and where
+     * the maps are stretched it goes on gaining for a while */
+    double wprev = -1;
+    for (int k = 0; k < COMPAT_REFINE_POLISH_MAX; k++) {
+        if (k >= 4) {
+            if (!r->remesh) break;
+            int wf, ws, nb;
+            double wk = worst_ratio(w, goal, &wf, &ws, &nb);
+            if (wk < 0) goto out;
+            if (wk >= 1 || (wprev >= 0 && wk < wprev + COMPAT_REFINE_GAIN / goal)) break;
+            wprev = wk;
+        }
         int m = 0;
         if (r->remesh) {
             m = collapse_all(w, goal, 1, INT_MAX, &r->nvin);

@@ -103,6 +103,7 @@ enum {
 };
 #define COMPAT_REFINE_STALL 3
 #define COMPAT_REFINE_GAIN (0.05 * M_PI / 180)   /* radians */
+#define COMPAT_REFINE_POLISH_MAX 64   /* final polish sweeps at most */
 
 struct compat_refine_params {
     double goal;       /* target smallest angle, radians (e.g. 20 degrees) */
