@@ -577,7 +577,7 @@ struct work {
      * the candidate label steps read P directly */
     const struct replib_data *D;
     double mu;
-    int uh;
+    int uh;                     /* bit 1: U current, bit 2: H and c current */
     int *cand, *nc;             /* n by ncand + 1, n: the candidates of the last candidate label step */
     double *hs;                 /* n by ncand + 1: its DP values */
     int cand_reuse;             /* 1: the next candidate label step keeps those candidates */
@@ -656,20 +656,33 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
     return 0;
 }
 
-/* The unary and linear chain terms U, H, c from w->P (and qd), when they
- * are not current: every use of w->ch or w->U calls this first. */
-static void ensure_uh(struct work *w)
+/* The unary chain terms U from w->P (and qd), when they are not current
+ * (w->uh bit 1): split_merge needs only these. */
+static void ensure_u(struct work *w)
 {
-    if (w->uh) return;
+    if (w->uh & 1) return;
     const struct replib_data *D = w->D;
     int n = D->n, d = w->d;
-    double mu = w->mu;
     const double *P = w->P, *qd = w->qd;
     for (int f = 0; f < n; f++) {
         const double *p = P + (size_t)f * d;
         double *u = w->U + (size_t)f * d, zf = D->zz[f];
         for (int a = 0; a < d; a++) u[a] = zf + qd[a] - 2 * p[a];
     }
+    w->uh |= 1;
+}
+
+/* The unary and linear chain terms U, H, c from w->P (and qd), when they
+ * are not current (w->uh bits 1 and 2): every use of w->ch calls this
+ * first. */
+static void ensure_uh(struct work *w)
+{
+    if (w->uh == 3) return;
+    ensure_u(w);
+    const struct replib_data *D = w->D;
+    int n = D->n, d = w->d;
+    double mu = w->mu;
+    const double *P = w->P;
     if (mu > 0)
         for (int f = 0; f + 1 < n; f++) {
             double *h = w->H + (size_t)f * d;
@@ -678,7 +691,7 @@ static void ensure_uh(struct work *w)
                 h[a] = -2 * mu * (P[(size_t)(f + 1) * d + a] - P[(size_t)f * d + a]);
             w->c[f] = mu * D->dd[f];
         }
-    w->uh = 1;
+    w->uh = 3;
 }
 
 /* The chain terms from w->P and w->Q: qd and T now, U, H and c marked
@@ -1429,7 +1442,7 @@ static int split_merge(const struct replib_data *D, const struct replib_opts *o,
                        struct scratch *x, struct rng *r)
 {
     int n = D->n, d = o->d, nfix = D->nfix, L = 2 + (int)log((double)d);
-    ensure_uh(w);
+    ensure_u(w);
     const double *U = w->U;
     int *l = x->l, *cnt = x->cnt;
     memset(cnt, 0, sizeof(int) * d);
