@@ -19,16 +19,19 @@ extern void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, 
 extern void dgels_(const char *trans, const int *m, const int *n, const int *nrhs, double *a, const int *lda,
                    double *b, const int *ldb, double *work, const int *lwork, int *info);
 
-#define BATCH 256         /* frames per co-range update (W is read and written once per batch) */
+#define BATCH 128         /* frames per co-range update (W is read and written once per batch);
+                             two batch buffers: one filled while the other is summed */
 #define STRIP 256         /* columns of W per cache block */
 #define TILE 256          /* coordinates of the batch transposed at a time */
 
 static void keeper_stop(struct replib_sketch *S);
+static int flush_wait(struct replib_sketch *S);
 static void keeper_start(struct replib_sketch *S);
 
 void replib_sketch_free(struct replib_sketch *S)
 {
     keeper_stop(S);
+    flush_wait(S);
     free(S->ref); free(S->sw); free(S->om); free(S->Y); free(S->W);
     free(S->cut); free(S->Xk); free(S->xbase); free(S->kb); free(S->zb); free(S->zprev); free(S->V);
     free(S->zt); free(S->yt);
@@ -63,7 +66,7 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     S->ref = malloc(sizeof(double) * m3);
     S->om = malloc(sizeof(int) * (size_t)m3 * S->zeta);
     S->W = calloc((size_t)S->s * m3, sizeof(double));
-    S->zb = malloc(sizeof(double) * (size_t)BATCH * m3);
+    S->zb = malloc(sizeof(double) * 2 * (size_t)BATCH * m3);
     S->zt = malloc(sizeof(double) * (size_t)BATCH * TILE);
     S->yt = malloc(sizeof(double) * (size_t)BATCH * k);
     S->zprev = malloc(sizeof(double) * 3 * (size_t)m3);     /* keep_chunk's scratch */
@@ -113,7 +116,7 @@ static inline void vadd(double *restrict y, const double *restrict x, int n, dou
  * pl[po[i] .. po[i+1]-1], 2 frame + (sign < 0)), so every value of W sums
  * its frames in frame order whatever the batching, and the row's strip
  * stays in L1 while the batch's strip is in L2 */
-struct wjob { struct replib_sketch *S; const int *po, *pl; int nb; };
+struct wjob { struct replib_sketch *S; const double *zb; const int *po, *pl; int nb; };
 
 SKETCH_SIMD
 static void w_update_strips(struct wjob *j)
@@ -126,7 +129,7 @@ static void w_update_strips(struct wjob *j)
             double *w = S->W + (size_t)i * m3 + t0;
             for (int q = j->po[i]; q < j->po[i + 1]; q++) {
                 int e = j->pl[q];
-                vadd(w, S->zb + (size_t)(e >> 1) * m3 + t0, len, e & 1 ? -1.0 : 1.0);
+                vadd(w, j->zb + (size_t)(e >> 1) * m3 + t0, len, e & 1 ? -1.0 : 1.0);
             }
         }
     }
@@ -164,13 +167,13 @@ static void y_tile(const struct replib_sketch *S, const double *zt, int t0, int 
     }
 }
 
-/* The buffered frames into the sketches: Y_b = Z_b Omega (on the batch
- * transposed by tiles) here, and W += Psi_b Z_b on a second thread
- * meanwhile (they write disjoint arrays; each is summed in a fixed order:
- * the bytes do not depend on the threads). */
-static int flush(struct replib_sketch *S)
+/* The batch zb (nb frames from f0) into the sketches: Y_b = Z_b Omega
+ * (on the batch transposed by tiles) here, and W += Psi_b Z_b on a second
+ * thread meanwhile (they write disjoint arrays; each is summed in a fixed
+ * order: the bytes do not depend on the threads). */
+static int flush_batch(struct replib_sketch *S, const double *zb, int nb, int f0)
 {
-    int nb = S->nb, m3 = S->m3, k = S->k, f0 = S->n - nb, zp = S->zpsi, s = S->s;
+    int m3 = S->m3, k = S->k, zp = S->zpsi, s = S->s;
     if (nb == 0) return 0;
     int *pc = malloc(sizeof(int) * (size_t)nb * zp), *po = calloc(s + 1, sizeof(int));
     int *pl = malloc(sizeof(int) * (size_t)nb * zp);
@@ -190,7 +193,7 @@ static int flush(struct replib_sketch *S)
         }
     for (int i = s; i > 0; i--) po[i] = po[i - 1];
     po[0] = 0;
-    struct wjob job = {S, po, pl, nb};
+    struct wjob job = {S, zb, po, pl, nb};
     pthread_t th;
     int threaded = pthread_create(&th, NULL, w_update, &job) == 0;
     if (!threaded) w_update(&job);
@@ -203,7 +206,7 @@ static int flush(struct replib_sketch *S)
             for (int b0 = 0; b0 < nb; b0 += 16) {
                 int u1 = u0 + 16 < t1 ? u0 + 16 : t1, b1 = b0 + 16 < nb ? b0 + 16 : nb;
                 for (int t = u0; t < u1; t++)
-                    for (int b = b0; b < b1; b++) zt[(size_t)(t - t0) * nb + b] = S->zb[(size_t)b * m3 + t];
+                    for (int b = b0; b < b1; b++) zt[(size_t)(t - t0) * nb + b] = zb[(size_t)b * m3 + t];
             }
         y_tile(S, zt, t0, t1, nb, yt, cnt, list);
     }
@@ -211,8 +214,57 @@ static int flush(struct replib_sketch *S)
         for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b) * k + j] = yt[(size_t)j * nb + b];
     if (threaded) pthread_join(th, NULL);
     free(pc); free(po); free(pl); free(cnt); free(list);
-    S->nb = 0;
     return 0;
+}
+
+/* The batches are summed on a helper thread while the caller fills the
+ * other half of zb; at most one is pending.  The caller waits for it
+ * (flush_wait) before Y moves (grow), at the end, and before the next. */
+struct flusher {
+    struct replib_sketch *S;
+    const double *zb;
+    int nb, f0, rc;
+    char msg[512];
+    pthread_t th;
+};
+
+static void *flusher_main(void *arg)
+{
+    struct flusher *F = arg;
+    F->rc = flush_batch(F->S, F->zb, F->nb, F->f0);
+    if (F->rc < 0) snprintf(F->msg, sizeof F->msg, "%s", cm_errmsg());
+    return NULL;
+}
+
+static int flush_wait(struct replib_sketch *S)
+{
+    struct flusher *F = S->flusher;
+    if (!F) return 0;
+    pthread_join(F->th, NULL);
+    int rc = F->rc;
+    if (rc < 0) cm_seterr("%s", F->msg);
+    free(F);
+    S->flusher = NULL;
+    return rc;
+}
+
+/* hand the buffered batch over (summed on the helper, or here if there is
+ * none) and start filling the other half of zb */
+static int flush(struct replib_sketch *S)
+{
+    int nb = S->nb, f0 = S->n - nb;
+    if (nb == 0) return 0;
+    if (flush_wait(S) < 0) return -1;
+    const double *zb = S->zb + (size_t)S->zhalf * BATCH * S->m3;
+    S->zhalf ^= 1;
+    S->nb = 0;
+    struct flusher *F = calloc(1, sizeof *F);
+    if (F) {
+        F->S = S; F->zb = zb; F->nb = nb; F->f0 = f0;
+        if (pthread_create(&F->th, NULL, flusher_main, F) == 0) { S->flusher = F; return 0; }
+        free(F);
+    }
+    return flush_batch(S, zb, nb, f0);
 }
 
 static int grow(struct replib_sketch *S)
@@ -434,12 +486,13 @@ static double center_row(const double *restrict x, const double *restrict ref, c
 int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
 {
     int m3 = S->m3, f = S->n;
-    double zz = center_row(x, f ? S->ref : x, S->sw, m3, S->zb + (size_t)S->nb * m3);
+    double zz = center_row(x, f ? S->ref : x, S->sw, m3, S->zb + ((size_t)S->zhalf * BATCH + S->nb) * m3);
     if (!(zz <= 1.7976931348623157e308))     /* a coordinate is not finite (or the squares overflow) */
         for (int t = 0; t < m3; t++)
             if (!isfinite(x[t])) return cm_seterr("frame %d: vertex %d: coordinate is not finite", f, t / 3);
     if (f == S->cap) {
-        keeper_wait(S);             /* grow moves the bases */
+        keeper_wait(S);             /* grow moves the bases and Y */
+        if (flush_wait(S) < 0) return -1;
         if (grow(S) < 0) return cm_seterr("replib_sketch: out of memory at frame %d", f);
     }
     if (f == 0) {
@@ -484,7 +537,7 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
 
 int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
 {
-    if (flush(S) < 0) return -1;
+    if (flush(S) < 0 || flush_wait(S) < 0) return -1;
     keeper_stop(S);                 /* the chunks handed over are encoded */
     if (S->keeping && S->n % REPLIB_KEEP_CHUNK)
         keep_chunk(S, S->n, S->kb + (size_t)((S->n - 1) / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * S->m3);
