@@ -9,6 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <pthread.h>
+#include <sys/mman.h>
+#ifndef MADV_POPULATE_WRITE
+#define MADV_POPULATE_WRITE 23      /* Linux 5.14 */
+#endif
 
 extern void dgeqrf_(const int *m, const int *n, double *a, const int *lda, double *tau, double *work,
                     const int *lwork, int *info);
@@ -523,7 +527,17 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
                  * helper encodes chunk c - 1 from the other half */
                 double *kb = S->kb + (size_t)(f / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * m3;
                 memcpy(kb + (size_t)(f % REPLIB_KEEP_CHUNK) * m3, x, sizeof(double) * m3);
-                if (f % REPLIB_KEEP_CHUNK == REPLIB_KEEP_CHUNK - 1) keeper_post(S, f + 1, kb);
+                if (f % REPLIB_KEEP_CHUNK == REPLIB_KEEP_CHUNK - 1) {
+                    keeper_post(S, f + 1, kb);
+                    /* the next chunk's kept frames faulted in here, so
+                     * the helper finds them mapped (the pages are zeroed
+                     * by the kernel either way; contents are not touched;
+                     * an older kernel refuses and they fault as before) */
+                    size_t a = (size_t)(f + 1) * m3 * 4, e = (size_t)(f + 1 + REPLIB_KEEP_CHUNK) * m3 * 4;
+                    if (e > (size_t)S->xcap * m3 * 4) e = (size_t)S->xcap * m3 * 4;
+                    uintptr_t p0 = ((uintptr_t)S->Xk + a) & ~(uintptr_t)4095, p1 = ((uintptr_t)S->Xk + e) & ~(uintptr_t)4095;
+                    if (p1 > p0) madvise((void *)p0, p1 - p0, MADV_POPULATE_WRITE);
+                }
             }
         }
     }
