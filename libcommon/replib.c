@@ -658,6 +658,7 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
 
 /* The unary chain terms U from w->P (and qd), when they are not current
  * (w->uh bit 1): split_merge needs only these. */
+__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
 static void ensure_u(struct work *w)
 {
     if (w->uh & 1) return;
@@ -696,6 +697,7 @@ static void ensure_uh(struct work *w)
 
 /* The chain terms from w->P and w->Q: qd and T now, U, H and c marked
  * stale (ensure_uh). */
+__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
 static void derive_costs(const struct replib_data *D, double mu, struct work *w)
 {
     int n = D->n, d = w->d;
@@ -876,6 +878,7 @@ static int costs_incremental(const struct replib_data *D, const struct lstate *s
  * label is not among them and has no room left is selected again): the
  * label steps after an incremental library update, where the costs moved
  * little, skip the selection. */
+__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
 static double dp_candidates(struct work *w, int K, int *l)
 {
     const struct replib_data *D = w->D;
