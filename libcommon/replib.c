@@ -1852,6 +1852,16 @@ struct eval_job {
     int worst;
 };
 
+/* frame f of the kept 32-bit frames in double (b + kept q, or b + kept;
+ * element-wise, vectorized) */
+__attribute__((optimize("O3"), target_clones("avx512f", "avx2", "default")))
+static void kept_frame(const double *restrict b, const int32_t *restrict xi, const float *restrict xf, double q,
+                       size_t m3, double *restrict out)
+{
+    if (xi) for (size_t k = 0; k < m3; k++) out[k] = b[k] + xi[k] * q;
+    else for (size_t k = 0; k < m3; k++) out[k] = b[k] + xf[k];
+}
+
 static void eval_half(void *ctx, int job)
 {
     struct eval_job *j = ctx;
@@ -1870,17 +1880,13 @@ static void eval_half(void *ctx, int job)
     if (!X) {       /* two frames in double at a time */
         xb = malloc(sizeof(double) * 2 * m3);
         if (!xb) { j->oom = 1; return; }
-#define KEPT(f, k) ((xbase ? xbase[(size_t)((f) / REPLIB_KEEP_CHUNK) * m3 + (k)] : ref[k]) + \
-                   (Xi ? Xi[(size_t)(f) * m3 + (k)] * q : Xf[(size_t)(f) * m3 + (k)]))
-        if (job == 0)
-            for (size_t k = 0; k < m3; k++) xb[k] = KEPT(0, k);
-        else
-            for (size_t k = 0; k < m3; k++) xb[m3 + k] = KEPT(0, k);
+#define KEPT(f, out) kept_frame(xbase ? xbase + (size_t)((f) / REPLIB_KEEP_CHUNK) * m3 : ref, \
+                                Xi ? Xi + (size_t)(f) * m3 : NULL, Xi ? NULL : Xf + (size_t)(f) * m3, q, m3, out)
+        KEPT(0, job == 0 ? xb : xb + m3);
     }
     for (int f = 0; f < n; f++) {
         if (job == 0) {
-            if (xb && f > 0)
-                for (size_t k = 0; k < m3; k++) xb[k] = KEPT(f, k);
+            if (xb && f > 0) KEPT(f, xb);
             const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
             double fm = 0;
             for (int i = 0; i < nv; i++) {
@@ -1896,8 +1902,7 @@ static void eval_half(void *ctx, int job)
         }
         if (xb) {
             memcpy(xb, xb + m3, sizeof(double) * m3);
-            if (f + 1 < n)
-                for (size_t k = 0; k < m3; k++) xb[m3 + k] = KEPT(f + 1, k);
+            if (f + 1 < n) KEPT(f + 1, xb + m3);
 #undef KEPT
         }
         const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
