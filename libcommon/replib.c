@@ -916,6 +916,13 @@ static double dp_candidates(struct work *w, int K, int *l)
         const double *p = P + (size_t)f * d;
         double zf = zz[f];
         int *c = cand + (size_t)f * W, k = 0, in = 0, m = d;
+        if (reuse && f + 4 < n) {
+            /* the kept candidates' costs of a frame 4 ahead: P is
+             * streamed from memory and these loads are scattered */
+            const int *cf = cand + (size_t)(f + 4) * W;
+            const double *pf = P + (size_t)(f + 4) * d;
+            for (int j = 0; j < nc[f + 4]; j++) __builtin_prefetch(pf + cf[j]);
+        }
         if (reuse) {
             k = nc[f];
             for (int j = 0; j < k; j++) in |= c[j] == l[f];
