@@ -518,11 +518,10 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
                 if (nc > lim) nc = lim;
                 keeper_wait(S);
                 nx = S->xcap ? realloc(S->Xk, nc * m3 * 4) : big_alloc(nc * m3 * 4);
-                if (nx) S->xcap = (int)nc;
+                if (nx) { S->xcap = (int)nc; S->Xk = nx; }     /* the helper is idle */
             }
             if (!nx) { keeper_wait(S); free(S->Xk); S->Xk = NULL; S->keeping = 0; }
             else {
-                S->Xk = nx;
                 /* chunk c is buffered in half c % 2 of kb while the
                  * helper encodes chunk c - 1 from the other half */
                 double *kb = S->kb + (size_t)(f / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * m3;
