@@ -22,7 +22,7 @@
 # the search on all frames; about 15 min on 2 shared cores).
 set -u
 OLDREV=361189f
-PREREV=c460fba
+PREREV=aa20334
 SHARED=${SHARED_DATA:-$ROOT/../shared/data}
 T=$BENCH_TMP/dict
 mkdir -p "$T"
@@ -39,26 +39,27 @@ src() { # name archive
 src elephant elephant-walk-457 && src facecap facecap-335 || exit 1
 # earlier releases, from git: dict-learn and replib as they were, built over
 # today's libcommon (their own headers first).  $OLDREV: before issue 12;
-# $PREREV: the release before the incremental descent (library and costs
-# updated from the changed labels' pieces), the 8-candidate label steps and
-# the lazily derived costs (the "current release" of the speed lines;
-# "energy vs $PREREV" compares the energies of the same options and seed).
-build_rev() { # rev -> path of the binary, or empty
-    b=$T/dict-learn-$1
-    if [ ! -x "$b" ] && git -C "$ROOT" cat-file -e $1 2>/dev/null; then
-        mkdir -p "$T/src-$1" &&
-        for f in tools/dict-learn.c libcommon/replib.c libcommon/replib.h libcommon/replib_sketch.c libcommon/replib_sketch.h; do
-            git -C "$ROOT" show $1:$f >"$T/src-$1/$(basename $f)" 2>/dev/null || rm -f "$T/src-$1/$(basename $f)"
+# $PREREV: the release before the threaded library, report, sketch and
+# text writer (the "current release" of the speed lines; its MESH writer
+# and number formatter are its own too; "energy vs $PREREV" compares the
+# energies of the same options and seed: 1 when they are identical).
+build_rev() { # rev [more libcommon files of that rev] -> path of the binary, or empty
+    r=$1; shift
+    b=$T/dict-learn-$r
+    if [ ! -x "$b" ] && git -C "$ROOT" cat-file -e $r 2>/dev/null; then
+        mkdir -p "$T/src-$r" &&
+        for f in tools/dict-learn.c libcommon/replib.c libcommon/replib.h libcommon/replib_sketch.c libcommon/replib_sketch.h "$@"; do
+            git -C "$ROOT" show $r:$f >"$T/src-$r/$(basename $f)" 2>/dev/null || rm -f "$T/src-$r/$(basename $f)"
         done &&
-        ${CC:-cc} -O2 -std=c11 -pthread -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -I"$T/src-$1" -I"$ROOT/libcommon" \
-            -o "$b" "$T/src-$1/dict-learn.c" "$T/src-$1/replib.c" $(ls "$T/src-$1/replib_sketch.c" 2>/dev/null) "$ROOT/build/libcommon.a" \
+        ${CC:-cc} -O2 -std=c11 -pthread -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -I"$T/src-$r" -I"$ROOT/libcommon" \
+            -o "$b" $(ls "$T/src-$r"/*.c) "$ROOT/build/libcommon.a" \
             -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow -lOpenMeshCore -lassimp -lpng -lz \
-            -lgmp -lmpfr -lstdc++ -lm >&2 || { echo "b-dict: cannot build release $1" >&2; b=; }
+            -lgmp -lmpfr -lstdc++ -lm >&2 || { echo "b-dict: cannot build release $r" >&2; b=; }
     fi
     [ -x "$b" ] && echo "$b"
 }
 OLD=$(build_rev $OLDREV)
-PRE=$(build_rev $PREREV)
+PRE=$(build_rev $PREREV libcommon/mesh.c libcommon/mesh.h libcommon/numparse.c libcommon/numparse.h)
 timed() { # prints "wall cpu peak_MB energy learn_wall" of dict-learn-like command "$@" --report
     /usr/bin/time -f "%e %U %S %M" -o "$T/time" "$@" -v --report "$T/rep" >/dev/null 2>"$T/err" ||
         { sed 's/^/   /' "$T/err" | tail -3 >&2; return 1; }

@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <pthread.h>
+#include <unistd.h>
 
 #define MAX_COUNT 200000000
 /* the longest text line accepted, '\n' not counted (stopmo-mesh(5)) */
@@ -601,13 +603,142 @@ int mesh_writer_close(struct mesh_writer *w)
     return 0;
 }
 
+/* ---- whole-mesh text output, formatted on several threads ----
+ * The frames are cut into jobs of up to TEXT_JOB vertex lines (the first
+ * job of a frame carries its header); up to TEXT_SLOTS jobs ahead of the
+ * writer are formatted by helper threads into a ring of buffers, and the
+ * calling thread writes them in order (formatting jobs itself while the
+ * next one is not ready).  Each number is formatted by format_double as
+ * mesh_writer_frame does: the same bytes for any number of threads. */
+#define TEXT_JOB 4096
+#define TEXT_SLOTS 8
+#define TEXT_THREADS 4
+
+struct text_pool {
+    const struct mesh *m;
+    int per_frame;              /* jobs per frame */
+    long total, claimed, written;
+    char *buf[TEXT_SLOTS];
+    size_t len[TEXT_SLOTS];
+    long ready[TEXT_SLOTS];     /* job formatted in the slot, -1 none */
+    int stop;
+    pthread_mutex_t lock;
+    pthread_cond_t cond;
+};
+
+static void text_job(struct text_pool *p, long j)
+{
+    const struct mesh *m = p->m;
+    int k = (int)(j / p->per_frame), part = (int)(j % p->per_frame);
+    int i0 = part * TEXT_JOB, i1 = i0 + TEXT_JOB < m->nv ? i0 + TEXT_JOB : m->nv;
+    char *o = p->buf[j % TEXT_SLOTS];
+    if (part == 0)
+        o += sprintf(o, "frame %d%s\n", k, m->cut && m->cut[k] && k > 0 ? " cut" : "");
+    const double *X = mesh_frame(m, k);
+    for (int i = i0; i < i1; i++)
+        for (int d = 0; d < 3; d++) {
+            o += format_double(o, X[3 * (size_t)i + d]);
+            *o++ = d < 2 ? ' ' : '\n';
+        }
+    p->len[j % TEXT_SLOTS] = (size_t)(o - p->buf[j % TEXT_SLOTS]);
+}
+
+/* claim the next job that fits the ring (lock held); -1 if none */
+static long text_claim(struct text_pool *p)
+{
+    if (p->stop || p->claimed >= p->total || p->claimed >= p->written + TEXT_SLOTS) return -1;
+    return p->claimed++;
+}
+
+static void *text_worker(void *arg)
+{
+    struct text_pool *p = arg;
+    pthread_mutex_lock(&p->lock);
+    for (;;) {
+        long j;
+        while ((j = text_claim(p)) < 0 && !p->stop && p->claimed < p->total)
+            pthread_cond_wait(&p->cond, &p->lock);
+        if (j < 0) break;
+        pthread_mutex_unlock(&p->lock);
+        text_job(p, j);
+        pthread_mutex_lock(&p->lock);
+        p->ready[j % TEXT_SLOTS] = j;
+        pthread_cond_broadcast(&p->cond);
+    }
+    pthread_mutex_unlock(&p->lock);
+    return NULL;
+}
+
+static int write_text_frames(FILE *f, const struct mesh *m)
+{
+    struct text_pool p;
+    memset(&p, 0, sizeof p);
+    p.m = m;
+    p.per_frame = m->nv > 0 ? (m->nv + TEXT_JOB - 1) / TEXT_JOB : 1;
+    p.total = (long)p.per_frame * m->nframes;
+    /* a number is at most 24 characters (format_double), a header 32 */
+    size_t cap = (size_t)TEXT_JOB * 3 * 25 + 64;
+    int nslots = p.total < TEXT_SLOTS ? (int)p.total : TEXT_SLOTS, rc = 0;
+    for (int i = 0; i < TEXT_SLOTS; i++) p.ready[i] = -1;
+    for (int i = 0; i < nslots; i++)
+        if (!(p.buf[i] = malloc(cap))) {
+            for (int t = 0; t < i; t++) free(p.buf[t]);
+            return cm_seterr("out of memory for the output buffers");
+        }
+    pthread_mutex_init(&p.lock, NULL);
+    pthread_cond_init(&p.cond, NULL);
+    long c = sysconf(_SC_NPROCESSORS_ONLN);
+    int nth = c > 1 ? (int)c - 1 : 0;
+    if (nth > TEXT_THREADS - 1) nth = TEXT_THREADS - 1;
+    if (p.total < 2) nth = 0;
+    pthread_t th[TEXT_THREADS];
+    int started = 0;
+    for (int t = 0; t < nth; t++)
+        if (pthread_create(&th[started], NULL, text_worker, &p) == 0) started++;
+    pthread_mutex_lock(&p.lock);
+    for (long j = 0; j < p.total; j++) {
+        while (p.ready[j % TEXT_SLOTS] != j) {
+            long mine = text_claim(&p);
+            if (mine >= 0) {
+                pthread_mutex_unlock(&p.lock);
+                text_job(&p, mine);
+                pthread_mutex_lock(&p.lock);
+                p.ready[mine % TEXT_SLOTS] = mine;
+            } else
+                pthread_cond_wait(&p.cond, &p.lock);
+        }
+        pthread_mutex_unlock(&p.lock);
+        if (fwrite(p.buf[j % TEXT_SLOTS], 1, p.len[j % TEXT_SLOTS], f) != p.len[j % TEXT_SLOTS] || ferror(f))
+            rc = werr();
+        pthread_mutex_lock(&p.lock);
+        p.ready[j % TEXT_SLOTS] = -1;
+        p.written = j + 1;
+        if (rc < 0) p.stop = 1;
+        pthread_cond_broadcast(&p.cond);
+        if (rc < 0) break;
+    }
+    p.stop = 1;
+    pthread_cond_broadcast(&p.cond);
+    pthread_mutex_unlock(&p.lock);
+    for (int t = 0; t < started; t++) pthread_join(th[t], NULL);
+    pthread_mutex_destroy(&p.lock);
+    pthread_cond_destroy(&p.cond);
+    for (int i = 0; i < nslots; i++) free(p.buf[i]);
+    return rc;
+}
+
 int mesh_write(FILE *f, const struct mesh *m, int raw)
 {
     struct mesh_writer w;
     if (mesh_writer_open(&w, f, m->nv, m->nf, m->F, m->nframes, raw) < 0)
         return -1;
-    for (int k = 0; k < m->nframes; k++)
-        if (mesh_writer_frame(&w, mesh_frame(m, k), m->cut ? m->cut[k] : 0) < 0)
-            return -1;
+    if (!raw && (size_t)m->nv * m->nframes >= 2 * TEXT_JOB) {
+        /* big text output: formatted on the helper threads */
+        if (write_text_frames(f, m) < 0) return -1;
+        w.written = m->nframes;
+    } else
+        for (int k = 0; k < m->nframes; k++)
+            if (mesh_writer_frame(&w, mesh_frame(m, k), m->cut ? m->cut[k] : 0) < 0)
+                return -1;
     return mesh_writer_close(&w);
 }

@@ -44,7 +44,10 @@ void mesh_free(struct mesh *m);
 
 /* Read a whole stream.  path NULL or "-" reads stdin. */
 int mesh_read(const char *path, struct mesh *m);
-/* Write a whole stream (raw != 0: binary variant). */
+/* Write a whole stream (raw != 0: binary variant).  A big text stream
+ * (2 x 4096 vertex lines or more) is formatted on up to 4 threads (one per
+ * core) while this one writes, in order: the bytes are those of
+ * mesh_writer_frame, frame by frame. */
 int mesh_write(FILE *f, const struct mesh *m, int raw);
 
 /* Number of clips (1 + number of cut marks after frame 0). */

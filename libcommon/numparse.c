@@ -383,12 +383,42 @@ static int format_fast(char *buf, double x)
     /* a padded scratch buffer, so the check reads with parse_double_padded */
     char tmp[64] = {0};
     uint64_t N17 = (uint64_t)llrintl(y);
+    /* Which candidates read back to x, decided without converting them:
+     * a decimal reads back to x iff it lies within half an ulp of x (a
+     * tie goes to the even significand).  In the units of y that half ulp
+     * is h = 2^(e2-54) 10^(16-e), and candidate N 10^(ee-P+1) is the
+     * integer c = N 10^(17-P+ee-e); y and h carry at most two roundings
+     * of extended precision (|16 - e| <= 54), so |c - y| is within 2^-6 of
+     * exact (y < 2^57), and |c - y| more than 1/16 away from h decides
+     * exactly.  Powers of two (a nearer neighbour below) and the band
+     * around h are decided as before, by converting the candidate. */
+    int sure = (bits & 0x000fffffffffffffULL) != 0 && e >= -38 && e <= 70;
+    long double h = 0;
+    if (sure) {     /* 2^(e2-54) in the x87 layout (normal: e2 - 54 >= -1075), then scaled */
+        unsigned char hb[sizeof(long double)] = {0};
+        uint64_t sig = 1ULL << 63;
+        uint16_t ex = (uint16_t)(16383 + e2 - 54);
+        memcpy(hb, &sig, 8);
+        memcpy(hb + 8, &ex, 2);
+        memcpy(&h, hb, sizeof h);
+        h = scale10(h, 16 - e);
+    }
     for (int P = 15; P <= 17; P++) {
         /* the shorter candidates round the 17-digit integer (a rare
          * double rounding only costs the verification below) */
         uint64_t N = P == 17 ? N17 : P == 16 ? (N17 + 5) / 10 : (N17 + 50) / 100;
         int ee = e;
         if ((long double)N >= pow10tabl[P]) { N /= 10; ee++; }
+        if (sure) {
+            long double c = (long double)N * pow10tabl[17 - P + ee - e], dist = fabsl(c - y);
+            if (dist > h + 0.0625L)
+                continue;                   /* reads back to another double */
+            if (dist < h - 0.0625L) {       /* reads back to x */
+                int n = layout_g(tmp, x < 0, N, P, ee);
+                memcpy(buf, tmp, (size_t)n + 1);
+                return n;
+            }
+        }
         /* the decimal N 10^(ee-P+1) read back without its text: the same
          * correctly rounded conversion parse_double makes of it; the text
          * is laid out only for the candidate that verifies (or when the

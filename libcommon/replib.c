@@ -4,6 +4,7 @@
 #include "chainlabel.h"
 #include "cm_error.h"
 #include "rng.h"
+#include "parallel.h"
 #include <cblas.h>
 #include <math.h>
 #include <stdlib.h>
@@ -472,49 +473,73 @@ static int lstate_apply(const struct lstate *s, const double *Y1, int n1, const 
     return 0;
 }
 
-/* x_g - ref of the kept 32-bit frame g (fixed point or float), in double */
-static void kept_row(const struct replib_data *D, int g, double *row)
+/* library_out from the kept 32-bit frames, one block of columns per job:
+ * every value is computed with the same operations in the same order as
+ * frame by frame (x_g - ref = (b - ref) + kept q, then the right-hand
+ * side entries in order), so the
+ * bytes do not depend on the blocking or the threads; a block of the nf
+ * solved rows stays in cache while the entries stream through it. */
+#define KEPT_COLS 2048
+struct kept_job {
+    const struct replib_data *D;
+    const struct lstate *s;
+    double *R, *tmp;
+};
+
+/* o[t] (+)= v ((b[t] - ref[t]) + x[t] q) for t in [0, len), x int32
+ * (xi) or float (xf); add = 0: o = ref + (...) instead (a row copy) */
+__attribute__((optimize("O3")))
+static void kept_axpy(double *restrict o, double v, const double *restrict b, const double *restrict ref,
+                      const int32_t *restrict xi, const float *restrict xf, double q, size_t len, int add)
 {
-    size_t m3 = D->m3;
-    const double *b = D->xbase ? D->xbase + (size_t)(g / REPLIB_KEEP_CHUNK) * m3 : D->ref;
-    if (D->Xi) {
-        const int32_t *x = D->Xi + (size_t)g * m3;
-        for (size_t t = 0; t < m3; t++) row[t] = (b[t] - D->ref[t]) + x[t] * D->xstep;
-    } else {
-        const float *x = D->Xf + (size_t)g * m3;
-        for (size_t t = 0; t < m3; t++) row[t] = (b[t] - D->ref[t]) + x[t];
+    if (!add && xi) for (size_t t = 0; t < len; t++) o[t] = ref[t] + ((b[t] - ref[t]) + xi[t] * q);
+    else if (!add) for (size_t t = 0; t < len; t++) o[t] = ref[t] + ((b[t] - ref[t]) + xf[t]);
+    else if (xi) for (size_t t = 0; t < len; t++) o[t] += v * ((b[t] - ref[t]) + xi[t] * q);
+    else for (size_t t = 0; t < len; t++) o[t] += v * ((b[t] - ref[t]) + xf[t]);
+}
+
+static void kept_block(void *ctx, int i)
+{
+    const struct kept_job *j = ctx;
+    const struct replib_data *D = j->D;
+    const struct lstate *s = j->s;
+    size_t m3 = D->m3, t0 = (size_t)i * KEPT_COLS, len = t0 + KEPT_COLS < m3 ? KEPT_COLS : m3 - t0;
+    const double *ref = D->ref + t0;
+#define BASE(g) ((D->xbase ? D->xbase + (size_t)((g) / REPLIB_KEEP_CHUNK) * m3 : D->ref) + t0)
+#define XI(g) (D->Xi ? D->Xi + (size_t)(g) * m3 + t0 : NULL)
+#define XF(g) (D->Xi ? NULL : D->Xf + (size_t)(g) * m3 + t0)
+    for (int a = 0; a < s->d; a++) {
+        int g = s->src[a];
+        if (g >= 0) kept_axpy(j->R + (size_t)a * m3 + t0, 0, BASE(g), ref, XI(g), XF(g), D->xstep, len, 0);
     }
+    for (int k = 0; k < s->nnz; k++) {
+        int g = s->ci[k];
+        kept_axpy(j->tmp + (size_t)s->ri[k] * m3 + t0, s->v[k], BASE(g), ref, XI(g), XF(g), D->xstep, len, 1);
+    }
+#undef BASE
+#undef XI
+#undef XF
 }
 
 /* The library in model coordinates (d by 3#V): from the frames (double or
  * single precision), or from the reduced coordinates and their basis. */
-static int library_out(const struct replib_data *D, const struct lstate *s, double *R)
+static int library_out(const struct replib_data *D, const struct lstate *s, double *R, int threads)
 {
     int n = D->n, m3 = D->m3, d = s->d;
     if (D->X) return lstate_apply(s, D->X, n, D->Rfix, m3, R);
     if (D->Xf || D->Xi) {
         /* rows are frames only (no fixed pieces with the sketch) */
-        double *row = malloc(sizeof(double) * m3);
-        if (!row) return cm_seterr("replib: out of memory");
         int nf = s->nfree;
         double *tmp = nf ? calloc((size_t)nf * m3, sizeof(double)) : NULL;
-        if (nf && !tmp) { free(row); return cm_seterr("replib: out of memory"); }
-        for (int a = 0; a < d; a++)
-            if (s->src[a] >= 0) {
-                kept_row(D, s->src[a], row);
-                for (int t = 0; t < m3; t++) R[(size_t)a * m3 + t] = D->ref[t] + row[t];
-            }
-        for (int k = 0; k < s->nnz; k++) {
-            double v = s->v[k], *o = tmp + (size_t)s->ri[k] * m3;
-            kept_row(D, s->ci[k], row);
-            for (int t = 0; t < m3; t++) o[t] += v * row[t];
-        }
+        if (nf && !tmp) return cm_seterr("replib: out of memory");
+        struct kept_job job = {D, s, R, tmp};
+        parallel_run((m3 + KEPT_COLS - 1) / KEPT_COLS, threads, kept_block, &job);
         if (nf) lsolve(s, m3, tmp);
         for (int p = 0; p < nf; p++) {
             double *o = R + (size_t)s->fidx[p] * m3;
             for (int t = 0; t < m3; t++) o[t] = D->ref[t] + tmp[(size_t)p * m3 + t];
         }
-        free(tmp); free(row);
+        free(tmp);
         return 0;
     }
     /* sketch only: r_a = ref + (C Zr)_a V^T / sqrt(w) */
@@ -552,7 +577,7 @@ struct work {
      * the candidate label steps read P directly */
     const struct replib_data *D;
     double mu;
-    int uh;
+    int uh;                     /* bit 1: U current, bit 2: H and c current */
     int *cand, *nc;             /* n by ncand + 1, n: the candidates of the last candidate label step */
     double *hs;                 /* n by ncand + 1: its DP values */
     int cand_reuse;             /* 1: the next candidate label step keeps those candidates */
@@ -631,20 +656,34 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
     return 0;
 }
 
-/* The unary and linear chain terms U, H, c from w->P (and qd), when they
- * are not current: every use of w->ch or w->U calls this first. */
-static void ensure_uh(struct work *w)
+/* The unary chain terms U from w->P (and qd), when they are not current
+ * (w->uh bit 1): split_merge needs only these. */
+__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
+static void ensure_u(struct work *w)
 {
-    if (w->uh) return;
+    if (w->uh & 1) return;
     const struct replib_data *D = w->D;
     int n = D->n, d = w->d;
-    double mu = w->mu;
     const double *P = w->P, *qd = w->qd;
     for (int f = 0; f < n; f++) {
         const double *p = P + (size_t)f * d;
         double *u = w->U + (size_t)f * d, zf = D->zz[f];
         for (int a = 0; a < d; a++) u[a] = zf + qd[a] - 2 * p[a];
     }
+    w->uh |= 1;
+}
+
+/* The unary and linear chain terms U, H, c from w->P (and qd), when they
+ * are not current (w->uh bits 1 and 2): every use of w->ch calls this
+ * first. */
+static void ensure_uh(struct work *w)
+{
+    if (w->uh == 3) return;
+    ensure_u(w);
+    const struct replib_data *D = w->D;
+    int n = D->n, d = w->d;
+    double mu = w->mu;
+    const double *P = w->P;
     if (mu > 0)
         for (int f = 0; f + 1 < n; f++) {
             double *h = w->H + (size_t)f * d;
@@ -653,11 +692,12 @@ static void ensure_uh(struct work *w)
                 h[a] = -2 * mu * (P[(size_t)(f + 1) * d + a] - P[(size_t)f * d + a]);
             w->c[f] = mu * D->dd[f];
         }
-    w->uh = 1;
+    w->uh = 3;
 }
 
 /* The chain terms from w->P and w->Q: qd and T now, U, H and c marked
  * stale (ensure_uh). */
+__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
 static void derive_costs(const struct replib_data *D, double mu, struct work *w)
 {
     int n = D->n, d = w->d;
@@ -838,6 +878,7 @@ static int costs_incremental(const struct replib_data *D, const struct lstate *s
  * label is not among them and has no room left is selected again): the
  * label steps after an incremental library update, where the costs moved
  * little, skip the selection. */
+__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
 static double dp_candidates(struct work *w, int K, int *l)
 {
     const struct replib_data *D = w->D;
@@ -875,6 +916,13 @@ static double dp_candidates(struct work *w, int K, int *l)
         const double *p = P + (size_t)f * d;
         double zf = zz[f];
         int *c = cand + (size_t)f * W, k = 0, in = 0, m = d;
+        if (reuse && f + 4 < n) {
+            /* the kept candidates' costs of a frame 4 ahead: P is
+             * streamed from memory and these loads are scattered */
+            const int *cf = cand + (size_t)(f + 4) * W;
+            const double *pf = P + (size_t)(f + 4) * d;
+            for (int j = 0; j < nc[f + 4]; j++) __builtin_prefetch(pf + cf[j]);
+        }
         if (reuse) {
             k = nc[f];
             for (int j = 0; j < k; j++) in |= c[j] == l[f];
@@ -1404,7 +1452,7 @@ static int split_merge(const struct replib_data *D, const struct replib_opts *o,
                        struct scratch *x, struct rng *r)
 {
     int n = D->n, d = o->d, nfix = D->nfix, L = 2 + (int)log((double)d);
-    ensure_uh(w);
+    ensure_u(w);
     const double *U = w->U;
     int *l = x->l, *cnt = x->cnt;
     memset(cnt, 0, sizeof(int) * d);
@@ -1654,7 +1702,7 @@ static int learn_run(const struct replib_data *D, const struct replib_opts *o, s
         res->best_restart = best;
         res->energy = out[best].E; res->data = out[best].data; res->velocity = out[best].velocity;
         memcpy(res->labels, out[best].labels, sizeof(int) * n);
-        if (keep ? lstate_copy(keep, &out[best].s) < 0 : library_out(D, &out[best].s, res->R) < 0) rc = -1;
+        if (keep ? lstate_copy(keep, &out[best].s) < 0 : library_out(D, &out[best].s, res->R, o->threads) < 0) rc = -1;
     } else {
         const char *why = "";
         for (int t = 0; t < nth && !*why; t++) if (wk[t].rc) why = wk[t].msg;
@@ -1793,11 +1841,44 @@ double replib_label_timed(const struct replib_data *D, double lambda, enum repli
     return E;
 }
 
-static void evaluate(const double *X, const float *Xf, const int32_t *Xi, double q, const double *xbase,
-                     const double *ref, int n, int nv, const double *R,
-                     const int *l, const double *w, const unsigned char *cut, double lambda,
-                     struct replib_report *rep, double *frame_err)
+/* The report's two halves, each summed in frame and vertex order: job 0
+ * the data term and errors, job 1 the velocity term (they run on two
+ * threads; every sum has one fixed order, so the numbers do not depend
+ * on it). */
+struct eval_job {
+    const double *X, *xbase, *ref, *R, *w;
+    const float *Xf;
+    const int32_t *Xi;
+    double q;
+    int n, nv, oom;
+    const int *l;
+    const unsigned char *cut;
+    double *frame_err;
+    double data, se, me, vel, sv, mv;
+    long nvel;
+    int worst;
+};
+
+/* frame f of the kept 32-bit frames in double (b + kept q, or b + kept;
+ * element-wise, vectorized) */
+__attribute__((optimize("O3"), target_clones("avx512f", "avx2", "default")))
+static void kept_frame(const double *restrict b, const int32_t *restrict xi, const float *restrict xf, double q,
+                       size_t m3, double *restrict out)
 {
+    if (xi) for (size_t k = 0; k < m3; k++) out[k] = b[k] + xi[k] * q;
+    else for (size_t k = 0; k < m3; k++) out[k] = b[k] + xf[k];
+}
+
+static void eval_half(void *ctx, int job)
+{
+    struct eval_job *j = ctx;
+    const double *X = j->X, *xbase = j->xbase, *ref = j->ref, *R = j->R, *w = j->w;
+    const float *Xf = j->Xf;
+    const int32_t *Xi = j->Xi;
+    double q = j->q;
+    int n = j->n, nv = j->nv;
+    const int *l = j->l;
+    const unsigned char *cut = j->cut;
     size_t m3 = 3 * (size_t)nv;
     double data = 0, vel = 0, se = 0, sv = 0, me = 0, mv = 0;
     long nvel = 0;
@@ -1805,29 +1886,33 @@ static void evaluate(const double *X, const float *Xf, const int32_t *Xi, double
     double *xb = NULL;
     if (!X) {       /* two frames in double at a time */
         xb = malloc(sizeof(double) * 2 * m3);
-        if (!xb) { memset(rep, 0, sizeof *rep); rep->energy = NAN; return; }
-#define KEPT(f, k) ((xbase ? xbase[(size_t)((f) / REPLIB_KEEP_CHUNK) * m3 + (k)] : ref[k]) + \
-                   (Xi ? Xi[(size_t)(f) * m3 + (k)] * q : Xf[(size_t)(f) * m3 + (k)]))
-        for (size_t k = 0; k < m3; k++) xb[m3 + k] = KEPT(0, k);
+        if (!xb) { j->oom = 1; return; }
+#define KEPT(f, out) kept_frame(xbase ? xbase + (size_t)((f) / REPLIB_KEEP_CHUNK) * m3 : ref, \
+                                Xi ? Xi + (size_t)(f) * m3 : NULL, Xi ? NULL : Xf + (size_t)(f) * m3, q, m3, out)
+        KEPT(0, job == 0 ? xb : xb + m3);
     }
     for (int f = 0; f < n; f++) {
+        if (job == 0) {
+            if (xb && f > 0) KEPT(f, xb);
+            const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
+            double fm = 0;
+            for (int i = 0; i < nv; i++) {
+                double dx = x[3 * i] - r[3 * i], dy = x[3 * i + 1] - r[3 * i + 1], dz = x[3 * i + 2] - r[3 * i + 2];
+                double e2 = dx * dx + dy * dy + dz * dz, e = sqrt(e2);
+                data += (w ? w[i] : 1) * e2;
+                se += e;
+                if (e > fm) fm = e;
+            }
+            if (j->frame_err) j->frame_err[f] = fm;
+            if (fm > me) { me = fm; worst = f; }
+            continue;
+        }
         if (xb) {
             memcpy(xb, xb + m3, sizeof(double) * m3);
-            if (f + 1 < n)
-                for (size_t k = 0; k < m3; k++) xb[m3 + k] = KEPT(f + 1, k);
+            if (f + 1 < n) KEPT(f + 1, xb + m3);
 #undef KEPT
         }
         const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
-        double fm = 0;
-        for (int i = 0; i < nv; i++) {
-            double dx = x[3 * i] - r[3 * i], dy = x[3 * i + 1] - r[3 * i + 1], dz = x[3 * i + 2] - r[3 * i + 2];
-            double e2 = dx * dx + dy * dy + dz * dz, e = sqrt(e2);
-            data += (w ? w[i] : 1) * e2;
-            se += e;
-            if (e > fm) fm = e;
-        }
-        if (frame_err) frame_err[f] = fm;
-        if (fm > me) { me = fm; worst = f; }
         if (f + 1 < n && !(cut && cut[f + 1])) {
             const double *x1 = x + m3, *r1 = R + l[f + 1] * m3;
             for (size_t k = 0; k < m3; k += 3) {
@@ -1844,15 +1929,29 @@ static void evaluate(const double *X, const float *Xf, const int32_t *Xi, double
             nvel++;
         }
     }
-    rep->data = data;
-    rep->velocity = vel;
-    rep->energy = data + lambda / 2 * vel;
-    rep->mean_err = se / ((double)n * nv);
-    rep->max_err = me;
-    rep->mean_verr = nvel ? sv / ((double)nvel * nv) : 0;
-    rep->max_verr = mv;
-    rep->worst_frame = worst;
+    if (job == 0) { j->data = data; j->se = se; j->me = me; j->worst = worst; }
+    else { j->vel = vel; j->sv = sv; j->mv = mv; j->nvel = nvel; }
     free(xb);
+}
+
+static void evaluate(const double *X, const float *Xf, const int32_t *Xi, double q, const double *xbase,
+                     const double *ref, int n, int nv, const double *R,
+                     const int *l, const double *w, const unsigned char *cut, double lambda,
+                     struct replib_report *rep, double *frame_err)
+{
+    struct eval_job j = {0};
+    j.X = X; j.xbase = xbase; j.ref = ref; j.R = R; j.w = w; j.Xf = Xf; j.Xi = Xi; j.q = q;
+    j.n = n; j.nv = nv; j.l = l; j.cut = cut; j.frame_err = frame_err;
+    parallel_run(2, 2, eval_half, &j);
+    if (j.oom) { memset(rep, 0, sizeof *rep); rep->energy = NAN; return; }
+    rep->data = j.data;
+    rep->velocity = j.vel;
+    rep->energy = j.data + lambda / 2 * j.vel;
+    rep->mean_err = j.se / ((double)n * nv);
+    rep->max_err = j.me;
+    rep->mean_verr = j.nvel ? j.sv / ((double)j.nvel * nv) : 0;
+    rep->max_verr = j.mv;
+    rep->worst_frame = j.worst;
 }
 
 void replib_evaluate(const double *X, int n, int nv, const double *R, int d, const int *l,

@@ -148,7 +148,8 @@ struct replib_opts {
                                    library labels all frames (exact label step) and one restart
                                    on all frames from those labels (descent and search) follows,
                                    instead of o->restarts on all frames.  0: off */
-    int threads;                /* restarts run in parallel on this many threads (0: one per core);
+    int threads;                /* restarts run in parallel on this many threads (0: one per core),
+                                   and the library is built from kept 32-bit frames on as many;
                                    the result does not depend on it */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
     void *log_ctx;
@@ -188,7 +189,9 @@ double replib_label(const struct replib_data *D, double lambda, enum replib_meth
 double replib_label_timed(const struct replib_data *D, double lambda, enum replib_method method,
                           int *l, double *data, double *velocity, double *label_seconds);
 
-/* Direct evaluation of a labeling (no Gram tricks), in model units. */
+/* Direct evaluation of a labeling (no Gram tricks), in model units.  The
+ * data and the velocity terms are summed on two threads, each in frame
+ * and vertex order (the same numbers as one thread). */
 struct replib_report {
     double energy;              /* data + lambda/2 * velocity */
     double data;                /* sum_f |x_f - r_l|_W^2 */

@@ -9,6 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <pthread.h>
+#include <sys/mman.h>
+#ifndef MADV_POPULATE_WRITE
+#define MADV_POPULATE_WRITE 23      /* Linux 5.14 */
+#endif
 
 extern void dgeqrf_(const int *m, const int *n, double *a, const int *lda, double *tau, double *work,
                     const int *lwork, int *info);
@@ -19,12 +23,19 @@ extern void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, 
 extern void dgels_(const char *trans, const int *m, const int *n, const int *nrhs, double *a, const int *lda,
                    double *b, const int *ldb, double *work, const int *lwork, int *info);
 
-#define BATCH 256         /* frames per co-range update (W is read and written once per batch) */
+#define BATCH 128         /* frames per co-range update (W is read and written once per batch);
+                             two batch buffers: one filled while the other is summed */
 #define STRIP 256         /* columns of W per cache block */
-#define TILE 64           /* coordinates of the batch transposed at a time */
+#define TILE 256          /* coordinates of the batch transposed at a time */
+
+static void keeper_stop(struct replib_sketch *S);
+static int flush_wait(struct replib_sketch *S);
+static void keeper_start(struct replib_sketch *S);
 
 void replib_sketch_free(struct replib_sketch *S)
 {
+    keeper_stop(S);
+    flush_wait(S);
     free(S->ref); free(S->sw); free(S->om); free(S->Y); free(S->W);
     free(S->cut); free(S->Xk); free(S->xbase); free(S->kb); free(S->zb); free(S->zprev); free(S->V);
     free(S->zt); free(S->yt);
@@ -59,12 +70,12 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     S->ref = malloc(sizeof(double) * m3);
     S->om = malloc(sizeof(int) * (size_t)m3 * S->zeta);
     S->W = calloc((size_t)S->s * m3, sizeof(double));
-    S->zb = malloc(sizeof(double) * (size_t)BATCH * m3);
+    S->zb = malloc(sizeof(double) * 2 * (size_t)BATCH * m3);
     S->zt = malloc(sizeof(double) * (size_t)BATCH * TILE);
     S->yt = malloc(sizeof(double) * (size_t)BATCH * k);
     S->zprev = malloc(sizeof(double) * 3 * (size_t)m3);     /* keep_chunk's scratch */
     if (!S->ref || !S->om || !S->W || !S->zb || !S->zt || !S->yt || !S->zprev) goto oom;
-    if (S->keeping && !(S->kb = malloc(sizeof(double) * (size_t)REPLIB_KEEP_CHUNK * m3))) goto oom;
+    if (S->keeping && !(S->kb = malloc(sizeof(double) * 2 * (size_t)REPLIB_KEEP_CHUNK * m3))) goto oom;
     if (w) {
         double sum = 0;
         for (int i = 0; i < nv; i++) {
@@ -81,16 +92,11 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     struct rng g;
     rng_seed(&g, seed ^ 0x0e6a5eedULL);
     for (int t = 0; t < m3; t++) sparse_signs(&g, k, S->zeta, S->om + (size_t)t * S->zeta);
+    if (S->keeping) keeper_start(S);
     return 0;
 oom:
     replib_sketch_free(S);
     return cm_seterr("replib_sketch: out of memory (%d vertices, rank %d)", nv, k);
-}
-
-/* y += x or y -= x (n values; BLAS: vectorized where -O2 C is not) */
-static void vadd(double *y, const double *x, int n, int neg)
-{
-    cblas_daxpy(n, neg ? -1.0 : 1.0, x, 1, y, 1);
 }
 
 /* column f of Psi: zpsi rows with signs (sparse_signs' encoding) */
@@ -101,45 +107,97 @@ static void psi_col(const struct replib_sketch *S, int f, int *p)
     sparse_signs(&g, S->s, S->zpsi, p);
 }
 
-/* The buffered frames into the sketches: Y_b = Z_b Omega (on the
- * transposed batch, one vector add of nb values per nonzero of Omega) and
- * W += Psi_b Z_b (every frame added to zpsi rows of W, by strips of
- * columns that stay in cache). */
-/* W += Psi_b Z_b for the batch: every frame added to zpsi rows of W, by
- * strips of columns that stay in cache */
-struct wjob { struct replib_sketch *S; const int *pc; int nb; };
-
-static void *w_update(void *arg)
+/* y += sg x (n values, sg = +-1: exact products, so the same roundings
+ * as BLAS daxpy; no branch on the sign), vectorized */
+#define SKETCH_SIMD __attribute__((optimize("O3"), target_clones("avx512f", "avx2", "default")))
+static inline void vadd(double *restrict y, const double *restrict x, int n, double sg)
 {
-    struct wjob *j = arg;
+    for (int i = 0; i < n; i++) y[i] += sg * x[i];
+}
+
+/* W += Psi_b Z_b for the batch, by strips of columns: each row of W takes
+ * its frames of the batch in order (pl: the frames of row i are
+ * pl[po[i] .. po[i+1]-1], 2 frame + (sign < 0)), so every value of W sums
+ * its frames in frame order whatever the batching, and the row's strip
+ * stays in L1 while the batch's strip is in L2 */
+struct wjob { struct replib_sketch *S; const double *zb; const int *po, *pl; int nb; };
+
+SKETCH_SIMD
+static void w_update_strips(struct wjob *j)
+{
     struct replib_sketch *S = j->S;
-    int m3 = S->m3, zp = S->zpsi, nb = j->nb;
+    int m3 = S->m3, s = S->s;
     for (int t0 = 0; t0 < m3; t0 += STRIP) {
         int len = m3 - t0 < STRIP ? m3 - t0 : STRIP;
-        for (int b = 0; b < nb; b++) {
-            const double *z = S->zb + (size_t)b * m3 + t0;
-            for (int i = 0; i < zp; i++) {
-                int e = j->pc[(size_t)b * zp + i];
-                vadd(S->W + (size_t)(e >> 1) * m3 + t0, z, len, e & 1);
+        for (int i = 0; i < s; i++) {
+            double *w = S->W + (size_t)i * m3 + t0;
+            for (int q = j->po[i]; q < j->po[i + 1]; q++) {
+                int e = j->pl[q];
+                vadd(w, j->zb + (size_t)(e >> 1) * m3 + t0, len, e & 1 ? -1.0 : 1.0);
             }
         }
     }
+}
+
+static void *w_update(void *arg)
+{
+    w_update_strips(arg);
     return NULL;
 }
 
-/* The buffered frames into the sketches: Y_b = Z_b Omega (on the batch
- * transposed by tiles, one vector add of nb values per nonzero of Omega)
- * here, and W += Psi_b Z_b on a second thread meanwhile (they write
- * disjoint arrays; each is summed in a fixed order: the bytes do not
- * depend on the threads). */
-static int flush(struct replib_sketch *S)
+/* Y^T for coordinates t0 .. t1-1 of the batch (zt: those coordinates
+ * transposed, (t1 - t0) by nb): the nonzeros of Omega in these rows
+ * grouped by column j (counting sort, t increasing within j), then row j
+ * of yt takes them in t order while it stays in L1 (the same sums in the
+ * same order as one nonzero at a time) */
+SKETCH_SIMD
+static void y_tile(const struct replib_sketch *S, const double *zt, int t0, int t1, int nb, double *yt,
+                   int *cnt, int *list)
 {
-    int nb = S->nb, m3 = S->m3, k = S->k, f0 = S->n - nb, zeta = S->zeta, zp = S->zpsi;
+    int k = S->k, zeta = S->zeta;
+    memset(cnt, 0, sizeof(int) * (k + 1));
+    for (int t = t0; t < t1; t++)
+        for (int i = 0; i < zeta; i++) cnt[(S->om[(size_t)t * zeta + i] >> 1) + 1]++;
+    for (int j = 0; j < k; j++) cnt[j + 1] += cnt[j];
+    for (int t = t0; t < t1; t++)
+        for (int i = 0; i < zeta; i++) {
+            int o = S->om[(size_t)t * zeta + i];
+            list[cnt[o >> 1]++] = 2 * (t - t0) + (o & 1);
+        }
+    /* cnt[j] is now the end of column j's entries */
+    for (int j = 0, q = 0; j < k; j++) {
+        double *y = yt + (size_t)j * nb;
+        for (; q < cnt[j]; q++) vadd(y, zt + (size_t)(list[q] >> 1) * nb, nb, list[q] & 1 ? -1.0 : 1.0);
+    }
+}
+
+/* The batch zb (nb frames from f0) into the sketches: Y_b = Z_b Omega
+ * (on the batch transposed by tiles) here, and W += Psi_b Z_b on a second
+ * thread meanwhile (they write disjoint arrays; each is summed in a fixed
+ * order: the bytes do not depend on the threads). */
+static int flush_batch(struct replib_sketch *S, const double *zb, int nb, int f0)
+{
+    int m3 = S->m3, k = S->k, zp = S->zpsi, s = S->s;
     if (nb == 0) return 0;
-    int *pc = malloc(sizeof(int) * (size_t)nb * zp);
-    if (!pc) return cm_seterr("replib_sketch: out of memory");
+    int *pc = malloc(sizeof(int) * (size_t)nb * zp), *po = calloc(s + 1, sizeof(int));
+    int *pl = malloc(sizeof(int) * (size_t)nb * zp);
+    int *cnt = malloc(sizeof(int) * (k + 1)), *list = malloc(sizeof(int) * (size_t)TILE * S->zeta);
+    if (!pc || !po || !pl || !cnt || !list) {
+        free(pc); free(po); free(pl); free(cnt); free(list);
+        return cm_seterr("replib_sketch: out of memory");
+    }
     for (int b = 0; b < nb; b++) psi_col(S, f0 + b, pc + (size_t)b * zp);
-    struct wjob job = {S, pc, nb};
+    /* the batch's frames of each row of W, in frame order */
+    for (int q = 0; q < nb * zp; q++) po[(pc[q] >> 1) + 1]++;
+    for (int i = 0; i < s; i++) po[i + 1] += po[i];
+    for (int b = 0; b < nb; b++)
+        for (int i = 0; i < zp; i++) {
+            int e = pc[(size_t)b * zp + i];
+            pl[po[e >> 1]++] = 2 * b + (e & 1);
+        }
+    for (int i = s; i > 0; i--) po[i] = po[i - 1];
+    po[0] = 0;
+    struct wjob job = {S, zb, po, pl, nb};
     pthread_t th;
     int threaded = pthread_create(&th, NULL, w_update, &job) == 0;
     if (!threaded) w_update(&job);
@@ -152,20 +210,65 @@ static int flush(struct replib_sketch *S)
             for (int b0 = 0; b0 < nb; b0 += 16) {
                 int u1 = u0 + 16 < t1 ? u0 + 16 : t1, b1 = b0 + 16 < nb ? b0 + 16 : nb;
                 for (int t = u0; t < u1; t++)
-                    for (int b = b0; b < b1; b++) zt[(size_t)(t - t0) * nb + b] = S->zb[(size_t)b * m3 + t];
+                    for (int b = b0; b < b1; b++) zt[(size_t)(t - t0) * nb + b] = zb[(size_t)b * m3 + t];
             }
-        for (int t = t0; t < t1; t++) {
-            const double *zc = zt + (size_t)(t - t0) * nb;
-            const int *o = S->om + (size_t)t * zeta;
-            for (int i = 0; i < zeta; i++) vadd(yt + (size_t)(o[i] >> 1) * nb, zc, nb, o[i] & 1);
-        }
+        y_tile(S, zt, t0, t1, nb, yt, cnt, list);
     }
     for (int b = 0; b < nb; b++)
         for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b) * k + j] = yt[(size_t)j * nb + b];
     if (threaded) pthread_join(th, NULL);
-    free(pc);
-    S->nb = 0;
+    free(pc); free(po); free(pl); free(cnt); free(list);
     return 0;
+}
+
+/* The batches are summed on a helper thread while the caller fills the
+ * other half of zb; at most one is pending.  The caller waits for it
+ * (flush_wait) before Y moves (grow), at the end, and before the next. */
+struct flusher {
+    struct replib_sketch *S;
+    const double *zb;
+    int nb, f0, rc;
+    char msg[512];
+    pthread_t th;
+};
+
+static void *flusher_main(void *arg)
+{
+    struct flusher *F = arg;
+    F->rc = flush_batch(F->S, F->zb, F->nb, F->f0);
+    if (F->rc < 0) snprintf(F->msg, sizeof F->msg, "%s", cm_errmsg());
+    return NULL;
+}
+
+static int flush_wait(struct replib_sketch *S)
+{
+    struct flusher *F = S->flusher;
+    if (!F) return 0;
+    pthread_join(F->th, NULL);
+    int rc = F->rc;
+    if (rc < 0) cm_seterr("%s", F->msg);
+    free(F);
+    S->flusher = NULL;
+    return rc;
+}
+
+/* hand the buffered batch over (summed on the helper, or here if there is
+ * none) and start filling the other half of zb */
+static int flush(struct replib_sketch *S)
+{
+    int nb = S->nb, f0 = S->n - nb;
+    if (nb == 0) return 0;
+    if (flush_wait(S) < 0) return -1;
+    const double *zb = S->zb + (size_t)S->zhalf * BATCH * S->m3;
+    S->zhalf ^= 1;
+    S->nb = 0;
+    struct flusher *F = calloc(1, sizeof *F);
+    if (F) {
+        F->S = S; F->zb = zb; F->nb = nb; F->f0 = f0;
+        if (pthread_create(&F->th, NULL, flusher_main, F) == 0) { S->flusher = F; return 0; }
+        free(F);
+    }
+    return flush_batch(S, zb, nb, f0);
 }
 
 static int grow(struct replib_sketch *S)
@@ -204,13 +307,13 @@ static void chunk_range(const double *restrict kb, int nb, int m3, double *restr
  * largest rounding when every value is on the grid within +-2^31 steps,
  * else 1 (the caller redoes the chunk value by value). */
 __attribute__((optimize("O3")))
-static int chunk_ints(struct replib_sketch *S, int f0, int nb, const double *restrict o, double q, double iq,
-                      double *e)
+static int chunk_ints(struct replib_sketch *S, const double *kb, int f0, int nb, const double *restrict o, double q,
+                      double iq, double *e)
 {
     int m3 = S->m3, bad = 0;
     double em = *e, tol = 1e-3 * q;
     for (int g = 0; g < nb; g++) {
-        const double *restrict x = S->kb + (size_t)g * m3;
+        const double *restrict x = kb + (size_t)g * m3;
         int32_t *restrict xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
         for (int t = 0; t < m3; t++) {
             double v = x[t] - o[t], u = v * iq;
@@ -231,17 +334,17 @@ static int chunk_ints(struct replib_sketch *S, int f0, int nb, const double *res
  * chunk (on the input's grid), then integers of the step while every value
  * is on the grid and within +-2^31 steps, else floats (all kept frames
  * turned to floats once, in place). */
-static void keep_chunk(struct replib_sketch *S, int f1)
+static void keep_chunk(struct replib_sketch *S, int f1, const double *kb)
 {
     int m3 = S->m3, c = (f1 - 1) / REPLIB_KEEP_CHUNK, f0 = c * REPLIB_KEEP_CHUNK, nb = f1 - f0;
     double q = S->xstep, iq = q > 0 ? 1 / q : 0, e = 0, *o = S->xbase + (size_t)c * m3;
     double *lo = S->zprev + m3, *hi = lo + m3;   /* scratch */
-    chunk_range(S->kb, nb, m3, lo, hi);
+    chunk_range(kb, nb, m3, lo, hi);
     for (int t = 0; t < m3; t++)
         o[t] = q > 0 ? nearbyint(0.5 * (lo[t] + hi[t]) / q) * q : 0.5 * (lo[t] + hi[t]);
-    int done = S->fixed && chunk_ints(S, f0, nb, o, q, iq, &e) == 0;    /* every value on the grid */
+    int done = S->fixed && chunk_ints(S, kb, f0, nb, o, q, iq, &e) == 0;    /* every value on the grid */
     for (int g = 0; g < nb && S->fixed && !done; g++) {
-        const double *x = S->kb + (size_t)g * m3;
+        const double *x = kb + (size_t)g * m3;
         int32_t *xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
         for (int t = 0; t < m3; t++) {
             /* round to nearest by the 1.5 2^52 trick (|v / q| < 2^31 checked first) */
@@ -267,7 +370,7 @@ static void keep_chunk(struct replib_sketch *S, int f1)
     if (!S->fixed) {
         S->floated = 1;
         for (int g = 0; g < nb; g++) {
-            const double *x = S->kb + (size_t)g * m3;
+            const double *x = kb + (size_t)g * m3;
             float *xf = (float *)S->Xk + (size_t)(f0 + g) * m3;
             for (int t = 0; t < m3; t++) {
                 double v = x[t] - o[t];
@@ -277,6 +380,93 @@ static void keep_chunk(struct replib_sketch *S, int f1)
         }
     }
     if (e > S->float_err) S->float_err = e;
+}
+
+/* The kept frames are encoded on a helper thread, one chunk at a time,
+ * while the caller buffers the next chunk (S->kb holds two): the chunk's
+ * arithmetic is that of keep_chunk on the caller's thread.  The caller
+ * waits for it (keeper_wait) before it touches what keep_chunk writes or
+ * reads: the kept frames, the bases, the chunk buffer it hands over next. */
+struct keeper {
+    struct replib_sketch *S;
+    int f1;                     /* chunk ending before frame f1 to encode, 0 = none */
+    const double *kb;
+    int stop;
+    pthread_mutex_t lock;
+    pthread_cond_t cond;
+    pthread_t th;
+};
+
+static void *keeper_main(void *arg)
+{
+    struct keeper *K = arg;
+    pthread_mutex_lock(&K->lock);
+    for (;;) {
+        while (!K->f1 && !K->stop) pthread_cond_wait(&K->cond, &K->lock);
+        if (!K->f1) break;
+        int f1 = K->f1;
+        const double *kb = K->kb;
+        pthread_mutex_unlock(&K->lock);
+        keep_chunk(K->S, f1, kb);
+        pthread_mutex_lock(&K->lock);
+        K->f1 = 0;
+        pthread_cond_broadcast(&K->cond);
+    }
+    pthread_mutex_unlock(&K->lock);
+    return NULL;
+}
+
+static void keeper_wait(struct replib_sketch *S)
+{
+    struct keeper *K = S->keeper;
+    if (!K) return;
+    pthread_mutex_lock(&K->lock);
+    while (K->f1) pthread_cond_wait(&K->cond, &K->lock);
+    pthread_mutex_unlock(&K->lock);
+}
+
+/* encode the chunk ending before f1 from kb, on the helper if there is one */
+static void keeper_post(struct replib_sketch *S, int f1, const double *kb)
+{
+    struct keeper *K = S->keeper;
+    if (!K) { keep_chunk(S, f1, kb); return; }
+    pthread_mutex_lock(&K->lock);
+    while (K->f1) pthread_cond_wait(&K->cond, &K->lock);
+    K->f1 = f1;
+    K->kb = kb;
+    pthread_cond_broadcast(&K->cond);
+    pthread_mutex_unlock(&K->lock);
+}
+
+static void keeper_stop(struct replib_sketch *S)
+{
+    struct keeper *K = S->keeper;
+    if (!K) return;
+    pthread_mutex_lock(&K->lock);
+    K->stop = 1;
+    pthread_cond_broadcast(&K->cond);
+    pthread_mutex_unlock(&K->lock);
+    pthread_join(K->th, NULL);
+    pthread_mutex_destroy(&K->lock);
+    pthread_cond_destroy(&K->cond);
+    free(K);
+    S->keeper = NULL;
+}
+
+static void keeper_start(struct replib_sketch *S)
+{
+    struct keeper *K = calloc(1, sizeof *K);
+    if (!K) return;                 /* no helper: the chunks are encoded here */
+    K->S = S;
+    pthread_mutex_init(&K->lock, NULL);
+    pthread_cond_init(&K->cond, NULL);
+    if (pthread_create(&K->th, NULL, keeper_main, K) != 0) {
+        pthread_mutex_destroy(&K->lock);
+        pthread_cond_destroy(&K->cond);
+        free(K);
+        return;
+    }
+    S->keeper = K;
 }
 
 /* z (m) = sw (x - ref) (sw may be NULL: 1); returns |z|^2 (eight partial
@@ -300,11 +490,15 @@ static double center_row(const double *restrict x, const double *restrict ref, c
 int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
 {
     int m3 = S->m3, f = S->n;
-    double zz = center_row(x, f ? S->ref : x, S->sw, m3, S->zb + (size_t)S->nb * m3);
+    double zz = center_row(x, f ? S->ref : x, S->sw, m3, S->zb + ((size_t)S->zhalf * BATCH + S->nb) * m3);
     if (!(zz <= 1.7976931348623157e308))     /* a coordinate is not finite (or the squares overflow) */
         for (int t = 0; t < m3; t++)
             if (!isfinite(x[t])) return cm_seterr("frame %d: vertex %d: coordinate is not finite", f, t / 3);
-    if (f == S->cap && grow(S) < 0) return cm_seterr("replib_sketch: out of memory at frame %d", f);
+    if (f == S->cap) {
+        keeper_wait(S);             /* grow moves the bases and Y */
+        if (flush_wait(S) < 0) return -1;
+        if (grow(S) < 0) return cm_seterr("replib_sketch: out of memory at frame %d", f);
+    }
     if (f == 0) {
         memcpy(S->ref, x, sizeof(double) * m3);
         S->xstep = replib_input_step(x, m3);
@@ -313,6 +507,7 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
     if (S->keeping) {
         size_t need = (size_t)(f + 1) * m3 * 4;
         if (need > S->keep_bytes) {
+            keeper_wait(S);
             free(S->Xk); S->Xk = NULL; S->keeping = 0;      /* too long: sketch only */
         } else {
             /* grow the kept frames geometrically, within the budget */
@@ -321,14 +516,27 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
                 size_t nc = S->xcap ? 2 * (size_t)S->xcap : 256, lim = S->keep_bytes / ((size_t)m3 * 4);
                 if (!S->xcap && S->expect > 0) nc = (size_t)S->expect;
                 if (nc > lim) nc = lim;
+                keeper_wait(S);
                 nx = S->xcap ? realloc(S->Xk, nc * m3 * 4) : big_alloc(nc * m3 * 4);
-                if (nx) S->xcap = (int)nc;
+                if (nx) { S->xcap = (int)nc; S->Xk = nx; }     /* the helper is idle */
             }
-            if (!nx) { free(S->Xk); S->Xk = NULL; S->keeping = 0; }
+            if (!nx) { keeper_wait(S); free(S->Xk); S->Xk = NULL; S->keeping = 0; }
             else {
-                S->Xk = nx;
-                memcpy(S->kb + (size_t)(f % REPLIB_KEEP_CHUNK) * m3, x, sizeof(double) * m3);
-                if (f % REPLIB_KEEP_CHUNK == REPLIB_KEEP_CHUNK - 1) keep_chunk(S, f + 1);
+                /* chunk c is buffered in half c % 2 of kb while the
+                 * helper encodes chunk c - 1 from the other half */
+                double *kb = S->kb + (size_t)(f / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * m3;
+                memcpy(kb + (size_t)(f % REPLIB_KEEP_CHUNK) * m3, x, sizeof(double) * m3);
+                if (f % REPLIB_KEEP_CHUNK == REPLIB_KEEP_CHUNK - 1) {
+                    keeper_post(S, f + 1, kb);
+                    /* the next chunk's kept frames faulted in here, so
+                     * the helper finds them mapped (the pages are zeroed
+                     * by the kernel either way; contents are not touched;
+                     * an older kernel refuses and they fault as before) */
+                    size_t a = (size_t)(f + 1) * m3 * 4, e = (size_t)(f + 1 + REPLIB_KEEP_CHUNK) * m3 * 4;
+                    if (e > (size_t)S->xcap * m3 * 4) e = (size_t)S->xcap * m3 * 4;
+                    uintptr_t p0 = ((uintptr_t)S->Xk + a) & ~(uintptr_t)4095, p1 = ((uintptr_t)S->Xk + e) & ~(uintptr_t)4095;
+                    if (p1 > p0) madvise((void *)p0, p1 - p0, MADV_POPULATE_WRITE);
+                }
             }
         }
     }
@@ -342,8 +550,10 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
 
 int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
 {
-    if (flush(S) < 0) return -1;
-    if (S->keeping && S->n % REPLIB_KEEP_CHUNK) keep_chunk(S, S->n);
+    if (flush(S) < 0 || flush_wait(S) < 0) return -1;
+    keeper_stop(S);                 /* the chunks handed over are encoded */
+    if (S->keeping && S->n % REPLIB_KEEP_CHUNK)
+        keep_chunk(S, S->n, S->kb + (size_t)((S->n - 1) / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * S->m3);
     int n = S->n, k = S->k, s = S->s, m3 = S->m3, info = 0;
     if (n < 1) return cm_seterr("replib_sketch: no frames");
     if (!S->keeping && S->sw)

@@ -55,11 +55,16 @@ struct replib_sketch {
                                    else float x_f - x_0; or NULL */
     double *xbase;              /* per chunk of REPLIB_KEEP_CHUNK frames, 3#V bases b (the midrange
                                    of each coordinate over the chunk): kept frame = x_f - b */
-    double *kb;                 /* REPLIB_KEEP_CHUNK by 3#V: the frames of the chunk being read */
+    double *kb;                 /* 2 by REPLIB_KEEP_CHUNK by 3#V: the frames of the chunk being read
+                                   and of the one being encoded (on a helper thread) */
+    void *keeper;               /* private: that helper thread, or NULL */
     int fixed;                  /* 1: Xk holds integers of the input's step */
     int floated;                /* 1: Xk holds floats */
     double xstep;               /* the first frame's decimal step q (0: none) */
-    double *zb;                 /* 64 by 3#V batch */
+    double *zb;                 /* 2 by 128 by 3#V: the batch being filled (half zhalf) and the one
+                                   being summed into Y and W (on a helper thread) */
+    int zhalf;
+    void *flusher;              /* private: that helper thread, or NULL */
     double *zprev;              /* 3 by 3#V scratch (keep_chunk) */
     int nb, cap, xcap;
     int expect;                 /* frames announced (0: unknown; set before the first add): the

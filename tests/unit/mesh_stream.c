@@ -2,7 +2,8 @@
  * magnitude, -0, values that are ties for the fast parser, lines across
  * buffer refills), raw_round_trip, frames_unknown, cut_marks, reader
  * return codes, whole-mesh read/write, read-ahead on a second thread
- * (mesh_prefetch: same frames, cuts and errors as mesh_reader_next) */
+ * (mesh_prefetch: same frames, cuts and errors as mesh_reader_next),
+ * big text output formatted on threads (same bytes as frame by frame) */
 #include "mesh.h"
 #include "mesh_prefetch.h"
 #include "cm_error.h"
@@ -133,6 +134,38 @@ int main(void)
         mesh_prefetch_stop(&pf);
         mesh_prefetch_stop(&pf);
         mesh_reader_close(&rd);
+    }
+    {
+        /* a text mesh big enough for mesh_write's threads (several jobs
+         * per frame, more jobs than ring slots, cut marks, a frame whose
+         * last job is short): the same bytes as frame by frame */
+        struct mesh b;
+        struct rng rb;
+        rng_seed(&rb, 7);
+        mesh_alloc(&b, 9000, 1, 11);
+        b.F[0] = 0; b.F[1] = 1; b.F[2] = 2;
+        for (size_t i = 0; i < (size_t)9000 * 3 * 11; i++) b.V[i] = random_coord(&rb);
+        b.cut[0] = 1; b.cut[4] = 1; b.cut[9] = 1;
+        char *p1 = NULL, *p2 = NULL;
+        size_t n1 = 0, n2 = 0;
+        FILE *f1 = open_memstream(&p1, &n1), *f2 = open_memstream(&p2, &n2);
+        int r1 = mesh_write(f1, &b, 0);
+        struct mesh_writer w2;
+        int r2 = mesh_writer_open(&w2, f2, b.nv, b.nf, b.F, b.nframes, 0);
+        for (int k = 0; k < b.nframes && r2 == 0; k++) r2 = mesh_writer_frame(&w2, mesh_frame(&b, k), b.cut[k]);
+        if (r2 == 0) r2 = mesh_writer_close(&w2);
+        fclose(f1); fclose(f2);
+        ok(r1 == 0 && r2 == 0 && n1 == n2 && n1 > 0 && !memcmp(p1, p2, n1),
+           "mesh_write: a big text mesh (threads) has the bytes of mesh_writer_frame (%zu, %zu)", n1, n2);
+        free(p1); free(p2);
+        FILE *full = fopen("/dev/full", "wb");
+        if (full) {
+            ok(mesh_write(full, &b, 0) < 0 && strstr(cm_errmsg(), "write error"),
+               "mesh_write: a full disk is reported (%s)", cm_errmsg());
+            fclose(full);
+        } else
+            ok(1, "# SKIP no /dev/full");
+        mesh_free(&b);
     }
     /* a writer that is given too many frames refuses */
     f = fopen(path, "wb");
