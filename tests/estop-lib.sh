@@ -7,3 +7,15 @@ camel_scans() {
 		mesh-import "$SHARED_DATA/scans/camel-gallop-$k.off" | mesh-clean >c$k.mesh 2>/dev/null || return 1
 	done
 }
+
+# nosed_egg MESH A: MESH (a unit icosphere) made an egg with a nose, its
+# upper part turned by A radians about y (t0416, t0425)
+nosed_egg() {
+	awk -v a="$2" '/^frame [0-9]/ { on = 1; print; next }
+	on && NF == 3 { x = 0.35 * $1; y = 0.2 * $2; z = $3
+		if (x > 0) x += 0.25 * x / 0.35 * exp(-((z - 0.4)^2 + y^2) / 0.04)
+		s = (z + 0.1) / 0.3; s = s < 0 ? 0 : s > 1 ? 1 : s; t = a * s * s * (3 - 2 * s)
+		zz = z + 0.1; xx = x * cos(t) - zz * sin(t); zz = x * sin(t) + zz * cos(t)
+		printf "%.17g %.17g %.17g\n", xx, y, zz - 0.1; next }
+	{ print }' "$1"
+}

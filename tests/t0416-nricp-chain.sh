@@ -1,20 +1,11 @@
 #!/bin/sh
 test_description='nricp --chain and --rest on generated shapes; bad input'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/estop-lib.sh"
 
-# an egg with a nose, its upper part turned by $2 radians about y
-shape() {
-	awk -v a="$2" '/^frame [0-9]/ { on = 1; print; next }
-	on && NF == 3 { x = 0.35 * $1; y = 0.2 * $2; z = $3
-		if (x > 0) x += 0.25 * x / 0.35 * exp(-((z - 0.4)^2 + y^2) / 0.04)
-		s = (z + 0.1) / 0.3; s = s < 0 ? 0 : s > 1 ? 1 : s; t = a * s * s * (3 - 2 * s)
-		zz = z + 0.1; xx = x * cos(t) - zz * sin(t); zz = x * sin(t) + zz * cos(t)
-		printf "%.17g %.17g %.17g\n", xx, y, zz - 0.1; next }
-	{ print }' "$1"
-}
 test_expect_success 'setup: a source and two poses remeshed finer' '
 	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh &&
-	shape s3.mesh 0 >src.mesh && shape s4.mesh 0.15 >g1.mesh && shape s4.mesh 0.3 >g2.mesh
+	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.15 >g1.mesh && nosed_egg s4.mesh 0.3 >g2.mesh
 '
 test_expect_success 'nricp --chain writes SOURCE and one key per target; key 1 is the single run' '
 	nricp --no-auto -k 3 --fit 6 --chain --chain-rest first src.mesh g1.mesh g2.mesh >keys.mesh &&
