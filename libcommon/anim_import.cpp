@@ -525,7 +525,15 @@ extern "C" int anim_import(const char *path, const struct anim_import_opts *opt,
     if (fmt == ANIM_GLTF || fmt == ANIM_GLB) {
         Gltf pre;
         size_t bad;
-        if (pre.load(path) && !pre.accessors_in_bounds(&bad))
+        /* what our own parse cannot read never reaches assimp: its glTF
+         * importers read freed memory on malformed JSON (fuzz_gltf) */
+        if (!pre.load(path))
+            return cm_seterr("cannot read '%s': not a glTF file (no JSON object%s)", path,
+                             fmt == ANIM_GLB ? " in a GLB container" : "");
+        const JVal *asset = pre.root.get("asset"), *ver = asset ? asset->get("version") : nullptr;
+        if (ver && ver->t == JVal::STR && ver->str.compare(0, 2, "2."))
+            return cm_seterr("cannot read '%s': glTF version %s (only glTF 2.x is read)", path, ver->str.c_str());
+        if (!pre.accessors_in_bounds(&bad))
             return cm_seterr("cannot read '%s': accessor %zu reaches outside its buffer "
                              "(byteOffset, byteStride, count or byteLength is wrong)", path, bad);
         std::string why;
