@@ -382,7 +382,17 @@ static int incone(const struct sub *p, int i, const double *q)
 /* smallest of the two angles the direction q makes at corner i; an angle
  * clearly at most cut (by pseudo-angles, with a margin for rounding) is
  * returned as 0 without its atan2 (cut <= 0: always the angle) */
-static double cone_quality_cut(const struct sub *p, int i, const double *q, double cut)
+/* the pseudo-angle below which cone_quality_cut calls an angle clearly at
+ * most cut (-1: no cut) */
+static double cone_cut_pseudo(double cut)
+{
+    return cut > 0 && cut < M_PI ? ccw_pseudo(sin(cut), cos(cut)) * (1 - 1e-9) : -1;
+}
+
+/* the parts of cone_quality_cut at corner i for direction q: *pm the
+ * smaller pseudo-angle, and the angle itself (0: q within rounding of an
+ * edge; with angle = 0, *pm is not set) */
+static double cone_parts(const struct sub *p, int i, const double *q, double *pm, int with_angle)
 {
     const double *a = V(p, i), *pr = V(p, (i + p->m - 1) % p->m), *nx = V(p, (i + 1) % p->m);
     /* the smaller by pseudo-angles (monotone in the ccw angle), then one atan2 */
@@ -395,9 +405,19 @@ static double cone_quality_cut(const struct sub *p, int i, const double *q, doub
      * sliver; either angle wider than the corner is that case */
     double pa = ccw_pseudo(ux * vy - uy * vx, ux * vx + uy * vy);
     if (p1 > pa || p2 > pa) return 0;
-    if (cut > 0 && cut < M_PI && fmin(p1, p2) < ccw_pseudo(sin(cut), cos(cut)) * (1 - 1e-9)) return 0;
+    *pm = fmin(p1, p2);
+    if (!with_angle) return 1;
     return p1 <= p2 ? ccw_angle(ux, uy, qx, qy) : ccw_angle(qx, qy, vx, vy);
 }
+
+static double cone_quality_cut(const struct sub *p, int i, const double *q, double cut)
+{
+    double pm, pc = cone_cut_pseudo(cut);
+    if (cone_parts(p, i, q, &pm, 0) == 0) return 0;
+    if (pm < pc) return 0;
+    return cone_parts(p, i, q, &pm, 1);
+}
+
 
 
 /* segment from P (corner i, or a free interior point if i < 0) to Q (corner
@@ -597,6 +617,81 @@ static double path_quality(const struct sub *p, int i, int j, const double *pts,
     return q;
 }
 
+/* cone_quality_cut of the candidate points of stage II, worked out once per
+ * candidate and corner (the pair search asks each many times) */
+struct cone_cache {
+    const struct sub *sp;
+    double *const *C;     /* N: candidate points of each shape */
+    int m;
+    double **pm, **an;    /* N: nc[s] by m, the smaller pseudo-angle and the angle */
+    unsigned char **have; /* N: nc[s] by m; 0: not yet, 1: done */
+    double **from, **to;  /* N: nc[s] by m, clearance_cut of corner i -> a and of
+                           * a -> corner i, in full (NAN: not yet) */
+};
+
+/* cone_quality_cut(corner i, candidate a of shape s, cut), pc =
+ * cone_cut_pseudo(cut) */
+static double cone_cached(struct cone_cache *cc, int s, int a, int i, double pc)
+{
+    size_t k = (size_t)a * cc->m + i;
+    if (!cc->have[s][k]) {
+        double pm = 0;
+        cc->an[s][k] = cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1);
+        cc->pm[s][k] = pm;
+        cc->have[s][k] = 1;
+    }
+    double e = cc->an[s][k];
+    return e == 0 || cc->pm[s][k] < pc ? 0 : e;
+}
+
+/* clearance_cut of the segment corner i -> candidate a (to = 0) or
+ * candidate a -> corner i (to = 1) of shape s, in full: where the pair
+ * search cuts it short, the value only rules the pair out, which the full
+ * value does as well */
+static double clearance_cached(struct cone_cache *cc, int s, int a, int i, int to)
+{
+    size_t k = (size_t)a * cc->m + i;
+    double *x = (to ? cc->to : cc->from)[s] + k;
+    if (isnan(*x)) {
+        const struct sub *p = &cc->sp[s];
+        const double *c = cc->C[s] + 2 * a;
+        *x = to ? clearance_cut(p, -1, c, i, V(p, i), 0) : clearance_cut(p, i, V(p, i), -1, c, 0);
+    }
+    return *x;
+}
+
+/* Visibility tests of stage II and III, made when first asked and kept
+ * (0: not asked yet, 1: no, 2: yes): with the cheap tests first, most
+ * corner pairs and candidate points are ruled out before their O(m) test. */
+struct vis_cache {
+    const struct sub *sp; /* N shapes of the piece */
+    int m;
+    unsigned char *cc;    /* N by m by m: corner i sees corner j */
+    double *const *C;     /* N: candidate points of each shape */
+    unsigned char **cv;   /* N: candidate a sees corner i, nc[s] by m */
+};
+
+/* corners i and j of shape s see each other through the piece's interior */
+static int vis_corners(struct vis_cache *vc, int s, int i, int j)
+{
+    int m = vc->m;
+    if (i > j) { int t = i; i = j; j = t; }
+    unsigned char *x = vc->cc + ((size_t)s * m + i) * m + j;
+    if (!*x) {
+        const struct sub *p = &vc->sp[s];
+        *x = (i == 0 && j == m - 1) || j < i + 2 ? 1 : 1 + seg_inside(p, i, V(p, i), j, V(p, j));
+    }
+    return *x == 2;
+}
+
+/* candidate point a of shape s sees corner i */
+static int vis_cand(struct vis_cache *vc, int s, int a, int i)
+{
+    unsigned char *x = vc->cv[s] + (size_t)a * vc->m + i;
+    if (!*x) *x = 1 + seg_inside(&vc->sp[s], i, V(&vc->sp[s], i), -1, vc->C[s] + 2 * a);
+    return *x == 2;
+}
+
 static int choose_split(struct compat *c, const int *poly, int m, struct split *out)
 {
     int N = c->N;
@@ -648,15 +743,8 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         free(vis); free(sp);
         return 0;
     }
-    /* stage II: the full corner visibility matrix, candidates per shape
-     * and their visibility from corners */
-    for (int s = 0; s < N; s++)
-        for (int i = 0; i < m; i++)
-            for (int j = i + 2; j < m; j++) {
-                if (i == 0 && j == m - 1) continue;
-                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j)))
-                    vis[((size_t)s * m + i) * m + j] = vis[((size_t)s * m + j) * m + i] = 1;
-            }
+    /* stage II: candidates per shape; visibility between corners and from
+     * candidates to corners is tested when first needed (vis_cache) */
     double **C = malloc(N * sizeof *C);
     int *nc = malloc(N * sizeof *nc);
     unsigned char **cv = malloc(N * sizeof *cv);
@@ -665,10 +753,19 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         nc[s] = candidates(&sp[s], &C[s]);
         hug[s] = malloc((size_t)nc[s] + 1);
         for (int a = 0; a < nc[s]; a++) hug[s][a] = hugs_edge(&sp[s], C[s] + 2 * a);
-        cv[s] = malloc((size_t)nc[s] * m + 1);
-        for (int a = 0; a < nc[s]; a++)
-            for (int i = 0; i < m; i++)
-                cv[s][(size_t)a * m + i] = seg_inside(&sp[s], i, V(&sp[s], i), -1, C[s] + 2 * a);
+        cv[s] = calloc((size_t)nc[s] * m + 1, 1);
+    }
+    struct vis_cache vc = {sp, m, vis, C, cv};
+    struct cone_cache cones = {sp, C, m, malloc(N * sizeof(double *)), malloc(N * sizeof(double *)),
+                               malloc(N * sizeof(unsigned char *)), malloc(N * sizeof(double *)),
+                               malloc(N * sizeof(double *))};
+    for (int s = 0; s < N; s++) {
+        cones.pm[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.pm);
+        cones.an[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.an);
+        cones.have[s] = calloc((size_t)nc[s] * m + 1, 1);
+        cones.from[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.from);
+        cones.to[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.to);
+        for (size_t k = 0; k < (size_t)nc[s] * m; k++) cones.from[s][k] = cones.to[s][k] = NAN;
     }
     double *bestpath = malloc(2 * (size_t)N * sizeof *bestpath);
     double *tmp = malloc(2 * (size_t)N * sizeof *tmp);
@@ -684,7 +781,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
             if (qcut >= M_PI / 3) qcut = 0;
             for (int s = 0; s < N && all; s++) {
                 double bq = -1;
-                if (vis[((size_t)s * m + i) * m + j]) {
+                if (vis_corners(&vc, s, i, j)) {
                     const double *A = V(&sp[s], i), *B = V(&sp[s], j);
                     double mid[2];
                     if (bent_point(&sp[s], i, A, j, B, mid) == 0) {
@@ -694,15 +791,29 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                         tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
                     }
                 }
-                for (int a = 0; a < nc[s]; a++)
-                    if (cv[s][(size_t)a * m + i] && cv[s][(size_t)a * m + j]) {
-                        const double *x = C[s] + 2 * a;
-                        if (hug[s][a]) continue;
-                        double cut = fmax(bq, qcut), pq = path_quality(&sp[s], i, j, x, 1, cut);
-                        if (pq > cut) pq = fmin(pq, clearance_cut(&sp[s], i, V(&sp[s], i), -1, x, cut));
-                        if (pq > cut) pq = fmin(pq, clearance_cut(&sp[s], -1, x, j, V(&sp[s], j), cut));
+                double lastcut = NAN, pc = -1;
+                for (int a = 0; a < nc[s]; a++) {
+                    const double *x = C[s] + 2 * a;
+                    if (hug[s][a]) continue;
+                    double cut = fmax(bq, qcut);
+                    if (cut != lastcut) { pc = cone_cut_pseudo(cut); lastcut = cut; }
+                    double ci = cone_cached(&cones, s, a, i, pc), cj = ci > 0 ? cone_cached(&cones, s, a, j, pc) : 0;
+                    /* an end angle at most cut > 0 leaves the pair below
+                     * the best either way: no visibility test needed */
+                    if (cut > 0 && cj == 0) continue;
+                    if (vis_cand(&vc, s, a, i) && vis_cand(&vc, s, a, j)) {
+                        /* path_quality of corner i -> x -> corner j */
+                        double pq = 0;
+                        if (cj > 0) {
+                            const double *A = V(&sp[s], i), *B = V(&sp[s], j);
+                            double an = ccw_angle(A[0] - x[0], A[1] - x[1], B[0] - x[0], B[1] - x[1]);
+                            pq = fmin(fmin(ci, cj), fmin(an, 2 * M_PI - an));
+                        }
+                        if (pq > cut) pq = fmin(pq, clearance_cached(&cones, s, a, i, 0));
+                        if (pq > cut) pq = fmin(pq, clearance_cached(&cones, s, a, j, 1));
                         if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
                     }
+                }
                 if (bq < 0) all = 0;
                 q = fmin(q, bq);
             }
@@ -712,6 +823,10 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
             }
         }
     free(tmp);
+    for (int s = 0; s < N; s++) {
+        free(cones.pm[s]); free(cones.an[s]); free(cones.have[s]); free(cones.from[s]); free(cones.to[s]);
+    }
+    free(cones.pm); free(cones.an); free(cones.have); free(cones.from); free(cones.to);
     int rc = 0;
     /* a Steiner point squeezed into a sliver only makes thinner pieces: below
      * STAGE2_MIN the overlay does better */
@@ -738,16 +853,16 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                 for (int a = 0; a < n; a++) d[a] = -1;
                 int qh = 0, qt = 0;
                 for (int a = 0; a < n; a++)
-                    if (cv[s][(size_t)a * m + i]) { d[a] = 1; queue[qt++] = a; }
+                    if (vis_cand(&vc, s, a, i)) { d[a] = 1; queue[qt++] = a; }
                 while (qh < qt) {
                     int a = queue[qh++];
                     for (int b = 0; b < n; b++)
                         if (d[b] < 0 && cc[s][(size_t)a * n + b]) { d[b] = d[a] + 1; queue[qt++] = b; }
                 }
                 for (int j = 0; j < m; j++) {
-                    int L = vis[((size_t)s * m + i) * m + j] ? 1 : 1 << 29;
+                    int L = j != i && vis_corners(&vc, s, i, j) ? 1 : 1 << 29;
                     for (int a = 0; a < n; a++)
-                        if (d[a] > 0 && cv[s][(size_t)a * m + j] && d[a] + 1 < L) L = d[a] + 1;
+                        if (d[a] > 0 && d[a] + 1 < L && vis_cand(&vc, s, a, j)) L = d[a] + 1;
                     dist[s][(size_t)i * m + j] = L;
                 }
             }
@@ -781,11 +896,11 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                     for (int a = 0; a < n; a++) { d[a] = -1; par[a] = -1; }
                     int qh = 0, qt = 0;
                     for (int a = 0; a < n; a++)
-                        if (cv[s][(size_t)a * m + bi]) { d[a] = 1; queue[qt++] = a; }
+                        if (vis_cand(&vc, s, a, bi)) { d[a] = 1; queue[qt++] = a; }
                     int end = -1;
                     while (qh < qt && end < 0) {
                         int a = queue[qh++];
-                        if (d[a] == L - 1 && cv[s][(size_t)a * m + bj]) { end = a; break; }
+                        if (d[a] == L - 1 && vis_cand(&vc, s, a, bj)) { end = a; break; }
                         for (int b = 0; b < n; b++)
                             if (d[b] < 0 && cc[s][(size_t)a * n + b]) { d[b] = d[a] + 1; par[b] = a; queue[qt++] = b; }
                     }

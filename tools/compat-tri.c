@@ -400,6 +400,15 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (o->interior) columns_free(&I);
 }
 
+/* seconds since the start (the -v lines say when each stage ended) */
+static struct timespec t_start;
+static double elapsed(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (t.tv_sec - t_start.tv_sec) + 1e-9 * (t.tv_nsec - t_start.tv_nsec);
+}
+
 /* the refinement's parameters for cp (compat_refine_params) */
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
 {
@@ -419,9 +428,9 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
     if (!who) who = "";
     double q1 = compat_min_angle(cpp, NULL) * 180 / M_PI;
     info(1, "%s%srefinement: %d rounds, %d interior and %d boundary splits, %d collapses (%d coarsening), "
-            "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg", who, sep, rs->rounds,
-         rs->splits, rs->bsplits, rs->collapses, rs->coarsened, rs->flips, rs->moves, q0 * 180 / M_PI, q1,
-         rs->kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI);
+            "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg; at %.3f s", who, sep,
+         rs->rounds, rs->splits, rs->bsplits, rs->collapses, rs->coarsened, rs->flips, rs->moves, q0 * 180 / M_PI, q1,
+         rs->kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI, elapsed());
     if (rs->stop != COMPAT_REFINE_GOAL && !rs->kept_input) {
         char why[160];
         if (rs->stop == COMPAT_REFINE_STALLED)
@@ -615,8 +624,7 @@ int main(int argc, char **argv)
     struct options o;
     parse_args(argc, argv, &o);
     int N = o.nshapes;
-    struct timespec t0;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
+    clock_gettime(CLOCK_MONOTONIC, &t_start);
 
     /* read and check every outline */
     struct rings *R = calloc(N, sizeof *R);
@@ -649,8 +657,8 @@ int main(int argc, char **argv)
     }
     double ma0, q0 = compat_min_angle(&cp, &ma0);
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
-            "min angle %.2f deg", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
-         cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI);
+            "min angle %.2f deg; at %.3f s", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
+         cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
     double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
     for (int s = 0; verbose && s < N; s++) {
@@ -662,11 +670,9 @@ int main(int argc, char **argv)
     double minarea, q = compat_min_angle(&cp, &minarea);
     if (!(minarea > 0))
         die("compatible triangulation failed: a triangle is inverted or degenerate in some shape");
-    struct timespec t1;
-    clock_gettime(CLOCK_MONOTONIC, &t1);
     info(1, "result: %d vertices (%d boundary, %d Steiner, %d refinement), %d triangles, "
             "min angle %.2f deg over %d shapes, %.3f s", cp.nv, cp.nb, cp.nsteiner, cp.nrefine, cp.nf,
-         q * 180 / M_PI, N, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec));
+         q * 180 / M_PI, N, elapsed());
 
     struct mesh m;
     if (mesh_alloc(&m, cp.nv, cp.nf, N) < 0) die("%s", cm_errmsg());
