@@ -427,10 +427,15 @@ static int seg_inside(const struct sub *p, int i, const double *P, int j, const 
     if (i >= 0 && !incone(p, i, Q)) return 0;
     if (j >= 0 && !incone(p, j, P)) return 0;
     int m = p->m;
+    /* edges whose bounding box misses the segment's cannot meet it */
+    double lo0 = fmin(P[0], Q[0]), hi0 = fmax(P[0], Q[0]), lo1 = fmin(P[1], Q[1]), hi1 = fmax(P[1], Q[1]);
     for (int e = 0; e < m; e++) {
         int f = (e + 1) % m;
         if (e == i || f == i || e == j || f == j) continue;
-        if (segments_meet(P, Q, V(p, e), V(p, f))) return 0;
+        const double *a = V(p, e), *b = V(p, f);
+        if ((a[0] < lo0 && b[0] < lo0) || (a[0] > hi0 && b[0] > hi0) || (a[1] < lo1 && b[1] < lo1) ||
+            (a[1] > hi1 && b[1] > hi1)) continue;
+        if (segments_meet(P, Q, a, b)) return 0;
     }
     /* corners i adjacent to edges we skipped: a corner other than i, j lying
      * on PQ was caught by the edges around it unless both its edges were
@@ -769,6 +774,8 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     }
     double *bestpath = malloc(2 * (size_t)N * sizeof *bestpath);
     double *tmp = malloc(2 * (size_t)N * sizeof *tmp);
+    int *ord = malloc(N * sizeof *ord);
+    for (int s = 0; s < N; s++) ord[s] = s;
     best = -1;
     for (int i = 0; i < m; i++)
         for (int j = i + 2; j < m; j++) {
@@ -779,7 +786,8 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
              * clearances are cut short there (same choice, less work) */
             double qcut = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
             if (qcut >= M_PI / 3) qcut = 0;
-            for (int s = 0; s < N && all; s++) {
+            for (int o = 0; o < N && all; o++) {
+                int s = ord[o];
                 double bq = -1;
                 if (vis_corners(&vc, s, i, j)) {
                     const double *A = V(&sp[s], i), *B = V(&sp[s], j);
@@ -816,6 +824,13 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                 }
                 if (bq < 0) all = 0;
                 q = fmin(q, bq);
+                /* the other shapes can only lower q: a pair already at
+                 * or below the best is out */
+                if (best >= 0 && pair_score(q, i, j, m) <= best) all = 0;
+                /* the shape that ruled the pair out is tried first next
+                 * time (the order changes the work, not the result: a pair
+                 * that wins has every shape's best path) */
+                if (!all && o > 0) { memmove(ord + 1, ord, o * sizeof *ord); ord[0] = s; }
             }
             if (all) {
                 double sc = pair_score(q, i, j, m);
@@ -823,6 +838,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
             }
         }
     free(tmp);
+    free(ord);
     for (int s = 0; s < N; s++) {
         free(cones.pm[s]); free(cones.an[s]); free(cones.have[s]); free(cones.from[s]); free(cones.to[s]);
     }
