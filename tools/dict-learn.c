@@ -242,6 +242,7 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     info(1, "d %d: %d restarts, %d iterations, %d split/merge moves kept, %.4f s per iteration (labels %.4f s), best restart %d, %.3f s",
          d, r->restarts, r->iterations, r->accepted, r->iterations ? r->seconds / r->iterations : 0,
          r->iterations ? r->label_seconds / r->iterations : 0, r->best_restart, r->seconds);
+    if (r->helped) info(1, "d %d: %d chunks of the last restarts' products run by idle threads", d, r->helped);
 }
 
 static void parse_sweep(const char *s, int *d1, int *d2, int *step)
