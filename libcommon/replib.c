@@ -1012,7 +1012,7 @@ static int costs_incremental(const struct replib_data *D, const struct lstate *s
  * label is not among them and has no room left is selected again): the
  * label steps after an incremental library update, where the costs moved
  * little, skip the selection. */
-__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
+__attribute__((optimize("tree-vectorize", "finite-math-only", "no-signed-zeros"), target_clones("avx512f", "avx2", "default")))
 static double dp_candidates(struct work *w, int K, int *l)
 {
     const struct replib_data *D = w->D;
