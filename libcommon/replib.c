@@ -1429,10 +1429,16 @@ static int dcols(const struct replib_data *D, struct team *t, const int *g, int 
 
 /* Sample a frame with probability proportional to max(wt[f], 0) among
  * frames with skip[f] == 0 (skip may be NULL); -1 if all weights are 0. */
-static int d2_sample(struct rng *r, const double *wt, const unsigned char *skip, int n)
+static double d2_total(const double *wt, const unsigned char *skip, int n)
 {
     double tot = 0;
     for (int f = 0; f < n; f++) if (!(skip && skip[f]) && wt[f] > 0) tot += wt[f];
+    return tot;
+}
+
+/* tot: d2_total(wt, skip, n), summed once for the draws of one set of weights */
+static int d2_sample(struct rng *r, const double *wt, const unsigned char *skip, int n, double tot)
+{
     if (!(tot > 0)) return -1;
     double u = rng_uniform(r) * tot;
     int g = -1;
@@ -1473,8 +1479,9 @@ static int seed_greedy(const struct replib_data *D, struct team *t, int d, struc
                  * (mind does not change meanwhile), then measured by one GEMM */
                 double bestpot = INFINITY;
                 int nc = 0;
+                double tot = d2_total(mind, used, n);
                 for (int t = 0; t < L; t++) {
-                    int c = d2_sample(r, mind, used, n);
+                    int c = d2_sample(r, mind, used, n, tot);
                     if (c < 0) break;
                     cands[nc++] = c;
                 }
@@ -1742,8 +1749,9 @@ static int split_merge(const struct replib_data *D, const struct replib_opts *o,
     int g = -1;
     double bestgain = -1;
     int cands[64], nc = 0;
+    double tot = d2_total(x->cur, NULL, n);
     for (int t = 0; t < L && t < 64; t++) {
-        int c = d2_sample(r, x->cur, NULL, n);
+        int c = d2_sample(r, x->cur, NULL, n, tot);
         if (c < 0) break;
         cands[nc++] = c;
     }
