@@ -150,7 +150,10 @@ struct replib_opts {
                                    instead of o->restarts on all frames.  0: off */
     int threads;                /* restarts run in parallel on this many threads (0: one per core),
                                    and the library is built from kept 32-bit frames on as many;
-                                   the result does not depend on it */
+                                   once no restart is left to start, a thread that finished
+                                   takes blocks of frames of the row-wise products (costs,
+                                   distances, second-best scans) of those still running; the
+                                   result does not depend on it */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
     void *log_ctx;
 };
@@ -163,6 +166,8 @@ struct replib_result {
     int best_restart;
     int restarts, iterations;   /* restarts run, iterations over all restarts */
     int accepted;               /* split/merge trials kept, over all restarts */
+    int helped;                 /* chunks of the restarts' row-wise products run by workers
+                                   that had no restart left (timing-dependent; the result is not) */
     double seconds;             /* wall time of replib_learn (excl. prepare) */
     double label_seconds;       /* of which in label steps */
     int sampled;                /* frames of the sample (o->sample), 0 if all frames were searched */

@@ -242,6 +242,7 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     info(1, "d %d: %d restarts, %d iterations, %d split/merge moves kept, %.4f s per iteration (labels %.4f s), best restart %d, %.3f s",
          d, r->restarts, r->iterations, r->accepted, r->iterations ? r->seconds / r->iterations : 0,
          r->iterations ? r->label_seconds / r->iterations : 0, r->best_restart, r->seconds);
+    if (r->helped) info(1, "d %d: %d chunks of the last restarts' products run by idle threads", d, r->helped);
 }
 
 static void parse_sweep(const char *s, int *d1, int *d2, int *step)
@@ -333,6 +334,13 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
 
 int main(int argc, char **argv)
 {
+    /* OpenBLAS's worker threads, idle between the few threaded calls
+     * (sketch finish, library, report), spin in sched_yield for 2^28
+     * cycles by default: 3-4% of the Monkey-size run's CPU (perf), taken
+     * from this program's own threads on 2 cores.  2^4 cycles: they sleep
+     * at once (the same numbers; read when OpenBLAS loads, so it takes
+     * effect through blas_tune's re-execution; a user's value is kept) */
+    setenv("OPENBLAS_THREAD_TIMEOUT", "4", 0);
     blas_tune(argv);
     tool_init(argc, argv);
     struct options o;
