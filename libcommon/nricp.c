@@ -461,7 +461,7 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
     int kf = 0;
     if (p->coarse > 0 && K > 1 &&
         coarse_build(VS, FS, nvs, nfs, p->coarse, &VC, &nvc, &FC, &nfc, &cm) == 0) {
-        kf = K - (p->fine_steps < 1 ? 1 : p->fine_steps >= K ? K - 1 : p->fine_steps);
+        kf = K - (p->fine_steps < 0 ? 0 : p->fine_steps >= K ? K - 1 : p->fine_steps);
         /* landmarks: the coarse face point under each landmark vertex */
         for (int l = 0; l < nl; l++) {
             int i = lm_src[l];

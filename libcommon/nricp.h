@@ -90,7 +90,8 @@ struct nricp_params {
                               vertex's closest point of the coarse mesh (default 0: off) */
     int rigid_const;       /* 1: the rigid term's weight stays rigid at every step instead of
                               fading with alpha / alpha_max (default 0) */
-    int fine_steps;        /* steps of the schedule on the source with coarse > 0 (default 2) */
+    int fine_steps;        /* steps of the schedule on the source with coarse > 0 (default 2;
+                              0: every step coarse, the ARAP fit refines on the source) */
 };
 
 void nricp_defaults(struct nricp_params *p);

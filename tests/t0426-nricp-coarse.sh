@@ -40,9 +40,13 @@ test_expect_success '--coarse --steps-out: one frame per step, the coarse steps 
 	test "$(mesh-info st.mesh | awk "/^frames/ { print \$2 }")" = 5 &&
 	test "$(mesh-info st.mesh | awk "/^vertices/ { print \$2 }")" = 642
 '
-test_expect_success '--fine-steps: as many steps on SOURCE, at least one on the coarse level' '
+test_expect_success '--fine-steps: as many steps on SOURCE (0: the fit refines), at least one on the coarse level' '
 	nricp -v --no-auto -k 4 --fit 6 --coarse 0.08 --fine-steps 3 src.mesh g.mesh >/dev/null 2>err3 &&
 	grep "the last 3 steps on the source" err3 &&
+	nricp -v --no-auto -k 4 --fit 6 --coarse 0.08 --fine-steps 0 src.mesh g.mesh >f0.mesh 2>err0 &&
+	grep "the last 0 steps on the source" err0 &&
+	mesh-metrics --no-header -r g.mesh f0.mesh >m0.txt && cat m0.txt &&
+	test_le "$(awk "{ print \$3 }" m0.txt)" 0.03 &&
 	nricp -v --no-auto -k 4 --fit 6 --coarse 0.08 --fine-steps 9 src.mesh g.mesh >/dev/null 2>err9 &&
 	grep "the last 3 steps on the source" err9
 '
@@ -55,10 +59,10 @@ test_expect_success '--rigid-const: nothing without --rigid; with it, not the fa
 	mesh-metrics --no-header -r g.mesh rc.mesh >mr.txt && cat mr.txt &&
 	test_le "$(awk "{ print \$3 }" mr.txt)" 0.03
 '
-test_expect_success 'usage: --coarse in [0, 0.5], --fine-steps >= 1' '
+test_expect_success 'usage: --coarse in [0, 0.5], --fine-steps >= 0' '
 	test_must_fail_usage nricp --coarse -0.1 src.mesh g.mesh &&
 	test_must_fail_usage nricp --coarse 0.6 src.mesh g.mesh &&
 	test_must_fail_usage nricp --coarse x src.mesh g.mesh &&
-	test_must_fail_usage nricp --fine-steps 0 src.mesh g.mesh
+	test_must_fail_usage nricp --fine-steps -1 src.mesh g.mesh
 '
 test_done

@@ -76,7 +76,8 @@ static const char help[] =
 "                        length E (target diagonals), the last --fine-steps on SOURCE,\n"
 "                        from the coarse maps (default 0: off)\n"
 "      --rigid-const     --rigid keeps its weight W at every step (default: fades)\n"
-"      --fine-steps N    steps on SOURCE itself with --coarse (default 2)\n"
+"      --fine-steps N    steps on SOURCE itself with --coarse (default 2; 0: the\n"
+"                        ARAP fit refines the coarse result directly)\n"
 "      --untangle R      after the fit, smooth out the pleats where the target's\n"
 "                        skin folds (faces on the target but turned over) on the\n"
 "                        target, with R rings around them (default 1; 0: off)\n"
@@ -288,7 +289,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->p.untangle < 0 || o->p.untangle > 20) usage_error("--untangle must be in 0..20");
     if (o->p.rigid_iters < 1 || o->p.rigid_iters > 100) usage_error("--rigid-iters must be in 1..100");
     if (!(o->p.coarse >= 0 && o->p.coarse <= 0.5)) usage_error("--coarse must be in [0, 0.5]");
-    if (o->p.fine_steps < 1 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 1..1000");
+    if (o->p.fine_steps < 0 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 0..1000");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (o->fit_smooth_retry < 0 || o->fit_smooth_retry > 100)
         usage_error("--fit-smooth-retry must be in 0..100");
