@@ -6,6 +6,7 @@
 #include "cm_error.h"
 #include "geometry.h"
 #include "mesh_distance.h"
+#include "mesh_clean.h"
 #include "nricp_untangle.h"
 #include "spd.h"
 #include "topology.h"
@@ -35,6 +36,9 @@ void nricp_defaults(struct nricp_params *p)
     p->rigid_iters = 4;
     p->untangle = 1;
     p->fit_release = 0;
+    p->coarse = 0;
+    p->fine_steps = 2;
+    p->rigid_const = 0;
 }
 
 /* right-hand side of the ARAP edge rows: w ([v_i 1] X_i - [v_j 1] X_j)
@@ -177,40 +181,73 @@ static int fit_step(void *ctx, int iter, double mu, int rejected, int folded, co
     return 0;
 }
 
-int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs, int nfs,
-                   const double *VT0, const int *FT, int nvt, int nft,
-                   const int *lm_src, const double *lm_dst0, int nl,
-                   const struct nricp_params *p, double *Xout, nricp_step_fn cb, void *ctx)
-{
-    int rc = -1;
-    for (int l = 0; l < nl; l++)
-        if (lm_src[l] < 0 || lm_src[l] >= nvs)
-            return cm_seterr("landmark %d: source vertex %d out of range 0..%d", l + 1, lm_src[l], nvs - 1);
-    /* normalize: centre and diagonal of the target */
-    double lo[3], hi[3], c[3];
-    bounding_box(VT0, nvt, lo, hi);
-    double sc = bbox_diagonal(VT0, nvt);
-    if (!(sc > 0)) return cm_seterr("the target is a single point");
-    for (int d = 0; d < 3; d++) c[d] = 0.5 * (lo[d] + hi[d]);
-    double *VS = malloc((size_t)nvs * 3 * sizeof *VS + 1), *VT = malloc((size_t)nvt * 3 * sizeof *VT + 1);
-    double *LD = malloc((size_t)nl * 3 * sizeof *LD + 1);
-    for (int i = 0; i < nvs; i++) for (int d = 0; d < 3; d++) VS[3 * i + d] = (VS0[3 * i + d] - c[d]) / sc;
-    for (int i = 0; i < nvt; i++) for (int d = 0; d < 3; d++) VT[3 * i + d] = (VT0[3 * i + d] - c[d]) / sc;
-    for (int i = 0; i < nl; i++) for (int d = 0; d < 3; d++) LD[3 * i + d] = (lm_dst0[3 * i + d] - c[d]) / sc;
-    double *RS = NULL;
-    if (RS0) {
-        RS = malloc((size_t)nvs * 3 * sizeof *RS + 1);
-        for (int i = 0; i < nvs; i++) for (int d = 0; d < 3; d++) RS[3 * i + d] = (RS0[3 * i + d] - c[d]) / sc;
-    }
+/* The coarse level of the coarse-to-fine schedule: every vertex of the
+ * fine source in a face of the coarse one (its closest point there), so
+ * the coarse affine maps, blended by the barycentrics, carry the fine
+ * vertices. */
+struct coarse_map {
+    int nv;                /* fine vertices */
+    const double *V;       /* #V by 3 fine start (normalized) */
+    const int *FC;         /* coarse faces */
+    int *face;             /* #V coarse face of each fine vertex */
+    double *bary;          /* #V by 3 */
+};
 
-    struct topology ts = {0}, tt = {0};
+/* P (#V by 3, out): the fine vertices moved by the coarse maps XC (4 #VC by 3) */
+static void coarse_apply(const struct coarse_map *m, const double *XC, double *P)
+{
+    for (int i = 0; i < m->nv; i++) {
+        const int *f = m->FC + 3 * m->face[i];
+        const double *b = m->bary + 3 * i, *v = m->V + 3 * i;
+        double M[12] = {0};
+        for (int k = 0; k < 3; k++)
+            for (int q = 0; q < 12; q++) M[q] += b[k] * XC[12 * (size_t)f[k] + q];
+        for (int d = 0; d < 3; d++)
+            P[3 * i + d] = v[0] * M[d] + v[1] * M[3 + d] + v[2] * M[6 + d] + M[9 + d];
+    }
+}
+
+/* what the stiffness steps share at every level: the target (normalized),
+ * its topology, tree and normals, the landmarks, the parameters, the report */
+struct target_side {
+    const double *VT, *NT;
+    const int *FT;
+    int nvt, nft;
+    const struct topology *tt;
+    const struct closest_point_tree *TT;
+    const double *LD;      /* nl by 3 landmark positions */
+    int nl;
+    const struct nricp_params *p;
+    nricp_step_fn cb;
+    void *ctx;
+    double sc;
+    const double *c;
+    double *Xout;          /* #V (fine) by 3, the report's buffer */
+    int nout;              /* fine vertices */
+};
+
+/* The stiffness steps k0 .. k1 - 1 of the schedule on one level: source VS
+ * (#VS by 3, normalized) with faces FS, rest Rr of the rigid term; landmark
+ * l is the row sum_k lm_b[l][k] p(lm_v[l][k]) (one vertex with weight 1 at
+ * the fine level, a point of a face at the coarse one).  P (#VS by 3): in
+ * the start, out the deformed source; X (4 #VS by 3, out): the last maps.
+ * cm (coarse level) carries every step's maps to the fine vertices for the
+ * report.  Returns 0, 1 when the report asked to stop, -1 on error. */
+static int run_stages(const double *VS, const double *Rr, const int *FS, int nvs, int nfs,
+                      const int *lm_v, const double *lm_b, int lm_m, const struct target_side *T,
+                      int k0, int k1, const struct coarse_map *cm, double *P, double *X)
+{
+    const struct nricp_params *p = T->p;
+    const double *VT = T->VT, *NT = T->NT;
+    const int *FT = T->FT;
+    int nvt = T->nvt, nl = T->nl;
+    int rc = -1;
+    struct topology ts = {0};
     struct system S = {0};
-    struct closest_point_tree *TT = NULL;
     struct spd_solver *L = NULL;
-    double *X = calloc((size_t)nvs * 12 + 1, sizeof *X);          /* 4n by 3 */
     double *B = malloc(((size_t)nvs * 12 + 1) * sizeof *B);
-    double *P = malloc(((size_t)nvs * 3 + 1) * sizeof *P), *Pold = malloc(((size_t)nvs * 3 + 1) * sizeof *Pold);
-    double *NS = malloc(((size_t)nvs * 3 + 1) * sizeof *NS), *NT = malloc(((size_t)nvt * 3 + 1) * sizeof *NT);
+    double *Pold = malloc(((size_t)nvs * 3 + 1) * sizeof *Pold);
+    double *NS = malloc(((size_t)nvs * 3 + 1) * sizeof *NS);
     double *U = malloc(((size_t)nvs * 3 + 1) * sizeof *U), *UB = malloc(((size_t)nvs * 3 + 1) * sizeof *UB);
     int *UF = malloc(((size_t)nvs + 1) * sizeof *UF);
     double *TB = malloc(((size_t)nvt * 3 + 1) * sizeof *TB), *TC = malloc(((size_t)nvt * 3 + 1) * sizeof *TC);
@@ -218,19 +255,18 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
     unsigned char *uok = malloc((size_t)nvs + 1), *tok = malloc((size_t)nvt + 1);
     double *Q = p->rigid > 0 ? malloc(((size_t)nvs * 9 + 1) * sizeof *Q) : NULL;
     double *B0 = p->rigid > 0 ? malloc(((size_t)nvs * 12 + 1) * sizeof *B0) : NULL;
-    const double *Rr = RS ? RS : VS;   /* rest shape of the ARAP term */
-    if (topology_build(FS, nfs, nvs, &ts) < 0 || topology_build(FT, nft, nvt, &tt) < 0) goto done;
+    double *PF = cm ? malloc(((size_t)cm->nv * 3 + 1) * sizeof *PF) : NULL;
+    if (topology_build(FS, nfs, nvs, &ts) < 0) goto done;
     if (system_new(&S, &ts, nvs) < 0) goto done;
-    TT = closest_point_tree_new(VT, nvt, FT, nft);
-    if (!TT) goto done;
-    vertex_normals(VT, FT, nvt, nft, NT);
-    for (int i = 0; i < nvs; i++) { X[12 * i + 0] = 1; X[12 * i + 4] = 1; X[12 * i + 8] = 1; }
-    memcpy(P, VS, (size_t)nvs * 3 * sizeof *P);
+    for (int i = 0; i < nvs; i++) {
+        memset(X + 12 * (size_t)i, 0, 12 * sizeof *X);
+        X[12 * i + 0] = 1; X[12 * i + 4] = 1; X[12 * i + 8] = 1;
+    }
     double cosmax = cos(p->max_angle * M_PI / 180);
     double g2[4] = {1, 1, 1, p->gamma * p->gamma};
     int K = p->steps < 1 ? 1 : p->steps;
     int first = 1;
-    for (int k = 0; k < K; k++) {
+    for (int k = k0; k < k1; k++) {
         double alpha = K == 1 ? p->alpha_max
                               : p->alpha_max * pow(p->alpha_min / p->alpha_max, (double)k / (K - 1));
         double beta = K == 1 ? 0 : p->beta * (1 - (double)k / (K - 1));
@@ -238,7 +274,7 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
         for (inner = 0; inner < p->max_inner; inner++) {
             /* correspondences, source -> target */
             vertex_normals(P, FS, nvs, nfs, NS);
-            rejected = correspond(TT, FT, NT, &tt, P, NS, nvs, cosmax, p->max_dist, p->search, !first,
+            rejected = correspond(T->TT, FT, NT, T->tt, P, NS, nvs, cosmax, p->max_dist, p->search, !first,
                                   U, UF, UB, uok);
             if (p->nearest_vertex)
                 for (int i = 0; i < nvs; i++) {
@@ -261,14 +297,12 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
                 closest_point_tree_free(TS);
                 double wb = p->backward * (double)nvs / nvt;
                 for (int j = 0; j < nvt; j++)
-                    if (tok[j] && tt.VFs[j + 1] > tt.VFs[j])
+                    if (tok[j] && T->tt->VFs[j + 1] > T->tt->VFs[j])
                         add_row(&S, B, FS + 3 * TF[j], TB + 3 * j, 3, VS, wb, VT + 3 * j);
             }
             /* landmarks */
-            for (int l = 0; l < nl && beta > 0; l++) {
-                double one = 1;
-                add_row(&S, B, lm_src + l, &one, 1, VS, beta * beta, LD + 3 * l);
-            }
+            for (int l = 0; l < nl && beta > 0; l++)
+                add_row(&S, B, lm_v + lm_m * l, lm_b + lm_m * l, lm_m, VS, beta * beta, T->LD + 3 * l);
             /* stiffness */
             double a2 = alpha * alpha;
             for (int e = 0; e < ts.ne; e++) {
@@ -291,7 +325,7 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
             }
             /* as rigid as possible: edge rows ([v_i 1] X_i - [v_j 1] X_j)
              * toward the rest edge turned by the rings' rotations */
-            double wr = p->rigid * alpha / p->alpha_max;
+            double wr = p->rigid_const ? p->rigid : p->rigid * alpha / p->alpha_max;
             if (Q && wr > 0) {
                 double bk[2] = {1, -1}, zero[3] = {0, 0, 0};
                 for (int e = 0; e < ts.ne; e++)
@@ -330,11 +364,145 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
             for (int i = 0; i < 3 * nvs; i++) ch += (P[i] - Pold[i]) * (P[i] - Pold[i]);
             if (sqrt(ch / nvs) < p->eps) { inner++; break; }
         }
-        if (cb) {
-            for (int i = 0; i < nvs; i++)
-                for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
-            if (cb(ctx, k, alpha, beta, inner, rejected, -1, Xout)) break;
+        if (T->cb) {
+            const double *PP = P;
+            if (cm) { coarse_apply(cm, X, PF); PP = PF; }
+            for (int i = 0; i < T->nout; i++)
+                for (int d = 0; d < 3; d++) T->Xout[3 * i + d] = PP[3 * i + d] * T->sc + T->c[d];
+            if (T->cb(T->ctx, k, alpha, beta, inner, rejected, -1, T->Xout)) { rc = 1; goto done; }
         }
+    }
+    rc = 0;
+done:
+    spd_free(L);
+    system_free(&S);
+    topology_free(&ts);
+    free(B); free(Pold); free(NS); free(U); free(UB); free(UF); free(TB); free(TC); free(TF);
+    free(uok); free(tok); free(Q); free(B0); free(PF);
+    return rc;
+}
+
+/* The coarse level: SOURCE remeshed isotropically to p->coarse diagonals
+ * (mesh_clean.h, CGAL), every fine vertex mapped to its closest point on it.
+ * Returns 0, or 1 when the remeshing fails or does not coarsen (the schedule
+ * then runs on SOURCE alone). */
+static int coarse_build(const double *VS, const int *FS, int nvs, int nfs, double edge,
+                        double **VC, int *nvc, int **FC, int *nfc, struct coarse_map *m)
+{
+    struct mesh_clean_opts o = {0};
+    o.fill_holes = 0;
+    o.edge_length = edge;
+    o.iterations = 3;
+    struct mesh_clean_report rep;
+    *VC = NULL; *FC = NULL;
+    if (mesh_clean(VS, nvs, FS, nfs, &o, VC, nvc, FC, nfc, &rep) < 0 || *nfc < 4 || *nvc >= nvs) {
+        free(*VC); free(*FC);
+        *VC = NULL; *FC = NULL;
+        return 1;
+    }
+    struct closest_point_tree *CT = closest_point_tree_new(*VC, *nvc, *FC, *nfc);
+    if (!CT) { free(*VC); free(*FC); *VC = NULL; *FC = NULL; return 1; }
+    m->nv = nvs;
+    m->V = VS;
+    m->FC = *FC;
+    m->face = malloc(((size_t)nvs + 1) * sizeof *m->face);
+    m->bary = malloc(((size_t)nvs * 3 + 1) * sizeof *m->bary);
+    closest_points(CT, VS, nvs, NULL, m->face, m->bary, NULL);
+    closest_point_tree_free(CT);
+    return 0;
+}
+
+int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs, int nfs,
+                   const double *VT0, const int *FT, int nvt, int nft,
+                   const int *lm_src, const double *lm_dst0, int nl,
+                   const struct nricp_params *p, double *Xout, nricp_step_fn cb, void *ctx)
+{
+    int rc = -1;
+    for (int l = 0; l < nl; l++)
+        if (lm_src[l] < 0 || lm_src[l] >= nvs)
+            return cm_seterr("landmark %d: source vertex %d out of range 0..%d", l + 1, lm_src[l], nvs - 1);
+    /* normalize: centre and diagonal of the target */
+    double lo[3], hi[3], c[3];
+    bounding_box(VT0, nvt, lo, hi);
+    double sc = bbox_diagonal(VT0, nvt);
+    if (!(sc > 0)) return cm_seterr("the target is a single point");
+    for (int d = 0; d < 3; d++) c[d] = 0.5 * (lo[d] + hi[d]);
+    double *VS = malloc((size_t)nvs * 3 * sizeof *VS + 1), *VT = malloc((size_t)nvt * 3 * sizeof *VT + 1);
+    double *LD = malloc((size_t)nl * 3 * sizeof *LD + 1);
+    for (int i = 0; i < nvs; i++) for (int d = 0; d < 3; d++) VS[3 * i + d] = (VS0[3 * i + d] - c[d]) / sc;
+    for (int i = 0; i < nvt; i++) for (int d = 0; d < 3; d++) VT[3 * i + d] = (VT0[3 * i + d] - c[d]) / sc;
+    for (int i = 0; i < nl; i++) for (int d = 0; d < 3; d++) LD[3 * i + d] = (lm_dst0[3 * i + d] - c[d]) / sc;
+    double *RS = NULL;
+    if (RS0) {
+        RS = malloc((size_t)nvs * 3 * sizeof *RS + 1);
+        for (int i = 0; i < nvs; i++) for (int d = 0; d < 3; d++) RS[3 * i + d] = (RS0[3 * i + d] - c[d]) / sc;
+    }
+
+    struct topology tt = {0};
+    struct closest_point_tree *TT = NULL;
+    double *X = malloc(((size_t)nvs * 12 + 1) * sizeof *X);          /* 4n by 3 */
+    double *P = malloc(((size_t)nvs * 3 + 1) * sizeof *P);
+    double *NT = malloc(((size_t)nvt * 3 + 1) * sizeof *NT);
+    double *lm_b = malloc(((size_t)nl * 3 + 1) * sizeof *lm_b);
+    int *lm_v = malloc(((size_t)nl * 3 + 1) * sizeof *lm_v);
+    double *VC = NULL, *RC = NULL, *XC = NULL, *PC = NULL;
+    int *FC = NULL, nvc = 0, nfc = 0;
+    struct coarse_map cm = {0};
+    const double *Rr = RS ? RS : VS;   /* rest shape of the ARAP term */
+    if (topology_build(FT, nft, nvt, &tt) < 0) goto done;
+    TT = closest_point_tree_new(VT, nvt, FT, nft);
+    if (!TT) goto done;
+    vertex_normals(VT, FT, nvt, nft, NT);
+    memcpy(P, VS, (size_t)nvs * 3 * sizeof *P);
+    int K = p->steps < 1 ? 1 : p->steps;
+    struct target_side ts = {VT, NT, FT, nvt, nft, &tt, TT, LD, nl, p, cb, ctx, sc, c, Xout, nvs};
+    /* coarse to fine: the stiff steps on SOURCE remeshed coarser, the last
+     * fine_steps on SOURCE itself, from the coarse maps blended */
+    int kf = 0;
+    if (p->coarse > 0 && K > 1 &&
+        coarse_build(VS, FS, nvs, nfs, p->coarse, &VC, &nvc, &FC, &nfc, &cm) == 0) {
+        kf = K - (p->fine_steps < 0 ? 0 : p->fine_steps >= K ? K - 1 : p->fine_steps);
+        /* landmarks: the coarse face point under each landmark vertex */
+        for (int l = 0; l < nl; l++) {
+            int i = lm_src[l];
+            for (int k = 0; k < 3; k++) {
+                lm_v[3 * l + k] = FC[3 * cm.face[i] + k];
+                lm_b[3 * l + k] = cm.bary[3 * i + k];
+            }
+        }
+        /* the rigid term's rest: the fine rest at each coarse vertex's
+         * closest point of the fine start */
+        const double *Rc = VC;
+        if (RS && p->rigid > 0) {
+            struct closest_point_tree *FTr = closest_point_tree_new(VS, nvs, FS, nfs);
+            if (!FTr) goto done;
+            int *fi = malloc(((size_t)nvc + 1) * sizeof *fi);
+            double *bi = malloc(((size_t)nvc * 3 + 1) * sizeof *bi);
+            RC = malloc(((size_t)nvc * 3 + 1) * sizeof *RC);
+            closest_points(FTr, VC, nvc, NULL, fi, bi, NULL);
+            closest_point_tree_free(FTr);
+            for (int v = 0; v < nvc; v++)
+                for (int d = 0; d < 3; d++) {
+                    RC[3 * v + d] = 0;
+                    for (int k = 0; k < 3; k++)
+                        RC[3 * v + d] += bi[3 * v + k] * RS[3 * FS[3 * fi[v] + k] + d];
+                }
+            free(fi); free(bi);
+            Rc = RC;
+        }
+        if (cb) cb(ctx, 0, 0, 0, nvc, nfc, -3, NULL);
+        XC = malloc(((size_t)nvc * 12 + 1) * sizeof *XC);
+        PC = malloc(((size_t)nvc * 3 + 1) * sizeof *PC);
+        memcpy(PC, VC, (size_t)nvc * 3 * sizeof *PC);
+        int r = run_stages(VC, Rc, FC, nvc, nfc, lm_v, lm_b, 3, &ts, 0, kf, &cm, PC, XC);
+        if (r < 0) goto done;
+        coarse_apply(&cm, XC, P);
+        if (r > 0) kf = K;     /* the report stopped the schedule */
+    }
+    if (kf < K) {
+        for (int l = 0; l < nl; l++) { lm_v[l] = lm_src[l]; lm_b[l] = 1; }
+        int r = run_stages(VS, Rr, FS, nvs, nfs, lm_v, lm_b, 1, &ts, kf, K, NULL, P, X);
+        if (r < 0) goto done;
     }
     /* the ARAP fit: unfolds what the affine maps folded (arap_fit.h) */
     if (p->fit > 0) {
@@ -371,14 +539,10 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
         for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
     rc = 0;
 done:
-    spd_free(L);
     closest_point_tree_free(TT);
-    system_free(&S);
-    topology_free(&ts);
     topology_free(&tt);
-    free(VS); free(RS); free(VT); free(LD); free(X); free(B); free(P); free(Pold); free(NS); free(NT);
-    free(U); free(UB); free(UF); free(TB); free(TC); free(TF);
-    free(uok); free(tok); free(Q); free(B0);
+    free(VS); free(RS); free(VT); free(LD); free(X); free(P); free(NT); free(lm_b); free(lm_v);
+    free(VC); free(FC); free(RC); free(XC); free(PC); free(cm.face); free(cm.bary);
     return rc;
 }
 

@@ -26,6 +26,10 @@
  *      refactored (CHOLMOD, analysis kept) each time; the rotations and the
  *      solve alternate rigid_iters times on one factorization.
  * The landmark weight beta fades linearly from beta to 0 over the schedule.
+ * Coarse to fine (coarse > 0): the first steps (the stiff ones) run on the
+ * source remeshed coarser, landmarks and correspondences alike; each fine
+ * vertex then takes the blend of the coarse affine maps at its closest
+ * point of the coarse mesh, and the last fine_steps steps run on the source.
  * At low stiffness the per-vertex affine maps may mirror a few triangles
  * where vertices crowd into a crease or onto a tip.  So finally (fit > 0)
  * the pose is refined by arap_fit (arap_fit.h): the same correspondences
@@ -79,6 +83,15 @@ struct nricp_params {
                               mean of their neighbours (arap_fit_params.release_mean) */
     int rigid_iters;       /* local/global iterations of that term per correspondence
                               update (rotations refitted, same factorization; default 4) */
+    double coarse;         /* > 0: coarse to fine: the schedule's stiff steps run on the
+                              source remeshed isotropically to this edge length (in target
+                              diagonals; mesh_clean.h), the last fine_steps on the source
+                              itself, started from the coarse affine maps blended at each
+                              vertex's closest point of the coarse mesh (default 0: off) */
+    int rigid_const;       /* 1: the rigid term's weight stays rigid at every step instead of
+                              fading with alpha / alpha_max (default 0) */
+    int fine_steps;        /* steps of the schedule on the source with coarse > 0 (default 2;
+                              0: every step coarse, the ARAP fit refines on the source) */
 };
 
 void nricp_defaults(struct nricp_params *p);
@@ -89,7 +102,10 @@ void nricp_defaults(struct nricp_params *p);
  * alpha is then its data weight and folded the number of folded faces
  * (-1 for the schedule's steps).  After the untangling (untangle > 0) it
  * is called once more with folded -2, inner and rejected the faces flipped
- * against the target before and after (X the untangled pose). */
+ * against the target before and after (X the untangled pose).  With
+ * coarse > 0 it is called first with folded -3, inner and rejected the
+ * coarse level's vertex and face counts (X NULL); the coarse steps report
+ * the fine vertices moved by the coarse maps. */
 typedef int (*nricp_step_fn)(void *ctx, int step, double alpha, double beta, int inner,
                              int rejected, int folded, const double *X);
 

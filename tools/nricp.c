@@ -72,6 +72,12 @@ static const char help[] =
 "                        W x alpha / alpha-max per edge: keeps the steps' local\n"
 "                        maps near rotations (default 0: off; try 10)\n"
 "      --rigid-iters N   its rotation updates per step (default 4)\n"
+"      --coarse E        coarse to fine: the stiff steps on SOURCE remeshed to edge\n"
+"                        length E (target diagonals), the last --fine-steps on SOURCE,\n"
+"                        from the coarse maps (default 0: off)\n"
+"      --rigid-const     --rigid keeps its weight W at every step (default: fades)\n"
+"      --fine-steps N    steps on SOURCE itself with --coarse (default 2; 0: the\n"
+"                        ARAP fit refines the coarse result directly)\n"
 "      --untangle R      after the fit, smooth out the pleats where the target's\n"
 "                        skin folds (faces on the target but turned over) on the\n"
 "                        target, with R rings around them (default 1; 0: off)\n"
@@ -144,7 +150,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR };
+           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
@@ -152,7 +158,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
         {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"fit-release", 1, 0, O_FITREL},
-        {"fit-smooth-retry", 1, 0, O_FITSR},
+        {"fit-smooth-retry", 1, 0, O_FITSR}, {"coarse", 1, 0, O_COARSE}, {"fine-steps", 1, 0, O_FINESTEPS}, {"rigid-const", 0, 0, O_RIGIDC},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
@@ -198,6 +204,9 @@ static void parse_args(int argc, char **argv, struct options *o)
             else usage_error("--fit-release must be stay, mean or both");
             break;
         case O_RIGIDN: o->p.rigid_iters = arg_int(optarg, "--rigid-iters"); break;
+        case O_COARSE: o->p.coarse = arg_double(optarg, "--coarse"); break;
+        case O_RIGIDC: o->p.rigid_const = 1; break;
+        case O_FINESTEPS: o->p.fine_steps = arg_int(optarg, "--fine-steps"); break;
         case O_REST: o->rest = optarg; break;
         case O_CREST:
             o->chain_rest_given = 1;
@@ -279,6 +288,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->p.rigid >= 0 && o->p.rigid <= 1e6)) usage_error("--rigid must be in [0, 1e6]");
     if (o->p.untangle < 0 || o->p.untangle > 20) usage_error("--untangle must be in 0..20");
     if (o->p.rigid_iters < 1 || o->p.rigid_iters > 100) usage_error("--rigid-iters must be in 1..100");
+    if (!(o->p.coarse >= 0 && o->p.coarse <= 0.5)) usage_error("--coarse must be in [0, 0.5]");
+    if (o->p.fine_steps < 0 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 0..1000");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (o->fit_smooth_retry < 0 || o->fit_smooth_retry > 100)
         usage_error("--fit-smooth-retry must be in 0..100");
@@ -288,12 +299,18 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->p.eps >= 0)) usage_error("--eps must be >= 0");
 }
 
-struct steps { double *frames; int n, cap, nv, nsteps, nfit; struct progress pr; double t0; };
+struct steps { double *frames; int n, cap, nv, nsteps, nfit; struct progress pr; double t0;
+               double coarse; int fine_steps; };
 
 static int on_step(void *ctx, int step, double alpha, double beta, int inner, int rejected,
                    int folded, const double *X)
 {
     struct steps *s = ctx;
+    if (folded == -3) {
+        info(1, "coarse level: %d vertices, %d faces (--coarse %g); the last %d steps on the "
+             "source's %d vertices", inner, rejected, s->coarse, s->fine_steps, s->nv);
+        return 0;
+    }
     if (folded == -2) {
         info(1, "untangled: %d -> %d faces flipped against the target, %.2f s", inner, rejected,
              now_seconds() - s->t0);
@@ -525,6 +542,8 @@ int main(int argc, char **argv)
     st.nv = S.nv;
     st.nsteps = o.p.steps;
     st.nfit = o.p.fit;
+    st.coarse = o.p.coarse;
+    st.fine_steps = o.p.fine_steps >= o.p.steps ? o.p.steps - 1 : o.p.fine_steps;
     if (o.steps_out) st.frames = malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *st.frames);
     /* the keys: frame 0 the source, frame k the registration to target k;
      * key k starts from key k - 1, the fit keeps the source's shape */
