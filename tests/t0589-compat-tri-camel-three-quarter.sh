@@ -14,7 +14,8 @@ test_expect_success 'setup: poses 1, 2 and 4 rendered at azimuth 60, elevation 1
 	done
 '
 
-# measured: pairs 13.55, 9.63, 20.00 degrees; all three 10.19 (1.6 s CPU);
+# measured: pairs 13.55, 9.63, 20.00 degrees; all three 10.19 (1.6 s CPU,
+# long enough for the progress count, which shows every 0.1 s);
 # every one of the 26 subsets of all five poses succeeds (3.09-20.05 deg)
 test_expect_success 'every pair and all three without a correspondence point: positive, worst angle >= 9 degrees' '
 	for set in "1 2" "1 4" "2 4" "1 2 4"; do
@@ -28,5 +29,12 @@ test_expect_success 'every pair and all three without a correspondence point: po
 test_expect_success '-v says when the triangulation and the refinement ended' '
 	grep "triangulation: .*; at [0-9.]* s$" m.log &&
 	grep "refinement: .*; at [0-9.]* s$" m.log
+'
+test_expect_success 'a count of refinement rounds on a terminal (STOPMO_PROGRESS=1 forces it), none in a pipe' '
+	STOPMO_PROGRESS=1 compat-tri q1.rings q2.rings q4.rings >p.mesh 2>p.err &&
+	grep "compat-tri: refinement rounds [0-9]" p.err &&
+	compat-tri q1.rings q2.rings q4.rings >n.mesh 2>n.err &&
+	! test -s n.err &&
+	test_cmp p.mesh n.mesh
 '
 test_done

@@ -10,6 +10,7 @@
 #include "mesh.h"
 #include "rings.h"
 #include "tool.h"
+#include "progress.h"
 #include "cm_error.h"
 #include <limits.h>
 #include <math.h>
@@ -477,7 +478,17 @@ static double improve(const struct options *opt, struct compat *cpp, double q0)
     }
     struct compat_refine_params pa = refine_params(&o, cpp);
     struct compat_refine_stats rs;
-    if (compat_refine(cpp, &pa, &rs) < 0) return -1;
+    /* compat_refine, a round at a time for the progress count */
+    struct compat_refiner *r = compat_refine_begin(cpp, &pa, &rs);
+    if (!r) return -1;
+    struct progress pr;
+    progress_start(&pr, "compat-tri: refinement rounds", 0);
+    int k;
+    long done = 0;
+    while ((k = compat_refine_step(r)) > 0) progress_step(&pr, ++done);
+    progress_end(&pr);
+    if (k < 0) { compat_refine_abandon(r); return -1; }
+    if (compat_refine_finish(r) < 0) return -1;
     return refine_report(&o, cpp, q0, &rs, &pa, NULL);
 }
 
@@ -493,9 +504,10 @@ struct candidate {
 };
 
 /* a round of candidate k; finishes it when its splitting stops; 0 or -1 */
-static int cand_step(const struct options *o, struct candidate *k)
+static int cand_step(const struct options *o, struct candidate *k, struct progress *pr, long *rounds)
 {
     int st = compat_refine_step(k->r);
+    progress_step(pr, ++*rounds);
     if (st < 0) return -1;
     if (st == 0) {
         int rc = compat_refine_finish(k->r);
@@ -547,16 +559,19 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     K[0].pa = refine_params(o, cp);
     if (!(K[0].r = compat_refine_begin(&K[0].cp, &K[0].pa, &K[0].rs))) die("%s", cm_errmsg());
     int rounds[2] = {0, 0};
+    struct progress pr;
+    long done = 0;
+    progress_start(&pr, "compat-tri: refinement rounds", 0);
     for (;;) {
         int live0 = K[0].r != NULL, live1 = K[1].r != NULL;
         if (!live0 && !live1 && (K[1].built || K[0].q >= o->min_angle)) break;
         /* the matched points at the goal: kept */
         if (!live0 && K[0].q >= o->min_angle) break;
         if (live0 && (rounds[0] <= rounds[1] || !live1)) {
-            if (cand_step(o, &K[0]) < 0) die("%s", cm_errmsg());
+            if (cand_step(o, &K[0], &pr, &done) < 0) die("%s", cm_errmsg());
             rounds[0]++;
         } else if (live1) {
-            if (cand_step(o, &K[1]) < 0) die("%s", cm_errmsg());
+            if (cand_step(o, &K[1], &pr, &done) < 0) die("%s", cm_errmsg());
             rounds[1]++;
         }
         int nbad0 = 0, fewest0 = 0;
@@ -600,6 +615,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
             }
         }
     }
+    progress_end(&pr);
     /* kept: the matched points at the goal, else the larger worst angle */
     int use = K[0].q >= o->min_angle ? 0 : K[1].q > K[0].q;
     for (int a = 0; a < 2; a++)
