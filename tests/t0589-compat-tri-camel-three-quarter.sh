@@ -37,4 +37,10 @@ test_expect_success 'a count of refinement rounds on a terminal (STOPMO_PROGRESS
 	! test -s n.err &&
 	test_cmp p.mesh n.mesh
 '
+test_expect_success 'examples/morph2d camel34: the same three poses, the same mesh' '
+	make -s -C "$STOPMO_ROOT/examples/morph2d" BIN="$STOPMO_BIN" SCANS="$SHARED_DATA/scans" \
+		OUT="$TRASH/out" camel34 >log 2>&1 &&
+	test -s out/camel34.svg &&
+	test_cmp m.mesh out/camel34.mesh
+'
 test_done
