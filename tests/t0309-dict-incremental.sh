@@ -13,9 +13,7 @@ test_expect_success 'setup: a 240-frame head, 6 decimals, with noise (full rank)
 '
 for lam in 0 2; do
 	test_expect_success "lambda $lam, streamed: --threads 1 and --threads 2 give the same bytes" "
-		dict-learn -d 24 -l $lam --seed 4 --stream on --threads 1 --report t1.rep --labels-out t1.lab noisy.mesh >t1.lib &&
-		dict-learn -d 24 -l $lam --seed 4 --stream on --threads 2 --report t2.rep --labels-out t2.lab noisy.mesh >t2.lib &&
-		test_cmp t1.lib t2.lib && test_cmp t1.lab t2.lab && test_cmp t1.rep t2.rep
+		threads_agree t \"-d 24 -l $lam --seed 4 --stream on\" 1 2
 	"
 done
 test_expect_success 'lambda 2, streamed: the search never ends above the plain descent from the same seed' '
