@@ -402,13 +402,8 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
 }
 
 /* seconds since the start (the -v lines say when each stage ended) */
-static struct timespec t_start;
-static double elapsed(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (t.tv_sec - t_start.tv_sec) + 1e-9 * (t.tv_nsec - t_start.tv_nsec);
-}
+static double t_start;
+static double elapsed(void) { return now_seconds() - t_start; }
 
 /* the refinement's parameters for cp (compat_refine_params) */
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
@@ -640,7 +635,7 @@ int main(int argc, char **argv)
     struct options o;
     parse_args(argc, argv, &o);
     int N = o.nshapes;
-    clock_gettime(CLOCK_MONOTONIC, &t_start);
+    t_start = now_seconds();
 
     /* read and check every outline */
     struct rings *R = calloc(N, sizeof *R);
