@@ -90,6 +90,13 @@ struct JVal {
         const JVal *v = get(k);
         return v && v->t == NUM ? v->num : def;
     }
+    /* a glTF enum (componentType and the like): -1 if absent, not a whole
+     * number or out of int's range (a cast of 5e50 to int is undefined) */
+    int code(const char *k) const
+    {
+        size_t x = size(k, -1);
+        return x <= 1000000000 ? (int)x : -1;
+    }
 };
 
 struct JParser {
@@ -294,7 +301,7 @@ struct Gltf {
             *bad = ai;
             const JVal *bvi = a.get("bufferView"), *ty = a.get("type");
             if (!bvi || !ty) continue;
-            int ct = (int)a.number("componentType", 0);
+            int ct = a.code("componentType");
             size_t csize = ct == 5126 || ct == 5125 ? 4 : ct == 5122 || ct == 5123 ? 2 : ct == 5120 || ct == 5121 ? 1 : 0;
             const std::string &t = ty->str;
             size_t ncomp = t == "SCALAR" ? 1 : t == "VEC2" ? 2 : t == "VEC3" ? 3 : t == "VEC4" || t == "MAT2" ? 4
@@ -370,7 +377,7 @@ struct Gltf {
         if (!a || a->get("sparse")) return false;
         const JVal *ty = a->get("type");
         if (!ty || ty->str != "SCALAR") return false;
-        int ct = (int)a->number("componentType", 0);
+        int ct = a->code("componentType");
         size_t count = a->size("count", 0);
         size_t csize = ct == 5126 ? 4 : ct == 5122 || ct == 5123 ? 2 : ct == 5120 || ct == 5121 ? 1 : 0;
         if (!csize || count > (1u << 30)) return false;
