@@ -191,7 +191,8 @@ static double star_min(const struct compat *c, const struct topology *t, int s, 
         const int *F = c->F + 3 * t->VF[k];
         const double *P[3];
         for (int j = 0; j < 3; j++) P[j] = F[j] == v ? p : X + 2 * F[j];
-        q = fmin(q, fn(P[0], P[1], P[2]));
+        double x = fn(P[0], P[1], P[2]);
+        if (x < q) q = x;   /* fmin without the call (x is never NaN) */
         if (q <= floor) break;
     }
     return q;
@@ -853,13 +854,7 @@ out:
 
 static int flips_until_done(struct compat *c, int *nflips)
 {
-    for (int k = 0; k < 50; k++) {
-        int x = compat_flip_pass(c);
-        if (x < 0) return -1;
-        *nflips += x;
-        if (!x) break;
-    }
-    return 0;
+    return compat_flip_passes(c, 50, nflips);
 }
 
 /* smallest sine of the smallest angle of face (a, b, d) over the shapes; -1
@@ -1405,6 +1400,11 @@ int compat_refine_finish(struct compat_refiner *r)
 out:
     refiner_free(r);
     return rc;
+}
+
+void compat_refine_threads(struct compat_refiner *r, int threads)
+{
+    r->pa.threads = threads;
 }
 
 void compat_refine_abandon(struct compat_refiner *r)

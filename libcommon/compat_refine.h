@@ -157,6 +157,8 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa,
  *                      output may be NULL).
  * compat_refine_finish back to the best round, final polish and
  *                      coarsening, renumbering; frees the refiner.  0 or -1.
+ * compat_refine_threads sets the threads of the later steps (pa->threads;
+ *                      the result does not depend on it).
  * compat_refine_abandon frees the refiner; c stays a valid compatible
  *                      triangulation of the last round (unpolished, its
  *                      vertices not renumbered) to be freed by the caller. */
@@ -166,6 +168,7 @@ struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat
 int compat_refine_step(struct compat_refiner *r);
 void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad, int *fewest);
 int compat_refine_finish(struct compat_refiner *r);
+void compat_refine_threads(struct compat_refiner *r, int threads);
 void compat_refine_abandon(struct compat_refiner *r);
 
 /* Quality of shape s: smallest angle (radians) of any triangle, and the

@@ -233,25 +233,37 @@ int compat_corr_order(int N, const int *n, int *corr, int ncorr)
 
 static double seg_dist(const double *p, const double *a, const double *b);
 
-static double ring_dist(const double *p, const double *R, int n)
+/* distance from p to the closed polyline R (n points), or any value <=
+ * floor once one segment is that close (the caller keeps a maximum that is
+ * already floor); the scan starts at segment *hint (the closest segment of
+ * the caller's previous point, usually close again) and leaves the closest
+ * one found there */
+static double ring_dist(const double *p, const double *R, int n, double floor, int *hint)
 {
     double d = INFINITY;
-    for (int i = 0; i < n; i++) d = fmin(d, seg_dist(p, R + 2 * i, R + 2 * ((i + 1) % n)));
+    int h0 = *hint;
+    for (int k = 0; k < n; k++) {
+        int i = (h0 + k) % n;
+        double x = seg_dist(p, R + 2 * i, R + 2 * ((i + 1) % n));
+        if (x < d) { d = x; *hint = i; }
+        if (d <= floor) break;
+    }
     return d;
 }
 
 double compat_outline_error(const struct compat *c, int s, const double *P, int n)
 {
     const double *X = c->X[s];
-    int nb = c->nb;
+    int nb = c->nb, hint = 0;
     double h = 0;
-    for (int i = 0; i < n; i++) h = fmax(h, ring_dist(P + 2 * i, X, nb));
+    for (int i = 0; i < n; i++) h = fmax(h, ring_dist(P + 2 * i, X, nb, h, &hint));
     /* the other direction: 16 points along every simplified edge */
+    hint = 0;
     for (int i = 0; i < nb; i++) {
         const double *a = X + 2 * i, *b = X + 2 * ((i + 1) % nb);
         for (int t = 0; t < 16; t++) {
             double u = t / 16.0, q[2] = {a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])};
-            h = fmax(h, ring_dist(q, P, n));
+            h = fmax(h, ring_dist(q, P, n, h, &hint));
         }
     }
     return h / diag2(P, n);
@@ -1283,17 +1295,6 @@ static double tri_min_angle(const double *a, const double *b, const double *d)
     return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 
-double compat_sin_min_angle(const double *a, const double *b, const double *d)
-{
-    double e0x = b[0] - a[0], e0y = b[1] - a[1], e1x = d[0] - b[0], e1y = d[1] - b[1];
-    double e2x = a[0] - d[0], e2y = a[1] - d[1];
-    double l0 = e0x * e0x + e0y * e0y, l1 = e1x * e1x + e1y * e1y, l2 = e2x * e2x + e2y * e2y;
-    double area2 = e0x * (d[1] - a[1]) - e0y * (d[0] - a[0]);
-    if (!(area2 > 0)) return 0;
-    double p = l0 <= l1 && l0 <= l2 ? l1 * l2 : l1 <= l2 ? l0 * l2 : l0 * l1;
-    return area2 / sqrt(p);
-}
-
 /* smallest angle over shapes of triangle (a,b,d) as its sine; -1 if
  * inverted in some shape (exact) */
 static double face_quality(const struct compat *c, int a, int b, int d)
@@ -1301,8 +1302,10 @@ static double face_quality(const struct compat *c, int a, int b, int d)
     double q = INFINITY;
     for (int s = 0; s < c->N; s++) {
         const double *X = c->X[s];
-        if (orient2_sign(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
-        q = fmin(q, compat_sin_min_angle(X + 2 * a, X + 2 * b, X + 2 * d));
+        double x = compat_sin_min_angle(X + 2 * a, X + 2 * b, X + 2 * d);
+        /* a sine above 1e-9 cannot come from a wrongly signed area */
+        if (x < 1e-9 && orient2_sign(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
+        q = fmin(q, x);
     }
     return q;
 }
@@ -1342,21 +1345,35 @@ static int oriented_edge(const int *F, int f, int a, int b)
     return 0;
 }
 
-int compat_flip_pass(struct compat *c)
+/* compat_flip_pass; with seen != NULL only the edges with a triangle
+ * flagged in seen (#F) are looked at (the others were looked at before with
+ * the same two triangles and not flipped), changed (#F, may be NULL) flags
+ * the triangles this pass rewrote and again (#F, with changed) those of
+ * edges not flipped because the other diagonal is an edge elsewhere (that
+ * edge may be gone by the next pass) */
+static int flip_pass(struct compat *c, const unsigned char *seen, unsigned char *changed, unsigned char *again)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    unsigned char *touched = calloc(c->nf, 1);
+    unsigned char *touched = changed ? changed : malloc(c->nf + 1);
+    if (!touched) { topology_free(&t); return cm_seterr("out of memory"); }
+    memset(touched, 0, c->nf);
+    if (again) memset(again, 0, c->nf);
     int flips = 0;
     for (int e = 0; e < t.ne; e++) {
         if (t.EFn[e] != 2) continue;
         int f1 = t.EF[2 * e], f2 = t.EF[2 * e + 1];
         if (touched[f1] || touched[f2]) continue;
+        if (seen && !seen[f1] && !seen[f2]) continue;
         int a = t.E[2 * e], b = t.E[2 * e + 1];
         if (!oriented_edge(c->F, f1, a, b)) { int x = f1; f1 = f2; f2 = x; }
         /* f1 = (a, b, p), f2 = (b, a, q) */
         int p = opposite(c->F, f1, a, b), q = opposite(c->F, f2, a, b);
-        if (p == q || topology_edge(&t, p, q) >= 0) continue;
+        if (p == q) continue;
+        if (topology_edge(&t, p, q) >= 0) {
+            if (again) again[f1] = again[f2] = 1;
+            continue;
+        }
         double old = fmin(face_quality(c, a, b, p), face_quality(c, b, a, q));
         /* the second new face is looked at only if the first beats old */
         double n1 = face_quality(c, a, q, p);
@@ -1370,9 +1387,37 @@ int compat_flip_pass(struct compat *c)
             flips++;
         }
     }
-    free(touched);
+    if (!changed) free(touched);
     topology_free(&t);
     return flips;
+}
+
+int compat_flip_pass(struct compat *c)
+{
+    return flip_pass(c, NULL, NULL, NULL);
+}
+
+/* An edge whose two triangles no pass rewrote gives the same answer as in
+ * the pass before (the positions do not change; an edge skipped because a
+ * triangle was rewritten has that triangle flagged), so after the first
+ * pass only the edges of rewritten triangles are looked at: the same
+ * flips as full passes, in the same order. */
+int compat_flip_passes(struct compat *c, int passes, int *nflips)
+{
+    unsigned char *fl[2] = {malloc(c->nf + 1), malloc(c->nf + 1)}, *again = malloc(c->nf + 1);
+    int rc = 0;
+    if (!fl[0] || !fl[1] || !again) rc = cm_seterr("out of memory");
+    for (int k = 0; !rc && k < passes; k++) {
+        unsigned char *seen = k ? fl[(k + 1) & 1] : NULL, *changed = fl[k & 1];
+        int x = flip_pass(c, seen, changed, again);
+        if (x < 0) rc = -1;
+        else { *nflips += x; if (!x) break; }
+        for (int f = 0; f < c->nf; f++) changed[f] |= again[f];
+    }
+    free(fl[0]);
+    free(fl[1]);
+    free(again);
+    return rc;
 }
 
 static double edge_len_rel(const struct compat *c, int a, int b, const double *dg)
@@ -1479,7 +1524,7 @@ int compat_improve(struct compat *c, double target, int iters)
         for (int r = 0; r < 30; r++) {
             /* flips and a little smoothing before every split round, so new
              * vertices spread out instead of piling up along slivers */
-            for (int k = 0; k < 20; k++) if (compat_flip_pass(c) <= 0) break;
+            { int nfl = 0; if (compat_flip_passes(c, 20, &nfl) < 0) { free(dg); return -1; } }
             struct topology t;
             if (topology_build(c->F, c->nf, c->nv, &t) < 0) { free(dg); return -1; }
             for (int k = 0; k < 3; k++) smooth_pass(c, &t, 1);
@@ -1494,7 +1539,7 @@ int compat_improve(struct compat *c, double target, int iters)
         for (int k = 0; k < 5; k++) smooth_pass(c, &t, it < iters / 2);
         topology_free(&t);
         int nfl = 0;
-        for (int k = 0; k < 20; k++) { int x = compat_flip_pass(c); if (x < 0) { free(dg); return -1; } nfl += x; if (!x) break; }
+        if (compat_flip_passes(c, 20, &nfl) < 0) { free(dg); return -1; }
         if (nfl == 0 && it > 2) break;
     }
     free(dg);

@@ -31,6 +31,7 @@
  */
 #ifndef CM_COMPAT_TRI_H
 #define CM_COMPAT_TRI_H
+#include <math.h>
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -120,6 +121,12 @@ int compat_improve(struct compat *c, double target, int iters);
  * Returns the number of flips, -1 on out of memory. */
 int compat_flip_pass(struct compat *c);
 
+/* compat_flip_pass until a pass flips nothing, at most passes passes (the
+ * same flips, but after the first pass only the edges of triangles the
+ * pass before rewrote are looked at); adds the flips to *nflips.  0, or -1
+ * on out of memory. */
+int compat_flip_passes(struct compat *c, int passes, int *nflips);
+
 /* Minimum angle (radians) over all triangles of all shapes; *minarea gets
  * the smallest signed area divided by the shape's squared diagonal
  * (> 0 iff every triangle is positively oriented in every shape). */
@@ -129,7 +136,16 @@ double compat_min_angle(const struct compat *c, double *minarea);
  * coordinates); the smallest angle is at most 60 degrees, so the sine
  * orders triangles as the angle does.  0 if the floating-point signed area
  * is not positive (counter-clockwise is positive). */
-double compat_sin_min_angle(const double *a, const double *b, const double *d);
+static inline double compat_sin_min_angle(const double *a, const double *b, const double *d)
+{
+    double e0x = b[0] - a[0], e0y = b[1] - a[1], e1x = d[0] - b[0], e1y = d[1] - b[1];
+    double e2x = a[0] - d[0], e2y = a[1] - d[1];
+    double l0 = e0x * e0x + e0y * e0y, l1 = e1x * e1x + e1y * e1y, l2 = e2x * e2x + e2y * e2y;
+    double area2 = e0x * (d[1] - a[1]) - e0y * (d[0] - a[0]);
+    if (!(area2 > 0)) return 0;
+    double p = l0 <= l1 && l0 <= l2 ? l1 * l2 : l1 <= l2 ? l0 * l2 : l0 * l1;
+    return area2 / sqrt(p);
+}
 
 void compat_free(struct compat *c);
 

@@ -24,12 +24,16 @@ static void *worker(void *arg)
     }
 }
 
+int parallel_threads(int nthreads)
+{
+    if (nthreads > 0) return nthreads;
+    long c = sysconf(_SC_NPROCESSORS_ONLN);
+    return c > 0 ? (int)c : 1;
+}
+
 void parallel_run(int n, int nthreads, void (*job)(void *ctx, int i), void *ctx)
 {
-    if (nthreads <= 0) {
-        long c = sysconf(_SC_NPROCESSORS_ONLN);
-        nthreads = c > 0 ? (int)c : 1;
-    }
+    nthreads = parallel_threads(nthreads);
     if (nthreads > n) nthreads = n;
     if (nthreads > PARALLEL_MAX) nthreads = PARALLEL_MAX;
     if (nthreads <= 1) {

@@ -17,6 +17,9 @@ extern "C" {
  * started leaves its share to the others.  Returns when every job is done. */
 void parallel_run(int n, int nthreads, void (*job)(void *ctx, int i), void *ctx);
 
+/* the threads parallel_run takes for nthreads (<= 0: the online processors) */
+int parallel_threads(int nthreads);
+
 #ifdef __cplusplus
 }
 #endif

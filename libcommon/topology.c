@@ -5,28 +5,41 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int cmp_u64(const void *a, const void *b)
-{
-    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-    return x < y ? -1 : x > y;
-}
-
 int topology_build(const int *F, int nf, int nv, struct topology *t)
 {
     memset(t, 0, sizeof *t);
     t->nv = nv;
     t->nf = nf;
     size_t nh = (size_t)nf * 3;
-    /* half-edge keys: (min << 32 | max) then the corner id in a parallel sort */
+    /* half-edge keys (min << 32 | max) with the corner id, sorted by key
+     * and, among equal keys, by corner: a counting sort by min (stable),
+     * then each min's few entries by max (insertion sort, stable) */
     uint64_t *key = malloc((nh + 1) * 2 * sizeof *key);
-    if (!key) return cm_seterr("out of memory");
+    size_t *start = calloc((size_t)nv + 2, sizeof *start);
+    if (!key || !start) { free(key); free(start); return cm_seterr("out of memory"); }
+    for (size_t h = 0; h < nh; h++) {
+        int a = F[h], b = F[h - h % 3 + (h % 3 + 1) % 3];
+        start[(a < b ? a : b) + 1]++;
+    }
+    for (int v = 0; v < nv; v++) start[v + 1] += start[v];
     for (size_t h = 0; h < nh; h++) {
         uint32_t a = (uint32_t)F[h], b = (uint32_t)F[h - h % 3 + (h % 3 + 1) % 3];
         uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
-        key[2 * h] = (uint64_t)lo << 32 | hi;
-        key[2 * h + 1] = h;
+        size_t i = start[lo]++;
+        key[2 * i] = (uint64_t)lo << 32 | hi;
+        key[2 * i + 1] = h;
     }
-    qsort(key, nh, 2 * sizeof *key, cmp_u64);
+    for (size_t i = 1; i < nh; i++) {
+        uint64_t k = key[2 * i], c = key[2 * i + 1];
+        size_t j = i;
+        for (; j > 0 && key[2 * (j - 1)] > k; j--) {
+            key[2 * j] = key[2 * (j - 1)];
+            key[2 * j + 1] = key[2 * (j - 1) + 1];
+        }
+        key[2 * j] = k;
+        key[2 * j + 1] = c;
+    }
+    free(start);
     t->FE = malloc((nh + 1) * sizeof *t->FE);
     t->E = malloc((nh + 1) * 2 * sizeof *t->E);
     t->EF = malloc((nh + 1) * 2 * sizeof *t->EF);
@@ -68,6 +81,9 @@ int topology_build(const int *F, int nf, int nv, struct topology *t)
     for (int e = 0; e < ne; e++) t->VV[fill[t->E[2 * e + 1]]++] = t->E[2 * e];
     for (int e = 0; e < ne; e++) t->VV[fill[t->E[2 * e]]++] = t->E[2 * e + 1];
     free(fill);
+    t->ES = calloc((size_t)nv + 1, sizeof *t->ES);
+    for (int e = 0; e < ne; e++) t->ES[t->E[2 * e] + 1]++;
+    for (int v = 0; v < nv; v++) t->ES[v + 1] += t->ES[v];
     for (int v = 0; v < nv; v++) t->nisolated += t->VFs[v] == t->VFs[v + 1];
     return 0;
 }
@@ -75,20 +91,20 @@ int topology_build(const int *F, int nf, int nv, struct topology *t)
 void topology_free(struct topology *t)
 {
     free(t->E); free(t->EF); free(t->EFn); free(t->FE);
-    free(t->VFs); free(t->VF); free(t->VVs); free(t->VV);
+    free(t->VFs); free(t->VF); free(t->VVs); free(t->VV); free(t->ES);
     memset(t, 0, sizeof *t);
 }
 
 int topology_edge(const struct topology *t, int a, int b)
 {
     int lo = a < b ? a : b, hi = a < b ? b : a;
-    /* edges are sorted by (lo, hi): binary search over all edges */
-    int l = 0, r = t->ne - 1;
+    if (lo < 0 || hi >= t->nv) return -1;
+    /* the edges (lo, w) are sorted by w */
+    int l = t->ES[lo], r = t->ES[lo + 1] - 1;
     while (l <= r) {
-        int m = (l + r) / 2;
-        int ea = t->E[2 * m], eb = t->E[2 * m + 1];
-        if (ea == lo && eb == hi) return m;
-        if (ea < lo || (ea == lo && eb < hi)) l = m + 1;
+        int m = (l + r) / 2, w = t->E[2 * m + 1];
+        if (w == hi) return m;
+        if (w < hi) l = m + 1;
         else r = m - 1;
     }
     return -1;

@@ -16,6 +16,7 @@ struct topology {
     int *FE;         /* #F by 3: FE[3f+c] = edge from corner c to corner c+1 */
     int *VFs, *VF;   /* CSR: faces of vertex v are VF[VFs[v] .. VFs[v+1]-1] */
     int *VVs, *VV;   /* CSR: neighbours of v are VV[VVs[v] .. VVs[v+1]-1] (sorted) */
+    int *ES;         /* #V+1: the edges (v, w) with w > v are ES[v] .. ES[v+1]-1 */
     int nboundary;   /* number of boundary edges (EFn == 1) */
     int nnonmanifold;/* number of edges with EFn > 2 */
     int nisolated;   /* vertices in no face */

@@ -55,4 +55,26 @@ test_expect_success 'elephant, all six poses, default options: the better pairin
 	grep -v "^#" used.txt >used-rows.txt &&
 	test_cmp c6.txt used-rows.txt
 '
+test_expect_success 'elephant, all six poses, default options: the second candidate built ahead on its own thread gives the mesh and the -v lines of --threads 1' '
+	compat-tri -v --threads 1 -c c6.txt $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
+		$P/elephant-pose3.rings.txt $P/elephant-pose4.rings.txt $P/elephant-pose5.rings.txt \
+		$P/elephant-pose6.rings.txt >t1.mesh 2>log1 &&
+	cmp d6.mesh t1.mesh &&
+	sed "s/; at [0-9.]* s//; s/, [0-9.]* s$//" log >v2 &&
+	sed "s/; at [0-9.]* s//; s/, [0-9.]* s$//" log1 >v1 &&
+	test_cmp v1 v2
+'
+# a ring stored clockwise is reversed once for both candidates (before, the
+# second build saw the reversed ring as counter-clockwise and died: "the
+# correspondence points run the other way round its outline")
+test_expect_success 'elephant, all six poses, pose 3 stored clockwise: the same mesh, on 1 and 2 threads' '
+	{ echo "ring 129"; sed 1d $P/elephant-pose3.rings.txt | tac; } >p3cw.rings &&
+	awk "{ \$3 = 128 - \$3; print }" c6.txt >c6cw.txt &&
+	for t in 1 2; do
+		compat-tri --threads $t -c c6cw.txt $P/elephant-pose1.rings.txt $P/elephant-pose2.rings.txt \
+			p3cw.rings $P/elephant-pose4.rings.txt $P/elephant-pose5.rings.txt \
+			$P/elephant-pose6.rings.txt >cw$t.mesh &&
+		cmp d6.mesh cw$t.mesh || return 1
+	done
+'
 test_done

@@ -11,8 +11,12 @@
 #include "rings.h"
 #include "tool.h"
 #include "progress.h"
+#include "parallel.h"
 #include "cm_error.h"
 #include <limits.h>
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdatomic.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -105,7 +109,23 @@ struct options {
     double min_angle;
     int nshapes;
     char **shapes;
+    char *log;             /* non-NULL: build_single's -v lines go here (LOG_SIZE bytes) */
+    const int *flipped;    /* one outer ring: per shape, 1 if its file runs clockwise (reversed in R) */
 };
+#define LOG_SIZE 4096
+
+/* a -v line of build_single: on stderr, or kept in o->log for later */
+static void __attribute__((format(printf, 2, 3))) binfo(const struct options *o, const char *fmt, ...)
+{
+    char line[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    if (!o->log) { info(1, "%s", line); return; }
+    size_t n = strlen(o->log);
+    snprintf(o->log + n, LOG_SIZE - n, "%s\n", line);
+}
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
@@ -270,12 +290,11 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
 {
     int N = o->nshapes;
     double **P = malloc(N * sizeof *P);
-    int *n = malloc(N * sizeof *n), *flipped = calloc(N, sizeof *flipped);
+    int *n = malloc(N * sizeof *n), *flipped = malloc(N * sizeof *flipped);
     for (int s = 0; s < N; s++) {
-        flipped[s] = rings_orient(&R[s]);
+        flipped[s] = o->flipped[s];
         P[s] = R[s].P;
         n[s] = rings_count(&R[s], 0);
-        if (flipped[s]) info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
     }
     /* correspondences: rows by N columns of integer indices */
     struct columns C = {0};
@@ -322,7 +341,7 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
     unsigned char *keep = NULL;
     int rev = compat_corr_order(N, n, corr, ncorr);
     if (rev < 0) die("cannot read '%s': %s", o->corr, cm_errmsg());
-    if (rev) info(1, "%s: points run clockwise along the outlines; using them in reverse order", o->corr);
+    if (rev) binfo(o, "%s: points run clockwise along the outlines; using them in reverse order", o->corr);
     if (o->match >= 0) corr = match_points(o, N, P, n, flipped, corr, &ncorr, want, nwant);
     else write_points(o, N, n, flipped, corr, ncorr);
     const char *corr_name = o->match >= 0 ? "the matched points" : o->corr;
@@ -342,7 +361,7 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
         double h = compat_outline_error(cp, s, P[s], n[s]);
         if (h > hmax) { hmax = h; hs = s; }
     }
-    info(1, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
+    binfo(o, "boundary: %d matched points, %d after simplification (tolerance %g of the diagonal; "
             "largest two-sided Hausdorff distance %.3g, in %s)", M, cp->nb, o->err, hmax, o->shapes[hs]);
     free(keep); free(corr); free(want); columns_free(&C);
     free(P); free(n); free(flipped);
@@ -488,6 +507,8 @@ static double improve(const struct options *opt, struct compat *cpp, double q0)
 }
 
 /* one of the two candidates of the default with 3 or more rows */
+#define RACE_ROUNDS 3
+#define RACE_BEHIND 2
 struct candidate {
     const char *name;                 /* for -v */
     struct compat cp;
@@ -496,12 +517,15 @@ struct candidate {
     struct compat_refine_stats rs;
     double q0, q;                     /* worst angle before (radians), after (degrees; -1: none) */
     int built;
+    int pre, used;                    /* rounds stepped ahead (struct ahead), of them taken */
+    int status[RACE_ROUNDS];          /* what those steps returned */
 };
 
-/* a round of candidate k; finishes it when its splitting stops; 0 or -1 */
+/* a round of candidate k (one stepped ahead if there is one); finishes it
+ * when its splitting stops; 0 or -1 */
 static int cand_step(const struct options *o, struct candidate *k, struct progress *pr, long *rounds)
 {
-    int st = compat_refine_step(k->r);
+    int st = k->used < k->pre ? k->status[k->used++] : compat_refine_step(k->r);
     progress_step(pr, ++*rounds);
     if (st < 0) return -1;
     if (st == 0) {
@@ -522,6 +546,71 @@ static void cand_state(const struct candidate *k, double *worst, int *nbad)
     } else { *worst = k->q; *nbad = k->rs.stop == COMPAT_REFINE_GOAL ? 0 : INT_MAX; }
 }
 
+/* The second candidate (the given rows alone) built ahead: with 2 or more
+ * threads it is built, triangulated and refined RACE_ROUNDS rounds on a
+ * thread of its own while the first is triangulated and refined on the
+ * other, so both cores work where the triangulations are serial.  Its
+ * rounds are the same whenever they run, so the race below decides on
+ * the same numbers and the output is the one of the sequential order; its
+ * -v lines are kept and printed where the race takes it. */
+struct ahead {
+    pthread_t th;
+    int started;
+    atomic_int done, stop;            /* set by the thread at its end; asks it to stop early */
+    struct options off;
+    struct rings *R;
+    struct candidate *k;
+    int ok;                           /* built and triangulated */
+    char err[512];
+    char log[LOG_SIZE];
+};
+
+static void *ahead_run(void *arg)
+{
+    struct ahead *a = arg;
+    struct candidate *k = a->k;
+    a->off.log = a->log;
+    if (build_single(&a->off, a->R, &k->cp) < 0 || (atomic_load(&a->stop) ? 0 : compat_triangulate(&k->cp) < 0)) {
+        snprintf(a->err, sizeof a->err, "%s", cm_errmsg());
+        goto out;
+    }
+    if (atomic_load(&a->stop)) goto out;
+    a->ok = 1;
+    k->q0 = compat_min_angle(&k->cp, NULL);
+    k->pa = refine_params(&a->off, &k->cp);
+    k->pa.threads = 1;
+    if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) { a->ok = 0; snprintf(a->err, sizeof a->err, "%s", cm_errmsg()); goto out; }
+    while (k->pre < RACE_ROUNDS && !atomic_load(&a->stop)) {
+        int st = compat_refine_step(k->r);
+        k->status[k->pre++] = st;
+        if (st <= 0) break;
+    }
+out:
+    atomic_store(&a->done, 1);
+    return NULL;
+}
+
+/* starts the thread (a zeroed, k: the candidate to fill); 0 if it did not start */
+static int ahead_start(struct ahead *a, const struct options *o, struct rings *R, struct candidate *k)
+{
+    a->off = *o;
+    a->off.match = -2;
+    a->off.points_out = NULL;
+    a->R = R;
+    a->k = k;
+    a->started = pthread_create(&a->th, NULL, ahead_run, a) == 0;
+    return a->started;
+}
+
+/* waits for it; stop: it is not needed */
+static void ahead_join(struct ahead *a, int stop)
+{
+    if (!a->started) return;
+    if (stop) atomic_store(&a->stop, 1);
+    pthread_join(a->th, NULL);
+    a->started = 0;
+}
+
 /* The default with 3 or more given rows: the points the matching placed
  * between the rows (cp, built and triangulated) and the given rows alone
  * (-m off) are both candidates (measured: the matching wins on the traced
@@ -535,98 +624,131 @@ static void cand_state(const struct candidate *k, double *worst, int *nbad)
  * matched points have 434 bad triangles at 3.7 deg against 201 at 6.8 and
  * would go on to 3041 vertices at 18.5 deg).  One that reaches the goal
  * is kept; otherwise the larger worst angle (the matched points on a tie).
- * On return cp holds the kept mesh; returns its worst angle (degrees). */
-#define RACE_ROUNDS 3
-#define RACE_BEHIND 2
-static double race(struct options *o, struct rings *R, struct compat *cp, double q0)
+ * ah: the rows alone built ahead (struct ahead; not started: built here
+ * when needed).  On return cp holds the kept mesh; returns its worst
+ * angle (degrees). */
+static double race(struct options *o, struct rings *R, struct compat *cp, double q0, struct ahead *ah)
 {
     struct options off = *o;
     off.match = -2;
     off.points_out = NULL;
-    struct candidate K[2];
-    memset(K, 0, sizeof K);
-    K[0].name = "the matched points";
-    K[1].name = "the given rows only (-m off)";
-    K[0].cp = *cp;
-    K[0].built = 1;
-    K[0].q0 = q0;
-    K[0].q = K[1].q = -1;
-    K[0].pa = refine_params(o, cp);
-    if (!(K[0].r = compat_refine_begin(&K[0].cp, &K[0].pa, &K[0].rs))) die("%s", cm_errmsg());
+    struct candidate k0, *K[2] = {&k0, ah->k};
+    memset(&k0, 0, sizeof k0);
+    K[0]->name = "the matched points";
+    K[1]->name = "the given rows only (-m off)";
+    K[0]->cp = *cp;
+    K[0]->built = 1;
+    K[0]->q0 = q0;
+    K[0]->q = K[1]->q = -1;
+    K[0]->pa = refine_params(o, cp);
+    if (ah->started) K[0]->pa.threads = 1;   /* the other core builds the rows alone */
+    if (!(K[0]->r = compat_refine_begin(&K[0]->cp, &K[0]->pa, &K[0]->rs))) die("%s", cm_errmsg());
     int rounds[2] = {0, 0};
     struct progress pr;
     long done = 0;
     progress_start(&pr, "compat-tri: refinement rounds", 0);
     for (;;) {
-        int live0 = K[0].r != NULL, live1 = K[1].r != NULL;
-        if (!live0 && !live1 && (K[1].built || K[0].q >= o->min_angle)) break;
+        if (K[0]->r && ah->started && atomic_load(&ah->done)) compat_refine_threads(K[0]->r, o->threads);
+        int live0 = K[0]->r != NULL, live1 = K[1]->r != NULL && K[1]->built;
+        if (!live0 && !live1 && (K[1]->built || K[0]->q >= o->min_angle)) break;
         /* the matched points at the goal: kept */
-        if (!live0 && K[0].q >= o->min_angle) break;
+        if (!live0 && K[0]->q >= o->min_angle) break;
         if (live0 && (rounds[0] <= rounds[1] || !live1)) {
-            if (cand_step(o, &K[0], &pr, &done) < 0) die("%s", cm_errmsg());
+            if (cand_step(o, K[0], &pr, &done) < 0) die("%s", cm_errmsg());
             rounds[0]++;
         } else if (live1) {
-            if (cand_step(o, &K[1], &pr, &done) < 0) die("%s", cm_errmsg());
+            if (cand_step(o, K[1], &pr, &done) < 0) die("%s", cm_errmsg());
             rounds[1]++;
         }
         int nbad0 = 0, fewest0 = 0;
-        if (K[0].r) compat_refine_progress(K[0].r, NULL, &nbad0, &fewest0);
-        if (!K[1].built && ((rounds[0] >= RACE_ROUNDS && nbad0 > fewest0) || !K[0].r) && K[0].q < o->min_angle) {
+        if (K[0]->r) compat_refine_progress(K[0]->r, NULL, &nbad0, &fewest0);
+        if (!K[1]->built && ((rounds[0] >= RACE_ROUNDS && nbad0 > fewest0) || !K[0]->r) && K[0]->q < o->min_angle) {
             /* the second candidate; if it cannot be built the first goes on alone */
-            K[1].built = 1;
-            if (build_single(&off, R, &K[1].cp) == 0 && compat_triangulate(&K[1].cp) == 0) {
-                if (K[0].r)
+            K[1]->built = 1;
+            int ok;
+            char err[512];
+            if (ah->started) {
+                ahead_join(ah, 0);
+                if (K[0]->r) compat_refine_threads(K[0]->r, o->threads);
+                for (char *l = ah->log, *e; *l; l = e + 1) {   /* its -v lines */
+                    e = strchr(l, '\n');
+                    *e = 0;
+                    info(1, "%s", l);
+                }
+                ok = ah->ok;
+                snprintf(err, sizeof err, "%s", ah->err);
+                if (ok && K[1]->r) compat_refine_threads(K[1]->r, o->threads);
+            } else {
+                ok = build_single(&off, R, &K[1]->cp) == 0 && compat_triangulate(&K[1]->cp) == 0;
+                snprintf(err, sizeof err, "%s", cm_errmsg());
+                if (ok) {
+                    K[1]->q0 = compat_min_angle(&K[1]->cp, NULL);
+                    K[1]->pa = refine_params(&off, &K[1]->cp);
+                    if (!(K[1]->r = compat_refine_begin(&K[1]->cp, &K[1]->pa, &K[1]->rs))) ok = 0, snprintf(err, sizeof err, "%s", cm_errmsg());
+                }
+            }
+            if (ok && !K[1]->r) die("%s", err);   /* out of memory starting its refinement */
+            if (ok) {
+                if (K[0]->r)
                     info(1, "the matched points not at the goal after %d rounds, %d triangles below it (%d after an earlier "
                             "round): the given rows only (-m off) too", rounds[0], nbad0, fewest0);
-                else info(1, "below the goal with the matched points (%.2f deg): the given rows only (-m off) too", K[0].q);
-                K[1].q0 = compat_min_angle(&K[1].cp, NULL);
-                K[1].pa = refine_params(&off, &K[1].cp);
-                if (!(K[1].r = compat_refine_begin(&K[1].cp, &K[1].pa, &K[1].rs))) die("%s", cm_errmsg());
+                else info(1, "below the goal with the matched points (%.2f deg): the given rows only (-m off) too", K[0]->q);
             } else {
-                info(1, "the given rows only (-m off): %s; kept the matched points", cm_errmsg());
-                compat_free(&K[1].cp);   /* compat_match clears it first */
-                memset(&K[1].cp, 0, sizeof K[1].cp);
-                K[1].q = -1;
+                info(1, "the given rows only (-m off): %s; kept the matched points", err);
+                if (K[1]->r) compat_refine_abandon(K[1]->r);
+                K[1]->r = NULL;
+                compat_free(&K[1]->cp);   /* compat_match clears it first */
+                memset(&K[1]->cp, 0, sizeof K[1]->cp);
+                K[1]->q = -1;
             }
             continue;
         }
         /* the one behind after the same number of rounds is dropped */
-        if (K[1].built && (rounds[0] == rounds[1] || !K[0].r || !K[1].r) &&
-            (rounds[0] >= RACE_ROUNDS || !K[0].r) && (rounds[1] >= RACE_ROUNDS || !K[1].r)) {
+        if (K[1]->built && (rounds[0] == rounds[1] || !K[0]->r || !K[1]->r) &&
+            (rounds[0] >= RACE_ROUNDS || !K[0]->r) && (rounds[1] >= RACE_ROUNDS || !K[1]->r)) {
             for (int a = 0; a < 2; a++) {
-                if (!K[a].r || (!K[1 - a].r && K[1 - a].q < 0)) continue;
+                if (!K[a]->r || (!K[1 - a]->r && K[1 - a]->q < 0)) continue;
                 double wa, wb;
                 int na, nb;
-                cand_state(&K[a], &wa, &na);
-                cand_state(&K[1 - a], &wb, &nb);
+                cand_state(K[a], &wa, &na);
+                cand_state(K[1 - a], &wb, &nb);
                 if (wa < wb && (double)na >= RACE_BEHIND * (double)nb) {
                     info(1, "%s dropped after %d rounds: worst angle %.2f deg with %d triangles below the goal (%s: %.2f deg, %d)",
-                         K[a].name, rounds[a], wa, na, K[1 - a].name, wb, nb);
-                    compat_refine_abandon(K[a].r);
-                    K[a].r = NULL;
-                    K[a].q = -1;
+                         K[a]->name, rounds[a], wa, na, K[1 - a]->name, wb, nb);
+                    compat_refine_abandon(K[a]->r);
+                    K[a]->r = NULL;
+                    K[a]->q = -1;
                     break;
                 }
             }
         }
     }
     progress_end(&pr);
+    if (ah->started) {   /* not needed: the matched points reached the goal */
+        ahead_join(ah, 1);
+        if (K[1]->r) compat_refine_abandon(K[1]->r);
+        K[1]->r = NULL;
+        compat_free(&K[1]->cp);
+        memset(&K[1]->cp, 0, sizeof K[1]->cp);
+    }
     /* kept: the matched points at the goal, else the larger worst angle */
-    int use = K[0].q >= o->min_angle ? 0 : K[1].q > K[0].q;
+    int use = K[0]->q >= o->min_angle ? 0 : K[1]->q > K[0]->q;
     for (int a = 0; a < 2; a++)
-        if (K[a].r) { compat_refine_abandon(K[a].r); K[a].r = NULL; }
-    if (K[1].built && K[1].q >= 0 && K[0].q >= 0)
-        info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", K[use].name, K[use].q, K[1 - use].name, K[1 - use].q);
-    else if (K[1].built && K[use].q >= 0)
-        info(1, "kept %s: worst angle %.2f deg", K[use].name, K[use].q);
-    if (K[1 - use].built) compat_free(&K[1 - use].cp);
-    *cp = K[use].cp;
+        if (K[a]->r) { compat_refine_abandon(K[a]->r); K[a]->r = NULL; }
+    if (K[1]->built && K[1]->q >= 0 && K[0]->q >= 0)
+        info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", K[use]->name, K[use]->q, K[1 - use]->name, K[1 - use]->q);
+    else if (K[1]->built && K[use]->q >= 0)
+        info(1, "kept %s: worst angle %.2f deg", K[use]->name, K[use]->q);
+    if (K[1 - use]->built) compat_free(&K[1 - use]->cp);
+    *cp = K[use]->cp;
     if (use == 1 && o->points_out) {   /* the rows actually used */
         struct compat tmp;
+        char quiet[LOG_SIZE] = "";   /* its -v lines were printed */
         off.points_out = o->points_out;
+        off.log = quiet;
         if (build_single(&off, R, &tmp) == 0) compat_free(&tmp);
     }
-    return K[use].q;
+    return K[use]->q;
 }
 
 int main(int argc, char **argv)
@@ -651,9 +773,28 @@ int main(int argc, char **argv)
     }
     struct compat cp;
     if (multi && !o.corr) die("several rings or interior points need -c CORR (the matching handles one outer ring)");
+    int *flipped = calloc(N, sizeof *flipped);
+    if (!multi)   /* counter-clockwise once, for every build */
+        for (int s = 0; s < N; s++)
+            if ((flipped[s] = rings_orient(&R[s])))
+                info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
+    o.flipped = flipped;
     if (multi) build_multi(&o, R, &cp);
     else if (build_single(&o, R, &cp) < 0) die("%s", cm_errmsg());
+    /* the default's second candidate, built ahead on a second thread */
+    struct candidate k1;
+    struct ahead ah;
+    memset(&k1, 0, sizeof k1);
+    memset(&ah, 0, sizeof ah);
+    ah.k = &k1;
+    if (!multi && o.match_default && o.refine && o.threads != 1 && parallel_threads(o.threads) > 1)
+        ahead_start(&ah, &o, R, &k1);
     if (!multi && compat_triangulate(&cp) < 0) {
+        if (ah.started) {   /* the rows alone are built again below */
+            ahead_join(&ah, 1);
+            if (k1.r) compat_refine_abandon(k1.r);
+            compat_free(&k1.cp);
+        }
         /* the points placed by the default matching between 3 or more given
          * rows can make a piece too thin to split; the given rows alone are
          * the earlier default (-m off): use them and say so */
@@ -670,7 +811,7 @@ int main(int argc, char **argv)
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg; at %.3f s", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
          cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
-    double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0) : improve(&o, &cp, q0);
+    double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
@@ -699,5 +840,6 @@ int main(int argc, char **argv)
     compat_free(&cp);
     for (int s = 0; s < N; s++) rings_free(&R[s]);
     free(R);
+    free(flipped);
     return 0;
 }
