@@ -640,23 +640,28 @@ struct cone_cache {
     const struct sub *sp;
     double *const *C;     /* N: candidate points of each shape */
     int m;
-    double **pm, **an;    /* N: nc[s] by m, the smaller pseudo-angle and the angle */
-    unsigned char **have; /* N: nc[s] by m; 0: not yet, 1: done */
-    double **from, **to;  /* N: nc[s] by m, clearance_cut of corner i -> a and of
+    const int *nc;        /* N: candidates of each shape */
+    double **pm, **an;    /* N: m by nc[s] (corner-major: the pair search runs
+                           * over the candidates), the smaller pseudo-angle and the angle */
+    unsigned char **have; /* N: m by nc[s]; 0: not yet, 1: done */
+    double **from, **to;  /* N: m by nc[s], clearance_cut of corner i -> a and of
                            * a -> corner i, in full (NAN: not yet) */
 };
 
 /* cone_quality_cut(corner i, candidate a of shape s, cut), pc =
  * cone_cut_pseudo(cut) */
-static double cone_cached(struct cone_cache *cc, int s, int a, int i, double pc)
+static void cone_fill(struct cone_cache *cc, int s, int a, int i, size_t k)
 {
-    size_t k = (size_t)a * cc->m + i;
-    if (!cc->have[s][k]) {
-        double pm = 0;
-        cc->an[s][k] = cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1);
-        cc->pm[s][k] = pm;
-        cc->have[s][k] = 1;
-    }
+    double pm = 0;
+    cc->an[s][k] = cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1);
+    cc->pm[s][k] = pm;
+    cc->have[s][k] = 1;
+}
+
+static inline double cone_cached(struct cone_cache *cc, int s, int a, int i, double pc)
+{
+    size_t k = (size_t)i * cc->nc[s] + a;
+    if (!cc->have[s][k]) cone_fill(cc, s, a, i, k);
     double e = cc->an[s][k];
     return e == 0 || cc->pm[s][k] < pc ? 0 : e;
 }
@@ -667,7 +672,7 @@ static double cone_cached(struct cone_cache *cc, int s, int a, int i, double pc)
  * value does as well */
 static double clearance_cached(struct cone_cache *cc, int s, int a, int i, int to)
 {
-    size_t k = (size_t)a * cc->m + i;
+    size_t k = (size_t)i * cc->nc[s] + a;
     double *x = (to ? cc->to : cc->from)[s] + k;
     if (isnan(*x)) {
         const struct sub *p = &cc->sp[s];
@@ -685,7 +690,8 @@ struct vis_cache {
     int m;
     unsigned char *cc;    /* N by m by m: corner i sees corner j */
     double *const *C;     /* N: candidate points of each shape */
-    unsigned char **cv;   /* N: candidate a sees corner i, nc[s] by m */
+    const int *nc;        /* N: candidates of each shape */
+    unsigned char **cv;   /* N: candidate a sees corner i, m by nc[s] */
 };
 
 /* corners i and j of shape s see each other through the piece's interior */
@@ -704,7 +710,7 @@ static int vis_corners(struct vis_cache *vc, int s, int i, int j)
 /* candidate point a of shape s sees corner i */
 static int vis_cand(struct vis_cache *vc, int s, int a, int i)
 {
-    unsigned char *x = vc->cv[s] + (size_t)a * vc->m + i;
+    unsigned char *x = vc->cv[s] + (size_t)i * vc->nc[s] + a;
     if (!*x) *x = 1 + seg_inside(&vc->sp[s], i, V(&vc->sp[s], i), -1, vc->C[s] + 2 * a);
     return *x == 2;
 }
@@ -772,8 +778,8 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         for (int a = 0; a < nc[s]; a++) hug[s][a] = hugs_edge(&sp[s], C[s] + 2 * a);
         cv[s] = calloc((size_t)nc[s] * m + 1, 1);
     }
-    struct vis_cache vc = {sp, m, vis, C, cv};
-    struct cone_cache cones = {sp, C, m, malloc(N * sizeof(double *)), malloc(N * sizeof(double *)),
+    struct vis_cache vc = {sp, m, vis, C, nc, cv};
+    struct cone_cache cones = {sp, C, m, nc, malloc(N * sizeof(double *)), malloc(N * sizeof(double *)),
                                malloc(N * sizeof(unsigned char *)), malloc(N * sizeof(double *)),
                                malloc(N * sizeof(double *))};
     for (int s = 0; s < N; s++) {
@@ -821,6 +827,9 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
                     /* an end angle at most cut > 0 leaves the pair below
                      * the best either way: no visibility test needed */
                     if (cut > 0 && cj == 0) continue;
+                    /* nor one whose end angles cannot beat this shape's
+                     * best path (its quality is at most them) */
+                    if (cj > 0 && fmin(ci, cj) <= bq) continue;
                     if (vis_cand(&vc, s, a, i) && vis_cand(&vc, s, a, j)) {
                         /* path_quality of corner i -> x -> corner j */
                         double pq = 0;
