@@ -556,7 +556,8 @@ static void cand_state(const struct candidate *k, double *worst, int *nbad)
 struct ahead {
     pthread_t th;
     int started;
-    atomic_int done, stop;            /* set by the thread at its end; asks it to stop early */
+    atomic_int done, stop, wait;      /* set by the thread at its end; ask it to stop early;
+                                       * the caller waits for it (its later rounds take every thread) */
     struct options off;
     struct rings *R;
     struct candidate *k;
@@ -581,6 +582,7 @@ static void *ahead_run(void *arg)
     k->pa.threads = 1;
     if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) { a->ok = 0; snprintf(a->err, sizeof a->err, "%s", cm_errmsg()); goto out; }
     while (k->pre < RACE_ROUNDS && !atomic_load(&a->stop)) {
+        if (atomic_load(&a->wait)) compat_refine_threads(k->r, a->off.threads);
         int st = compat_refine_step(k->r);
         k->status[k->pre++] = st;
         if (st <= 0) break;
@@ -606,7 +608,7 @@ static int ahead_start(struct ahead *a, const struct options *o, struct rings *R
 static void ahead_join(struct ahead *a, int stop)
 {
     if (!a->started) return;
-    if (stop) atomic_store(&a->stop, 1);
+    atomic_store(stop ? &a->stop : &a->wait, 1);
     pthread_join(a->th, NULL);
     a->started = 0;
 }

@@ -126,6 +126,14 @@ int main(void)
     ok(t.nnonmanifold == 1, "fin: one non-manifold edge");
     int e01 = topology_edge(&t, 0, 1);
     ok(e01 >= 0 && t.EFn[e01] == 3, "fin: edge 0-1 has three faces");
+    /* the edges sorted by (lo, hi), a shared edge's faces in face order
+     * (the order a stable sort of the half-edges gives) */
+    int sorted = 1;
+    for (int e = 1; e < t.ne; e++)
+        if (t.E[2 * e - 2] > t.E[2 * e] || (t.E[2 * e - 2] == t.E[2 * e] && t.E[2 * e - 1] >= t.E[2 * e + 1])) sorted = 0;
+    ok(sorted && t.EF[2 * e01] == 0 && t.EF[2 * e01 + 1] == 1, "fin: edges sorted, edge 0-1 lists faces 0 and 1");
+    ok(topology_edge(&t, 2, 3) == -1 && topology_edge(&t, 3, 4) == -1 && topology_edge(&t, -1, 2) == -1 &&
+       topology_edge(&t, 0, 7) == -1 && topology_edge(&t, 4, 0) >= 0, "fin: no edge 2-3, 3-4, none out of range");
     topology_free(&t);
     int bow[6] = {0, 1, 2, 0, 3, 4};
     topology_build(bow, 2, 5, &t);
