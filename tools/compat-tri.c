@@ -693,7 +693,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
             if (ok) {
                 if (K[0]->r)
                     info(1, "the matched points not at the goal after %d rounds, %d triangles below it (%d after an earlier "
-                            "round): the given rows only (-m off) too", rounds[0], nbad0, fewest0);
+                            "round): the given rows only (-m off) too; at %.3f s", rounds[0], nbad0, fewest0, elapsed());
                 else info(1, "below the goal with the matched points (%.2f deg): the given rows only (-m off) too", K[0]->q);
             } else {
                 info(1, "the given rows only (-m off): %s; kept the matched points", err);
@@ -715,8 +715,8 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
                 cand_state(K[a], &wa, &na);
                 cand_state(K[1 - a], &wb, &nb);
                 if (wa < wb && (double)na >= RACE_BEHIND * (double)nb) {
-                    info(1, "%s dropped after %d rounds: worst angle %.2f deg with %d triangles below the goal (%s: %.2f deg, %d)",
-                         K[a]->name, rounds[a], wa, na, K[1 - a]->name, wb, nb);
+                    info(1, "%s dropped after %d rounds: worst angle %.2f deg with %d triangles below the goal (%s: %.2f deg, %d); at %.3f s",
+                         K[a]->name, rounds[a], wa, na, K[1 - a]->name, wb, nb, elapsed());
                     compat_refine_abandon(K[a]->r);
                     K[a]->r = NULL;
                     K[a]->q = -1;
