@@ -288,7 +288,7 @@ static int grow(struct replib_sketch *S)
 }
 
 /* lo, hi (m3) = the smallest and largest of each coordinate over nb frames */
-__attribute__((optimize("O3")))
+SKETCH_SIMD
 static void chunk_range(const double *restrict kb, int nb, int m3, double *restrict lo, double *restrict hi)
 {
     memcpy(lo, kb, sizeof(double) * m3);
@@ -303,15 +303,21 @@ static void chunk_range(const double *restrict kb, int nb, int m3, double *restr
 }
 
 /* The chunk's frames as integers of the step q (iq = 1 / q) about the
- * bases o, branch-free (vectorized); returns 0 and raises *e to the
- * largest rounding when every value is on the grid within +-2^31 steps,
- * else 1 (the caller redoes the chunk value by value). */
-__attribute__((optimize("O3")))
+ * bases o, branch-free; returns 0 and raises *e to the largest rounding
+ * when every value is on the grid within +-2^31 steps, else 1 (the caller
+ * redoes the chunk value by value).  The roundings are >= 0, so their
+ * largest is that of their bit patterns as integers: an integer max, which
+ * the loop takes 8 coordinates at a time (AVX-512; the double max would
+ * not vectorize without -ffinite-math-only; perf: this was 5% of the
+ * Monkey-size run's CPU as scalar code).  Same integers, same *e. */
+SKETCH_SIMD
 static int chunk_ints(struct replib_sketch *S, const double *kb, int f0, int nb, const double *restrict o, double q,
                       double iq, double *e)
 {
     int m3 = S->m3, bad = 0;
-    double em = *e, tol = 1e-3 * q;
+    double tol = 1e-3 * q;
+    int64_t em;
+    memcpy(&em, e, sizeof em);
     for (int g = 0; g < nb; g++) {
         const double *restrict x = kb + (size_t)g * m3;
         int32_t *restrict xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
@@ -321,11 +327,13 @@ static int chunk_ints(struct replib_sketch *S, const double *kb, int f0, int nb,
             bad |= !(fabs(u) <= 2147483647.0) | (ek > tol);
             double kc = k < -2147483647.0 ? -2147483647.0 : k > 2147483647.0 ? 2147483647.0 : k;
             xi[t] = (int32_t)kc;
-            em = ek > em ? ek : em;
+            int64_t eb;
+            memcpy(&eb, &ek, sizeof eb);
+            em = eb > em ? eb : em;
         }
     }
     if (bad) return 1;
-    *e = em;
+    memcpy(e, &em, sizeof em);
     return 0;
 }
 
@@ -471,7 +479,7 @@ static void keeper_start(struct replib_sketch *S)
 
 /* z (m) = sw (x - ref) (sw may be NULL: 1); returns |z|^2 (eight partial
  * sums: vectorized), not finite if a value of x is not */
-__attribute__((optimize("O3")))
+SKETCH_SIMD
 static double center_row(const double *restrict x, const double *restrict ref, const double *restrict sw, int m,
                          double *restrict z)
 {
