@@ -490,7 +490,7 @@ struct kept_job {
 
 /* o[t] (+)= v ((b[t] - ref[t]) + x[t] q) for t in [0, len), x int32
  * (xi) or float (xf); add = 0: o = ref + (...) instead (a row copy) */
-__attribute__((optimize("O3")))
+__attribute__((optimize("O3"), target_clones("avx512f", "avx2", "default")))
 static void kept_axpy(double *restrict o, double v, const double *restrict b, const double *restrict ref,
                       const int32_t *restrict xi, const float *restrict xf, double q, size_t len, int add)
 {
