@@ -64,6 +64,17 @@ test_expect_success 'on the grid everywhere: integers, and the largest rounding 
 	sed -n "s/.*frames kept exactly as integers of the input.s step 1e-06 (largest rounding \([^ ]*\) .*/\1/p" log >r &&
 	test -s r && awk "{ exit !(\$1 < 1e-9) }" r
 '
+test_expect_success 'the range sketch by lanes of 8 frames (AVX-512, no transposition) = by transposed tiles: same bytes' '
+	anim-slice -f 0:197 noisy.mesh >n197.mesh &&
+	anim-slice -f 0:133 head6.mesh >h133.mesh &&
+	for f in n197.mesh h133.mesh; do
+		for mem in 4096 0; do
+			dict-learn -d 9 -l 2 --stream on --memory $mem --labels-out lanes.lab $f >lanes.lib &&
+			STOPMO_SKETCH_LANES=0 dict-learn -d 9 -l 2 --stream on --memory $mem --labels-out tiles.lab $f >tiles.lib &&
+			test_cmp tiles.lib lanes.lib && test_cmp tiles.lab lanes.lab || return 1
+		done
+	done
+'
 test_expect_success 'full-rank input: the rank-16 sketch loses little (energy within 2%, printed)' '
 	dict-learn -d 10 -l 0 --stream off --report f_off.rep noisy.mesh >/dev/null &&
 	dict-learn -v -d 10 -l 0 --stream on --rank 16 --report f_on.rep noisy.mesh 2>log >/dev/null &&
