@@ -116,6 +116,21 @@ static inline void vadd(double *restrict y, const double *restrict x, int n, dou
     for (int i = 0; i < n; i++) y[i] += sg * x[i];
 }
 
+/* y = (y + s0 x0) + s1 x1, and the same with four: one load and store of
+ * y, the roundings of vadd one frame after the other */
+static inline void vadd2(double *restrict y, const double *restrict x0, const double *restrict x1, int n,
+                         double s0, double s1)
+{
+    for (int i = 0; i < n; i++) y[i] = (y[i] + s0 * x0[i]) + s1 * x1[i];
+}
+
+static inline void vadd4(double *restrict y, const double *restrict x0, const double *restrict x1,
+                         const double *restrict x2, const double *restrict x3, int n,
+                         double s0, double s1, double s2, double s3)
+{
+    for (int i = 0; i < n; i++) y[i] = (((y[i] + s0 * x0[i]) + s1 * x1[i]) + s2 * x2[i]) + s3 * x3[i];
+}
+
 /* W += Psi_b Z_b for the batch, by strips of columns: each row of W takes
  * its frames of the batch in order (pl: the frames of row i are
  * pl[po[i] .. po[i+1]-1], 2 frame + (sign < 0)), so every value of W sums
@@ -132,7 +147,21 @@ static void w_update_strips(struct wjob *j)
         int len = m3 - t0 < STRIP ? m3 - t0 : STRIP;
         for (int i = 0; i < s; i++) {
             double *w = S->W + (size_t)i * m3 + t0;
-            for (int q = j->po[i]; q < j->po[i + 1]; q++) {
+            int q = j->po[i], q1 = j->po[i + 1];
+            /* four frames per pass over the row's strip: w is loaded and
+             * stored once for them, the additions in the same order */
+            for (; q + 4 <= q1; q += 4) {
+                const int *e = j->pl + q;
+                vadd4(w, j->zb + (size_t)(e[0] >> 1) * m3 + t0, j->zb + (size_t)(e[1] >> 1) * m3 + t0,
+                      j->zb + (size_t)(e[2] >> 1) * m3 + t0, j->zb + (size_t)(e[3] >> 1) * m3 + t0, len,
+                      e[0] & 1 ? -1.0 : 1.0, e[1] & 1 ? -1.0 : 1.0, e[2] & 1 ? -1.0 : 1.0, e[3] & 1 ? -1.0 : 1.0);
+            }
+            for (; q + 2 <= q1; q += 2) {
+                const int *e = j->pl + q;
+                vadd2(w, j->zb + (size_t)(e[0] >> 1) * m3 + t0, j->zb + (size_t)(e[1] >> 1) * m3 + t0, len,
+                      e[0] & 1 ? -1.0 : 1.0, e[1] & 1 ? -1.0 : 1.0);
+            }
+            for (; q < q1; q++) {
                 int e = j->pl[q];
                 vadd(w, j->zb + (size_t)(e >> 1) * m3 + t0, len, e & 1 ? -1.0 : 1.0);
             }
