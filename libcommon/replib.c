@@ -490,7 +490,7 @@ struct kept_job {
 
 /* o[t] (+)= v ((b[t] - ref[t]) + x[t] q) for t in [0, len), x int32
  * (xi) or float (xf); add = 0: o = ref + (...) instead (a row copy) */
-__attribute__((optimize("O3")))
+__attribute__((optimize("O3"), target_clones("avx512f", "avx2", "default")))
 static void kept_axpy(double *restrict o, double v, const double *restrict b, const double *restrict ref,
                       const int32_t *restrict xi, const float *restrict xf, double q, size_t len, int add)
 {
@@ -2165,13 +2165,14 @@ static void eval_half(void *ctx, int job)
     double data = 0, vel = 0, se = 0, sv = 0, me = 0, mv = 0;
     long nvel = 0;
     int worst = 0;
-    double *xb = NULL;
+    double *xb = NULL, *xcur = NULL, *xnext = NULL;   /* job 1: xnext holds frame f as step f starts */
     if (!X) {       /* two frames in double at a time */
         xb = malloc(sizeof(double) * 2 * m3);
         if (!xb) { j->oom = 1; return; }
 #define KEPT(f, out) kept_frame(xbase ? xbase + (size_t)((f) / REPLIB_KEEP_CHUNK) * m3 : ref, \
                                 Xi ? Xi + (size_t)(f) * m3 : NULL, Xi ? NULL : Xf + (size_t)(f) * m3, q, m3, out)
         KEPT(0, job == 0 ? xb : xb + m3);
+        xcur = xb; xnext = xb + m3;
     }
     for (int f = 0; f < n; f++) {
         if (job == 0) {
@@ -2190,13 +2191,15 @@ static void eval_half(void *ctx, int job)
             continue;
         }
         if (xb) {
-            memcpy(xb, xb + m3, sizeof(double) * m3);
-            if (f + 1 < n) KEPT(f + 1, xb + m3);
+            /* frame f is in the buffer frame f + 1 went to last step: the
+             * two swap roles instead of a copy (3#V doubles per frame) */
+            double *t = xcur; xcur = xnext; xnext = t;
+            if (f + 1 < n) KEPT(f + 1, xnext);
 #undef KEPT
         }
-        const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
+        const double *x = xb ? xcur : X + f * m3, *r = R + l[f] * m3;
         if (f + 1 < n && !(cut && cut[f + 1])) {
-            const double *x1 = x + m3, *r1 = R + l[f + 1] * m3;
+            const double *x1 = xb ? xnext : x + m3, *r1 = R + l[f + 1] * m3;
             for (size_t k = 0; k < m3; k += 3) {
                 double e2 = 0;
                 for (int c = 0; c < 3; c++) {

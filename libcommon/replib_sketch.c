@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <pthread.h>
+#include <immintrin.h>
 #include <sys/mman.h>
 #ifndef MADV_POPULATE_WRITE
 #define MADV_POPULATE_WRITE 23      /* Linux 5.14 */
@@ -115,6 +116,21 @@ static inline void vadd(double *restrict y, const double *restrict x, int n, dou
     for (int i = 0; i < n; i++) y[i] += sg * x[i];
 }
 
+/* y = (y + s0 x0) + s1 x1, and the same with four: one load and store of
+ * y, the roundings of vadd one frame after the other */
+static inline void vadd2(double *restrict y, const double *restrict x0, const double *restrict x1, int n,
+                         double s0, double s1)
+{
+    for (int i = 0; i < n; i++) y[i] = (y[i] + s0 * x0[i]) + s1 * x1[i];
+}
+
+static inline void vadd4(double *restrict y, const double *restrict x0, const double *restrict x1,
+                         const double *restrict x2, const double *restrict x3, int n,
+                         double s0, double s1, double s2, double s3)
+{
+    for (int i = 0; i < n; i++) y[i] = (((y[i] + s0 * x0[i]) + s1 * x1[i]) + s2 * x2[i]) + s3 * x3[i];
+}
+
 /* W += Psi_b Z_b for the batch, by strips of columns: each row of W takes
  * its frames of the batch in order (pl: the frames of row i are
  * pl[po[i] .. po[i+1]-1], 2 frame + (sign < 0)), so every value of W sums
@@ -131,7 +147,21 @@ static void w_update_strips(struct wjob *j)
         int len = m3 - t0 < STRIP ? m3 - t0 : STRIP;
         for (int i = 0; i < s; i++) {
             double *w = S->W + (size_t)i * m3 + t0;
-            for (int q = j->po[i]; q < j->po[i + 1]; q++) {
+            int q = j->po[i], q1 = j->po[i + 1];
+            /* four frames per pass over the row's strip: w is loaded and
+             * stored once for them, the additions in the same order */
+            for (; q + 4 <= q1; q += 4) {
+                const int *e = j->pl + q;
+                vadd4(w, j->zb + (size_t)(e[0] >> 1) * m3 + t0, j->zb + (size_t)(e[1] >> 1) * m3 + t0,
+                      j->zb + (size_t)(e[2] >> 1) * m3 + t0, j->zb + (size_t)(e[3] >> 1) * m3 + t0, len,
+                      e[0] & 1 ? -1.0 : 1.0, e[1] & 1 ? -1.0 : 1.0, e[2] & 1 ? -1.0 : 1.0, e[3] & 1 ? -1.0 : 1.0);
+            }
+            for (; q + 2 <= q1; q += 2) {
+                const int *e = j->pl + q;
+                vadd2(w, j->zb + (size_t)(e[0] >> 1) * m3 + t0, j->zb + (size_t)(e[1] >> 1) * m3 + t0, len,
+                      e[0] & 1 ? -1.0 : 1.0, e[1] & 1 ? -1.0 : 1.0);
+            }
+            for (; q < q1; q++) {
                 int e = j->pl[q];
                 vadd(w, j->zb + (size_t)(e >> 1) * m3 + t0, len, e & 1 ? -1.0 : 1.0);
             }
@@ -171,6 +201,52 @@ static void y_tile(const struct replib_sketch *S, const double *zt, int t0, int 
     }
 }
 
+/* y_lanes where the CPU has AVX-512 and STOPMO_SKETCH_LANES is not 0
+ * (0: the transposed tiles, as on other CPUs; the same bytes either way,
+ * which t0305 checks) */
+static int sketch_lanes(void)
+{
+    const char *e = getenv("STOPMO_SKETCH_LANES");
+    return __builtin_cpu_supports("avx512f") && !(e && !strcmp(e, "0"));
+}
+
+/* Y_b = Z_b Omega with AVX-512, without transposing the batch: 32 frames
+ * in the lanes of four vectors (coordinate t gathered from their 32 rows,
+ * each row read once, front to back), and coordinate t's zeta nonzeros of
+ * Omega added to their columns of Y in t order: y += sg z, the same
+ * operations in the same order as y_tile on the transposed batch, so the
+ * same Y.  perf on Monkey (-r 1 -i 1): 222-236 samples against 366-405
+ * for the transposition and y_tile (8 frames per pass: 540-636, the
+ * per-nonzero overhead not amortized).  yt: 32 k scratch. */
+__attribute__((target("avx512f")))
+static void y_lanes(struct replib_sketch *S, const double *zb, int nb, int f0, double *yt)
+{
+    int m3 = S->m3, k = S->k, zeta = S->zeta;
+    for (int b0 = 0; b0 < nb; b0 += 32) {
+        int idx[32];
+        for (int c = 0; c < 32; c++) idx[c] = (b0 + c < nb ? b0 + c : b0) * m3;     /* spare lanes: a copy */
+        __m256i v0 = _mm256_loadu_si256((const __m256i *)idx), v1 = _mm256_loadu_si256((const __m256i *)(idx + 8));
+        __m256i v2 = _mm256_loadu_si256((const __m256i *)(idx + 16)), v3 = _mm256_loadu_si256((const __m256i *)(idx + 24));
+        memset(yt, 0, sizeof(double) * 32 * (size_t)k);
+        const int *om = S->om;
+        const __m512d one = _mm512_set1_pd(1.0), mone = _mm512_set1_pd(-1.0);
+        for (int t = 0; t < m3; t++, om += zeta) {
+            __m512d z0 = _mm512_i32gather_pd(v0, zb + t, 8), z1 = _mm512_i32gather_pd(v1, zb + t, 8);
+            __m512d z2 = _mm512_i32gather_pd(v2, zb + t, 8), z3 = _mm512_i32gather_pd(v3, zb + t, 8);
+            for (int i = 0; i < zeta; i++) {
+                double *y = yt + (size_t)(om[i] >> 1) * 32;
+                __m512d sg = om[i] & 1 ? mone : one;
+                _mm512_storeu_pd(y, _mm512_add_pd(_mm512_loadu_pd(y), _mm512_mul_pd(sg, z0)));
+                _mm512_storeu_pd(y + 8, _mm512_add_pd(_mm512_loadu_pd(y + 8), _mm512_mul_pd(sg, z1)));
+                _mm512_storeu_pd(y + 16, _mm512_add_pd(_mm512_loadu_pd(y + 16), _mm512_mul_pd(sg, z2)));
+                _mm512_storeu_pd(y + 24, _mm512_add_pd(_mm512_loadu_pd(y + 24), _mm512_mul_pd(sg, z3)));
+            }
+        }
+        for (int c = 0; c < 32 && b0 + c < nb; c++)
+            for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b0 + c) * k + j] = yt[(size_t)j * 32 + c];
+    }
+}
+
 /* The batch zb (nb frames from f0) into the sketches: Y_b = Z_b Omega
  * (on the batch transposed by tiles) here, and W += Psi_b Z_b on a second
  * thread meanwhile (they write disjoint arrays; each is summed in a fixed
@@ -202,6 +278,12 @@ static int flush_batch(struct replib_sketch *S, const double *zb, int nb, int f0
     int threaded = pthread_create(&th, NULL, w_update, &job) == 0;
     if (!threaded) w_update(&job);
     double *zt = S->zt, *yt = S->yt;
+    if (sketch_lanes() && (size_t)BATCH * m3 <= 2147483647) {
+        y_lanes(S, zb, nb, f0, yt);
+        if (threaded) pthread_join(th, NULL);
+        free(pc); free(po); free(pl); free(cnt); free(list);
+        return 0;
+    }
     memset(yt, 0, sizeof(double) * (size_t)k * nb);
     for (int t0 = 0; t0 < m3; t0 += TILE) {
         /* coordinates t0 .. t1-1 of the batch, transposed (TILE by nb) */
@@ -288,7 +370,7 @@ static int grow(struct replib_sketch *S)
 }
 
 /* lo, hi (m3) = the smallest and largest of each coordinate over nb frames */
-__attribute__((optimize("O3")))
+SKETCH_SIMD
 static void chunk_range(const double *restrict kb, int nb, int m3, double *restrict lo, double *restrict hi)
 {
     memcpy(lo, kb, sizeof(double) * m3);
@@ -303,15 +385,21 @@ static void chunk_range(const double *restrict kb, int nb, int m3, double *restr
 }
 
 /* The chunk's frames as integers of the step q (iq = 1 / q) about the
- * bases o, branch-free (vectorized); returns 0 and raises *e to the
- * largest rounding when every value is on the grid within +-2^31 steps,
- * else 1 (the caller redoes the chunk value by value). */
-__attribute__((optimize("O3")))
+ * bases o, branch-free; returns 0 and raises *e to the largest rounding
+ * when every value is on the grid within +-2^31 steps, else 1 (the caller
+ * redoes the chunk value by value).  The roundings are >= 0, so their
+ * largest is that of their bit patterns as integers: an integer max, which
+ * the loop takes 8 coordinates at a time (AVX-512; the double max would
+ * not vectorize without -ffinite-math-only; perf: this was 5% of the
+ * Monkey-size run's CPU as scalar code).  Same integers, same *e. */
+SKETCH_SIMD
 static int chunk_ints(struct replib_sketch *S, const double *kb, int f0, int nb, const double *restrict o, double q,
                       double iq, double *e)
 {
     int m3 = S->m3, bad = 0;
-    double em = *e, tol = 1e-3 * q;
+    double tol = 1e-3 * q;
+    int64_t em;
+    memcpy(&em, e, sizeof em);
     for (int g = 0; g < nb; g++) {
         const double *restrict x = kb + (size_t)g * m3;
         int32_t *restrict xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
@@ -321,11 +409,13 @@ static int chunk_ints(struct replib_sketch *S, const double *kb, int f0, int nb,
             bad |= !(fabs(u) <= 2147483647.0) | (ek > tol);
             double kc = k < -2147483647.0 ? -2147483647.0 : k > 2147483647.0 ? 2147483647.0 : k;
             xi[t] = (int32_t)kc;
-            em = ek > em ? ek : em;
+            int64_t eb;
+            memcpy(&eb, &ek, sizeof eb);
+            em = eb > em ? eb : em;
         }
     }
     if (bad) return 1;
-    *e = em;
+    memcpy(e, &em, sizeof em);
     return 0;
 }
 
@@ -471,7 +561,7 @@ static void keeper_start(struct replib_sketch *S)
 
 /* z (m) = sw (x - ref) (sw may be NULL: 1); returns |z|^2 (eight partial
  * sums: vectorized), not finite if a value of x is not */
-__attribute__((optimize("O3")))
+SKETCH_SIMD
 static double center_row(const double *restrict x, const double *restrict ref, const double *restrict sw, int m,
                          double *restrict z)
 {

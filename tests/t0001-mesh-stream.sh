@@ -17,4 +17,17 @@ test_expect_success '-o to a FIFO writes through it and leaves it a FIFO' '
 	head -c 2 fifo >magic && wait &&
 	printf P6 >expect && test_cmp expect magic && test -p fifo
 '
+test_expect_success 'raw stream: text lines longer than what a raw stream reads at a time (10 KB comments before frames 0 and 3), from a file and a pipe' '
+	head-gen -f 5 --seed 1 >h5.mesh && anim-slice --raw h5.mesh >h5r.mesh &&
+	o0=$(grep -abo "frame 0" h5r.mesh | head -1 | cut -d: -f1) &&
+	o3=$(grep -abo "frame 3" h5r.mesh | head -1 | cut -d: -f1) &&
+	test -n "$o0" && test "$o3" -gt "$o0" &&
+	awk "BEGIN { s = \"#\"; for (i = 0; i < 10000; i++) s = s \"x\"; print s }" >c.txt &&
+	{ head -c $o0 h5r.mesh && cat c.txt && tail -c +$((o0 + 1)) h5r.mesh | head -c $((o3 - o0)) &&
+	  cat c.txt && tail -c +$((o3 + 1)) h5r.mesh; } >h5rc.mesh &&
+	test $(wc -c <h5rc.mesh) -eq $(($(wc -c <h5r.mesh) + 2 * $(wc -c <c.txt))) &&
+	anim-slice h5.mesh >want.mesh &&
+	anim-slice h5rc.mesh >got.mesh && test_cmp want.mesh got.mesh &&
+	cat h5rc.mesh | anim-slice >got2.mesh && test_cmp want.mesh got2.mesh
+'
 test_done

@@ -34,6 +34,47 @@ test_expect_success 'a frame off the decimal grid: the kept frames turn to singl
 	dict-learn -v -d 12 -l 2 --stream on offgrid.mesh 2>log >/dev/null &&
 	grep "single-precision frames: largest rounding .* left the input.s decimal grid" log
 '
+# the kept frames' encoding takes 8 coordinates at a time: one value off
+# the grid or out of the int32 range in any lane, or in the coordinates
+# left over past the last multiple of 8, must still turn them to floats
+off_one() { # vertex coordinate(1-3) how(grid|range) -> offone.mesh (one value of frame 149 changed)
+	awk -v V=$1 -v C=$2 -v H=$3 "/^frame /{ k++; v = 0; print; next }
+		k == 150 && NF == 3 { if (v++ == V) { \$C = H == \"grid\" ? sprintf(\"%.9f\", \$C + 1e-8) : sprintf(\"%.6f\", \$C + 6000) }
+			print; next } { print }" head6.mesh >offone.mesh
+}
+test_expect_success 'one value off the grid in lane 7 of a vector, or in the last coordinate (past the vectors): single precision' '
+	nv=$(awk "/^vertices /{print \$2; exit}" head6.mesh) &&
+	echo "3 x $nv = $((3 * nv)) coordinates, $((3 * nv % 8)) past the last vector" &&
+	test $((3 * nv % 8)) -ne 0 &&
+	for at in "2 2" "$((nv - 1)) 3" "100 1"; do
+		off_one $at grid &&
+		dict-learn -v -d 12 -l 2 --stream on offone.mesh 2>log >/dev/null &&
+		grep "single-precision frames: largest rounding .* left the input.s decimal grid" log || return 1
+	done
+'
+test_expect_success 'one value beyond 2^31 steps of its base (lane 7, and the last coordinate): single precision' '
+	for at in "2 2" "$(($(awk "/^vertices /{print \$2; exit}" head6.mesh) - 1)) 3"; do
+		off_one $at range &&
+		dict-learn -v -d 12 -l 2 --stream on offone.mesh 2>log >/dev/null &&
+		grep "single-precision frames: largest rounding .* left the input.s decimal grid or its range" log || return 1
+	done
+'
+test_expect_success 'on the grid everywhere: integers, and the largest rounding is below the step' '
+	dict-learn -v -d 12 -l 2 --stream on head6.mesh 2>log >/dev/null &&
+	sed -n "s/.*frames kept exactly as integers of the input.s step 1e-06 (largest rounding \([^ ]*\) .*/\1/p" log >r &&
+	test -s r && awk "{ exit !(\$1 < 1e-9) }" r
+'
+test_expect_success 'the range sketch by lanes of 8 frames (AVX-512, no transposition) = by transposed tiles: same bytes' '
+	anim-slice -f 0:197 noisy.mesh >n197.mesh &&
+	anim-slice -f 0:133 head6.mesh >h133.mesh &&
+	for f in n197.mesh h133.mesh; do
+		for mem in 4096 0; do
+			dict-learn -d 9 -l 2 --stream on --memory $mem --labels-out lanes.lab $f >lanes.lib &&
+			STOPMO_SKETCH_LANES=0 dict-learn -d 9 -l 2 --stream on --memory $mem --labels-out tiles.lab $f >tiles.lib &&
+			test_cmp tiles.lib lanes.lib && test_cmp tiles.lab lanes.lab || return 1
+		done
+	done
+'
 test_expect_success 'full-rank input: the rank-16 sketch loses little (energy within 2%, printed)' '
 	dict-learn -d 10 -l 0 --stream off --report f_off.rep noisy.mesh >/dev/null &&
 	dict-learn -v -d 10 -l 0 --stream on --rank 16 --report f_on.rep noisy.mesh 2>log >/dev/null &&
