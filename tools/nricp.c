@@ -94,7 +94,7 @@ static const char help[] =
 "                        fit's rest shape is the first result), and keep the one\n"
 "                        with the lower Hausdorff distance + 1e-4 per flipped\n"
 "                        face; auto: only where the first ends farther than 1% of\n"
-"                        the diagonal or with more than 10 flipped faces (default 1)\n"
+"                        the diagonal or with more than 10 flipped faces (default)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -148,6 +148,7 @@ struct options {
     int paper;             /* --paper: the thesis' method */
     int fit_release;       /* 0 stay, 1 mean, 2 both (nricp_params.fit_release per run) */
     int fit_smooth_retry;  /* > fit_smooth: the kept key's second fit with this rest smoothing */
+    int passes_given;      /* --passes on the command line */
     int passes;            /* 2: each key registered again from its result, the better kept;
                               0 (auto): only where the first ends farther than
                               START_ACCEPT or with more than START_FLIPS flipped faces */
@@ -178,7 +179,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->align = "rigid";
     o->fit_release = 2;
     o->fit_smooth_retry = 3;
-    o->passes = 1;
+    o->passes = 0;          /* auto */
     int c;
     while ((c = getopt_long(argc, argv, "l:k:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -217,6 +218,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_COARSE: o->p.coarse = arg_double(optarg, "--coarse"); break;
         case O_RIGIDC: o->p.rigid_const = 1; break;
         case O_PASSES:
+            o->passes_given = 1;
             o->passes = strcmp(optarg, "auto") ? arg_int(optarg, "--passes") : 0;
             if (strcmp(optarg, "auto") && (o->passes < 1 || o->passes > 2))
                 usage_error("--passes must be 1, 2 or auto");
@@ -307,6 +309,9 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->p.fine_steps < 0 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 0..1000");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (o->passes < 0 || o->passes > 2) usage_error("--passes must be 1, 2 or auto");
+    /* --steps-out writes one registration's steps, --paper is the thesis'
+     * method: one pass, unless asked otherwise */
+    if (!o->passes_given && (o->steps_out || o->paper)) o->passes = 1;
     if (o->passes != 1 && o->steps_out) usage_error("--passes 2 or auto takes no --steps-out");
     if (o->fit_smooth_retry < 0 || o->fit_smooth_retry > 100)
         usage_error("--fit-smooth-retry must be in 0..100");
