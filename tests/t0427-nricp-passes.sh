@@ -37,13 +37,21 @@ test_expect_success '--passes 2 with --chain: one kept pass per key' '
 	test "$(grep -c "kept the \(first\|second\) pass" errc)" = 2 &&
 	test "$(mesh-info keys.mesh | awk "/^frames/ { print \$2 }")" = 3
 '
-test_expect_success 'usage: --passes 1, 2 or auto, not 2 or auto with --steps-out' '
-	nricp -k 2 --fit 2 --steps-out st.mesh src.mesh g.mesh >/dev/null &&
-	test "$(mesh-info st.mesh | awk "/^frames/ { print \$2 }")" = 3 &&
-	test_must_fail_usage nricp --passes auto --steps-out st.mesh src.mesh g.mesh &&
+test_expect_success '--steps-out: the steps of the kept pass, the same result as without' '
+	nricp -k 4 --fit 6 --passes 2 --steps-out st.mesh src.mesh g.mesh >s2.mesh &&
+	cmp two.mesh s2.mesh &&
+	test "$(mesh-info st.mesh | awk "/^frames/ { print \$2 }")" = 5 &&
+	anim-slice -f 4 st.mesh >last.mesh &&
+	nricp -k 4 --fit 6 --passes 1 --steps-out st1.mesh src.mesh g.mesh >s1.mesh &&
+	cmp one.mesh s1.mesh &&
+	if grep -q "kept the second pass" err
+	then ! cmp -s st.mesh st1.mesh
+	else cmp st.mesh st1.mesh
+	fi
+'
+test_expect_success 'usage: --passes 1, 2 or auto' '
 	test_must_fail_usage nricp --passes 0 src.mesh g.mesh &&
 	test_must_fail_usage nricp --passes 3 src.mesh g.mesh &&
-	test_must_fail_usage nricp --passes x src.mesh g.mesh &&
-	test_must_fail_usage nricp --passes 2 --steps-out st.mesh src.mesh g.mesh
+	test_must_fail_usage nricp --passes x src.mesh g.mesh
 '
 test_done

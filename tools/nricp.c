@@ -309,10 +309,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->p.fine_steps < 0 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 0..1000");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
     if (o->passes < 0 || o->passes > 2) usage_error("--passes must be 1, 2 or auto");
-    /* --steps-out writes one registration's steps, --paper is the thesis'
-     * method: one pass, unless asked otherwise */
-    if (!o->passes_given && (o->steps_out || o->paper)) o->passes = 1;
-    if (o->passes != 1 && o->steps_out) usage_error("--passes 2 or auto takes no --steps-out");
+    /* --paper is the thesis' method: one pass, unless asked otherwise */
+    if (!o->passes_given && o->paper) o->passes = 1;
     if (o->fit_smooth_retry < 0 || o->fit_smooth_retry > 100)
         usage_error("--fit-smooth-retry must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
@@ -583,6 +581,9 @@ int main(int argc, char **argv)
     const int npass = o.passes == 1 ? 1 : 2;     /* 0: auto */
     double *Xp = npass > 1 ? malloc((size_t)S.nv * 3 * sizeof *Xp) : NULL;
     double *X2 = npass > 1 ? malloc((size_t)S.nv * 3 * sizeof *X2) : NULL;
+    /* --steps-out: the first pass's steps while the second runs */
+    double *Fp = npass > 1 && o.steps_out ? malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *Fp) : NULL;
+    int np = 0;
     for (int k = 0; k < o.ntargets; k++) {
       double score0 = 0;
       int bestc0 = START_NONE;
@@ -721,6 +722,10 @@ int main(int argc, char **argv)
                     score0 = sc;
                     bestc0 = bestc;
                     memcpy(Xp, X, (size_t)S.nv * 3 * sizeof *Xp);
+                    if (Fp) {
+                        memcpy(Fp, st.frames, (size_t)st.n * S.nv * 3 * sizeof *Fp);
+                        np = st.n;
+                    }
                     if (!o.landmarks) {
                         L0 = L;
                         L = (struct landmarks){0};
@@ -736,6 +741,10 @@ int main(int argc, char **argv)
                 if (second) memcpy(K + (size_t)(k + 1) * S.nv * 3, X, (size_t)S.nv * 3 * sizeof *X);
                 else {
                     bestc = bestc0;
+                    if (Fp) {
+                        memcpy(st.frames, Fp, (size_t)np * S.nv * 3 * sizeof *Fp);
+                        st.n = np;
+                    }
                     if (!o.landmarks) {
                         landmarks_free(&L);
                         L = L0;
@@ -753,6 +762,7 @@ int main(int argc, char **argv)
     }
     free(Xp);
     free(X2);
+    free(Fp);
     free(Xc);
     free(Fc);
     landmarks_free(&L);
