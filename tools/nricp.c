@@ -89,6 +89,12 @@ static const char help[] =
 "                        or with more than 10 flipped faces, fit it once more with\n"
 "                        the rest shape smoothed N times, the better kept (default\n"
 "                        3; 0: off)\n"
+"      --passes N        2: register each key once more from its result, as if that\n"
+"                        were SOURCE (its own automatic landmarks and starts; the\n"
+"                        fit's rest shape is the first result), and keep the one\n"
+"                        with the lower Hausdorff distance + 1e-4 per flipped\n"
+"                        face; auto: only where the first ends farther than 1% of\n"
+"                        the diagonal or with more than 10 flipped faces (default)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -142,6 +148,10 @@ struct options {
     int paper;             /* --paper: the thesis' method */
     int fit_release;       /* 0 stay, 1 mean, 2 both (nricp_params.fit_release per run) */
     int fit_smooth_retry;  /* > fit_smooth: the kept key's second fit with this rest smoothing */
+    int passes_given;      /* --passes on the command line */
+    int passes;            /* 2: each key registered again from its result, the better kept;
+                              0 (auto): only where the first ends farther than
+                              START_ACCEPT or with more than START_FLIPS flipped faces */
     struct nricp_params p;
 };
 
@@ -150,7 +160,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC };
+           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
@@ -158,7 +168,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
         {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"fit-release", 1, 0, O_FITREL},
-        {"fit-smooth-retry", 1, 0, O_FITSR}, {"coarse", 1, 0, O_COARSE}, {"fine-steps", 1, 0, O_FINESTEPS}, {"rigid-const", 0, 0, O_RIGIDC},
+        {"fit-smooth-retry", 1, 0, O_FITSR}, {"coarse", 1, 0, O_COARSE}, {"fine-steps", 1, 0, O_FINESTEPS}, {"rigid-const", 0, 0, O_RIGIDC}, {"passes", 1, 0, O_PASSES},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
@@ -169,6 +179,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->align = "rigid";
     o->fit_release = 2;
     o->fit_smooth_retry = 3;
+    o->passes = 0;          /* auto */
     int c;
     while ((c = getopt_long(argc, argv, "l:k:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -206,6 +217,12 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_RIGIDN: o->p.rigid_iters = arg_int(optarg, "--rigid-iters"); break;
         case O_COARSE: o->p.coarse = arg_double(optarg, "--coarse"); break;
         case O_RIGIDC: o->p.rigid_const = 1; break;
+        case O_PASSES:
+            o->passes_given = 1;
+            o->passes = strcmp(optarg, "auto") ? arg_int(optarg, "--passes") : 0;
+            if (strcmp(optarg, "auto") && (o->passes < 1 || o->passes > 2))
+                usage_error("--passes must be 1, 2 or auto");
+            break;
         case O_FINESTEPS: o->p.fine_steps = arg_int(optarg, "--fine-steps"); break;
         case O_REST: o->rest = optarg; break;
         case O_CREST:
@@ -291,6 +308,9 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->p.coarse >= 0 && o->p.coarse <= 0.5)) usage_error("--coarse must be in [0, 0.5]");
     if (o->p.fine_steps < 0 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 0..1000");
     if (o->p.fit_smooth < 0 || o->p.fit_smooth > 100) usage_error("--fit-smooth must be in 0..100");
+    if (o->passes < 0 || o->passes > 2) usage_error("--passes must be 1, 2 or auto");
+    /* --paper is the thesis' method: one pass, unless asked otherwise */
+    if (!o->passes_given && o->paper) o->passes = 1;
     if (o->fit_smooth_retry < 0 || o->fit_smooth_retry > 100)
         usage_error("--fit-smooth-retry must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
@@ -555,14 +575,31 @@ int main(int argc, char **argv)
     double *Fc = o.steps_out ? malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *Fc) : NULL;
     struct landmarks Lbest = {0};
     static const char *const start_name[] = {"auto", "landmarks", "shell", "none"};
+    /* --passes 2: the key registered once more from the first pass's result
+     * (Xp), as if it were SOURCE; X2 that pass's result, L0 the first
+     * pass's automatic landmarks while the second runs */
+    const int npass = o.passes == 1 ? 1 : 2;     /* 0: auto */
+    double *Xp = npass > 1 ? malloc((size_t)S.nv * 3 * sizeof *Xp) : NULL;
+    double *X2 = npass > 1 ? malloc((size_t)S.nv * 3 * sizeof *X2) : NULL;
+    /* --steps-out: the first pass's steps while the second runs */
+    double *Fp = npass > 1 && o.steps_out ? malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *Fp) : NULL;
+    int np = 0;
     for (int k = 0; k < o.ntargets; k++) {
-        const double *start = K + (size_t)k * S.nv * 3;
+      double score0 = 0;
+      int bestc0 = START_NONE;
+      struct landmarks L0 = {0};
+      for (int pass = 0; pass < npass; pass++) {
+        const double *start = pass ? Xp : K + (size_t)k * S.nv * 3;
+        /* the shape the edge stretch of the score is measured from: SOURCE,
+         * or in the second pass its start (as a run with it as SOURCE) */
+        const double *SV = pass ? Xp : S.V;
         /* the rest shape of the fit: SOURCE (first) or the start, i.e. the
-         * previous key (previous), or each start with both, the better kept */
-        const double *rest_first = o.chain && k > 0 ? S.V : o.rest ? R.V : NULL;
-        int nrest = o.chain && k > 0 && o.chain_prev == 2 ? 2 : 1;
-        if (o.chain && k > 0 && o.chain_prev == 1) rest_first = NULL;
-        double *X = K + (size_t)(k + 1) * S.nv * 3;
+         * previous key (previous), or each start with both, the better kept;
+         * in the second pass the start */
+        const double *rest_first = pass ? NULL : o.chain && k > 0 ? S.V : o.rest ? R.V : NULL;
+        int nrest = !pass && o.chain && k > 0 && o.chain_prev == 2 ? 2 : 1;
+        if (!pass && o.chain && k > 0 && o.chain_prev == 1) rest_first = NULL;
+        double *X = pass ? X2 : K + (size_t)(k + 1) * S.nv * 3;
         int have_lm = o.landmarks != NULL;
         if (!o.landmarks && o.start != START_NONE) {
             landmarks_free(&L);
@@ -603,7 +640,7 @@ int main(int argc, char **argv)
                 int fl = 0;
                 if (verbose || nc * nrest * nrel > 1) {
                     measure(Xc, &S, &T[k], &h, &fl);
-                    str = nricp_stretch(S.V, Xc, S.F, S.nf);
+                    str = nricp_stretch(SV, Xc, S.F, S.nf);
                     info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), "
                          "%d flipped faces, edge stretch %.3f (start %s%s%s)",
                          o.chain ? o.targets[k] : "", o.chain ? ": " : "", dt,
@@ -645,7 +682,7 @@ int main(int argc, char **argv)
             int fl;
             key_register(&oc, &S, VSbest, rest, &T[k], bestc == START_NONE ? &none : &L, &st, Xc);
             measure(Xc, &S, &T[k], &h, &fl);
-            str = nricp_stretch(S.V, Xc, S.F, S.nf);
+            str = nricp_stretch(SV, Xc, S.F, S.nf);
             info(1, "%s%sregistered in %.2f s: Hausdorff %.4g (%.3f%% of the diagonal), %d flipped "
                  "faces, edge stretch %.3f (start %s, the rest smoothed %d times)",
                  o.chain ? o.targets[k] : "", o.chain ? ": " : "", now_seconds() - t0,
@@ -672,11 +709,60 @@ int main(int argc, char **argv)
             memcpy(st.frames, Fc, (size_t)bestn * S.nv * 3 * sizeof *Fc);
             st.n = bestn;
         }
-        if (k == o.ntargets - 1 && bestc != START_NONE) {
+        if (npass > 1) {
+            /* the passes compared by distance and flipped faces alone: the
+             * second pass's result is farther from SOURCE's shape by design
+             * (its rest is the first result); each pass's own choice of
+             * start weighs the stretch from its start */
+            if (!(verbose || nc * nrest * nrel > 1)) measure(X, &S, &T[k], &bh, &bfl);
+            double sc = bh + START_FLIP_COST * bfl;
+            if (pass == 0) {
+                /* auto: again only where the key ended far or folded */
+                if (o.passes == 2 || bh > START_ACCEPT || bfl > START_FLIPS) {
+                    score0 = sc;
+                    bestc0 = bestc;
+                    memcpy(Xp, X, (size_t)S.nv * 3 * sizeof *Xp);
+                    if (Fp) {
+                        memcpy(Fp, st.frames, (size_t)st.n * S.nv * 3 * sizeof *Fp);
+                        np = st.n;
+                    }
+                    if (!o.landmarks) {
+                        L0 = L;
+                        L = (struct landmarks){0};
+                    }
+                    continue;
+                }
+                pass = npass - 1;     /* the last pass: this one */
+            } else {
+                int second = sc < score0;
+                info(1, "%s%skept the %s pass (score %.4g against %.4g)", o.chain ? o.targets[k] : "",
+                     o.chain ? ": " : "", second ? "second" : "first", second ? sc : score0,
+                     second ? score0 : sc);
+                if (second) memcpy(K + (size_t)(k + 1) * S.nv * 3, X, (size_t)S.nv * 3 * sizeof *X);
+                else {
+                    bestc = bestc0;
+                    if (Fp) {
+                        memcpy(st.frames, Fp, (size_t)np * S.nv * 3 * sizeof *Fp);
+                        st.n = np;
+                    }
+                    if (!o.landmarks) {
+                        landmarks_free(&L);
+                        L = L0;
+                        L0 = (struct landmarks){0};
+                    }
+                }
+                landmarks_free(&L0);
+            }
+        }
+        if (k == o.ntargets - 1 && pass == npass - 1 && bestc != START_NONE) {
             Lbest = L;
             L = (struct landmarks){0};
         }
+      }
     }
+    free(Xp);
+    free(X2);
+    free(Fp);
     free(Xc);
     free(Fc);
     landmarks_free(&L);
