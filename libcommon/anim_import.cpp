@@ -347,6 +347,15 @@ struct Gltf {
                     *why = buf;
                     return false;
                 }
+                /* glTF 2.0 requires count >= 1; assimp 5.2 divides the
+                 * output count by the input count (SIGFPE, found by fuzz_gltf) */
+                const JVal &acc = *root.get("accessors");
+                if (acc.arr[sm.size("input", -1)].size("count", 0) < 1 || acc.arr[sm.size("output", -1)].size("count", 0) < 1) {
+                    snprintf(buf, sizeof buf, "animation %zu sampler %zu: its input or output accessor has no elements "
+                                              "(count 0; glTF 2.0 requires at least 1)", ai, si);
+                    *why = buf;
+                    return false;
+                }
             }
             for (size_t ci = 0; chs && chs->t == JVal::ARR && ci < chs->arr.size(); ci++) {
                 const JVal &ch = chs->arr[ci];

@@ -102,4 +102,9 @@ test_expect_success 'glTF: an animation channel without a target, or a target wi
 	cp "$STOPMO_ROOT/tests/fuzz/regress/gltf/target-without-node" n.gltf &&
 	test_fails_cleanly mesh-import n.gltf 2>err && grep "n.gltf.: animation 0 channel 0: its target names no node" err
 '
+test_expect_success 'glTF: a sampler whose input accessor has no elements is refused before assimp divides by its count (SIGFPE)' '
+	cp "$STOPMO_ROOT/tests/fuzz/regress/gltf/sampler-input-count-zero" z.gltf &&
+	test_fails_cleanly mesh-import z.gltf 2>err &&
+	grep "z.gltf.: animation 0 sampler 0: its input or output accessor has no elements (count 0" err
+'
 test_done
