@@ -1,7 +1,9 @@
 /* boundary_match.c -- see boundary_match.h */
 #include "boundary_match.h"
 #include "cm_error.h"
+#include "parallel.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -12,6 +14,7 @@ void bmatch_defaults(struct bmatch_params *prm)
     prm->bend = 0.03;
     prm->start_bend = 0.3;
     prm->feature = 10;
+    prm->threads = 1;
 }
 
 /* a closed polygon with cumulative arc lengths */
@@ -121,6 +124,11 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
                        int *path, int *plen, double *D, unsigned char *from)
 {
     int W = mB + 1;
+    double stretch[9], half[9];   /* per step: |dsA - dsB| and (dsA + dsB) / 2 without f */
+    for (int k = 0; k < 9; k++) {
+        stretch[k] = fabs(STEPS[k][0] * hA - STEPS[k][1] * hB);
+        half[k] = STEPS[k][0] * hA + STEPS[k][1] * hB;
+    }
     for (int i = 0; i <= mA; i++)
         for (int j = 0; j <= mB; j++) {
             if (!i && !j) { D[0] = 0; from[0] = 255; continue; }
@@ -132,9 +140,9 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
                 if (pi < 0 || pj < 0) continue;
                 double prev = D[(size_t)pi * W + pj];
                 if (!(prev < best)) continue;
-                double c = prev + fabs(STEPS[k][0] * hA - STEPS[k][1] * hB) +
+                double c = prev + stretch[k] +
                            (R > 0 ? R * fabs((thA[i] - thA[pi]) - (thB[j] - thB[pj])) : 0) +
-                           f * 0.5 * (STEPS[k][0] * hA + STEPS[k][1] * hB);
+                           f * 0.5 * half[k];
                 if (c < best) { best = c; bs = k; }
             }
             D[(size_t)i * W + j] = best;
@@ -235,20 +243,52 @@ static double align_segment(const struct outline *A, double sA, double lenA, con
     return cost;
 }
 
+/* the start search's closed alignments, one job each (parallel_run): the
+ * coarse shifts t of one doubled side b, or the fine starts s[i] */
+struct start_jobs {
+    const struct outline *A, *B;
+    const struct dpside *a, *b;   /* coarse: A's side and B's doubled side */
+    const struct dpset *ds;
+    int M, Mc;                    /* samples of a job's alignment (coarse: M = Mc) */
+    const double *s;              /* fine: start arcs on B (NULL: coarse) */
+    double *cost;                 /* out, one per job */
+};
+
+static void start_job(void *ctx, int i)
+{
+    struct start_jobs *j = ctx;
+    int M = j->M;
+    double *D = malloc((size_t)(M + 1) * (M + 1) * sizeof *D);
+    unsigned char *from = malloc((size_t)(M + 1) * (M + 1));
+    if (!j->s) {
+        j->cost[i] = dp_run(j->a, j->Mc, 1.0 / j->Mc, j->b, i, j->Mc, 1.0 / j->Mc, j->ds, NULL, NULL, D, from);
+    } else {
+        struct dpside b;
+        dpside_fill(&b, j->B, j->s[i], j->B->L, M, j->ds);
+        j->cost[i] = dp_run(j->a, M, 1.0 / M, &b, 0, M, 1.0 / M, j->ds, NULL, NULL, D, from);
+        dpside_free(&b);
+    }
+    free(D); free(from);
+}
+
 /* cost of the closed alignment from A's sA with B's start at every coarse
- * shift; returns the best start arc on B after fine refinement */
-static double search_start(const struct outline *A, double sA, const struct outline *B, int M, const struct dpset *ds)
+ * shift; returns the best start arc on B after fine refinement (the
+ * alignments run on `threads` threads; the choice is made in order after
+ * all of them, so it does not depend on the threads) */
+static double search_start(const struct outline *A, double sA, const struct outline *B, int M, const struct dpset *ds,
+                           int threads)
 {
     int Mc = M / 4 < 16 ? 16 : M / 4;
     struct dpside a, b;
     dpside_fill(&a, A, sA, A->L, Mc, ds);
     dpside_fill(&b, B, 0, 2 * B->L, 2 * Mc, ds);
-    double *D = malloc((size_t)(M + 1) * (M + 1) * sizeof *D);
-    unsigned char *from = malloc((size_t)(M + 1) * (M + 1));
     double best[3] = {INFINITY, INFINITY, INFINITY};
     int bi[3] = {0, 0, 0};
+    double *cost = malloc((Mc > 27 ? Mc : 27) * sizeof *cost);
+    struct start_jobs sj = {.A = A, .B = B, .a = &a, .b = &b, .ds = ds, .M = Mc, .Mc = Mc, .cost = cost};
+    parallel_run(Mc, threads, start_job, &sj);
     for (int t = 0; t < Mc; t++) {
-        double c = dp_run(&a, Mc, 1.0 / Mc, &b, t, Mc, 1.0 / Mc, ds, NULL, NULL, D, from);
+        double c = cost[t];
         for (int k = 0; k < 3; k++)
             if (c < best[k]) {
                 for (int l = 2; l > k; l--) { best[l] = best[l - 1]; bi[l] = bi[l - 1]; }
@@ -259,20 +299,20 @@ static double search_start(const struct outline *A, double sA, const struct outl
     dpside_free(&a); dpside_free(&b);
     /* fine: M samples, shifts within one coarse step of the three best */
     dpside_fill(&a, A, sA, A->L, M, ds);
-    int r = M / Mc;
-    double bestc = INFINITY, bests = 0;
+    int r = M / Mc, ns = 0;
+    double *s = malloc(3 * (2 * r + 1) * sizeof *s);
+    cost = realloc(cost, 3 * (2 * r + 1) * sizeof *cost);
     for (int k = 0; k < 3; k++) {
         if (!isfinite(best[k])) continue;
-        for (int d = -r; d <= r; d++) {
-            double s = wrap((bi[k] * r + d) * B->L / M, B->L);
-            dpside_fill(&b, B, s, B->L, M, ds);
-            double c = dp_run(&a, M, 1.0 / M, &b, 0, M, 1.0 / M, ds, NULL, NULL, D, from);
-            dpside_free(&b);
-            if (c < bestc) { bestc = c; bests = s; }
-        }
+        for (int d = -r; d <= r; d++) s[ns++] = wrap((bi[k] * r + d) * B->L / M, B->L);
     }
+    struct start_jobs fj = {.A = A, .B = B, .a = &a, .ds = ds, .M = M, .Mc = Mc, .s = s, .cost = cost};
+    parallel_run(ns, threads, start_job, &fj);
+    double bestc = INFINITY, bests = 0;
+    for (int i = 0; i < ns; i++)
+        if (cost[i] < bestc) { bestc = cost[i]; bests = s[i]; }
     dpside_free(&a);
-    free(D); free(from);
+    free(s); free(cost);
     return bests;
 }
 
@@ -311,7 +351,7 @@ int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pa
     if (npairs == 0) {
         struct dpset ss = ds;
         if (ss.mode == BMATCH_ELASTIC) ss.R = prm->start_bend;
-        double s = search_start(&A, 0, &B, M, &ss);
+        double s = search_start(&A, 0, &B, M, &ss, prm->threads);
         c = align_segment(&A, 0, A.L, &B, s, B.L, M, &ds, tB);
     } else {
         for (int k = 0; k < npairs; k++) {
@@ -340,6 +380,31 @@ static int nearest_vertex(const struct outline *o, double t)
     return best;
 }
 
+/* bmatch_corr's maps of shape 0 onto shapes 1..N-1, one job each */
+struct map_jobs {
+    int N;
+    double *const *P;
+    const int *n, *given;
+    int ngiven;
+    const struct bmatch_params *prm;
+    double *tB;                   /* row s: shape 0's vertices on shape s */
+    double *cost;                 /* N */
+    char (*err)[256];             /* N messages ("" if the map succeeded) */
+};
+
+static void map_job(void *ctx, int i)
+{
+    struct map_jobs *j = ctx;
+    int s = i + 1, N = j->N;
+    int *pairs = malloc(2 * (j->ngiven + 1) * sizeof *pairs);
+    if (!pairs) { snprintf(j->err[s], sizeof j->err[s], "out of memory"); return; }
+    for (int k = 0; k < j->ngiven; k++) { pairs[2 * k] = j->given[k * N]; pairs[2 * k + 1] = j->given[k * N + s]; }
+    if (bmatch_map(j->P[0], j->n[0], j->P[s], j->n[s], pairs, j->ngiven, j->prm, j->tB + (size_t)s * j->n[0],
+                   &j->cost[s]) < 0)
+        snprintf(j->err[s], sizeof j->err[s], "%s", cm_errmsg());
+    free(pairs);
+}
+
 int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngiven, const int *want,
                 int nwant, int K, const struct bmatch_params *prm, int **corr_out, int *ncorr, double *cost)
 {
@@ -355,21 +420,27 @@ int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngi
     }
     struct outline *O = calloc(N, sizeof *O);
     double *tB = malloc((size_t)N * n[0] * sizeof *tB);   /* row s: shape 0's vertices on shape s */
-    int *pairs = malloc(2 * (ngiven + 1) * sizeof *pairs);
     int rc = 0, s;
     for (s = 0; s < N && rc == 0; s++)
         if (outline_init(&O[s], P[s], n[s]) < 0) rc = -1;
     int ninit = s - (rc < 0);
-    /* the maps of shape 0 onto every shape */
+    /* the maps of shape 0 onto every shape: one job each where there are
+     * more maps than one, else the one map's start search takes the threads */
     if (cost) cost[0] = 0;
-    for (s = 1; s < N && rc == 0; s++) {
-        for (int k = 0; k < ngiven; k++) { pairs[2 * k] = given[k * N]; pairs[2 * k + 1] = given[k * N + s]; }
-        double c;
-        if (bmatch_map(P[0], n[0], P[s], n[s], pairs, ngiven, prm, tB + (size_t)s * n[0], &c) < 0)
-            rc = cm_seterr("shape %d: %s", s, cm_errmsg());
-        else if (cost) cost[s] = c;
+    if (rc == 0) {
+        struct bmatch_params one = *prm;
+        one.threads = 1;
+        struct map_jobs mj = {N, P, n, given, ngiven, N > 2 ? &one : prm, tB, malloc(N * sizeof *mj.cost),
+                              calloc(N, sizeof *mj.err)};
+        if (!mj.cost || !mj.err) rc = cm_seterr("out of memory");
+        else {
+            parallel_run(N - 1, N > 2 ? prm->threads : 1, map_job, &mj);
+            for (s = 1; s < N && rc == 0; s++)
+                if (mj.err[s][0]) rc = cm_seterr("shape %d: %s", s, mj.err[s]);
+                else if (cost) cost[s] = mj.cost[s];
+        }
+        free(mj.cost); free(mj.err);
     }
-    free(pairs);
     if (rc < 0) {
         for (s = 0; s < ninit; s++) free(O[s].cum);
         free(O); free(tB);

@@ -57,6 +57,9 @@ struct bmatch_params {
                         (default 0.3: the shift is decided by the corners; with
                         0.03 a three-lobed test shape took the wrong lobe) */
     double feature;   /* F: weight of the multi-scale feature term (default 10) */
+    int threads;      /* threads for the start search and for bmatch_corr's maps
+                         (default 1; <= 0: one per processor); the result does
+                         not depend on it */
 };
 
 /* Default parameters. */

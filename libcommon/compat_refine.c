@@ -222,6 +222,48 @@ static double star_quality_above(const struct compat *c, const struct topology *
     return star_min(c, t, s, v, p, sin_min_valid, floor);
 }
 
+/* v's star in one shape, for the candidate searches that evaluate many
+ * positions p of v: the corners of each triangle in face order (NULL where
+ * v is), and the triangle to try first.  A search mostly asks whether a
+ * position beats a floor, and the answer is mostly no, found at the
+ * triangle that blocked the position before; trying it first stops the
+ * evaluation early.  The smallest value over the whole star, where it is
+ * computed, does not depend on the order. */
+#define STAR_MAX 32
+struct star {
+    int n, first;
+    const double *Q[STAR_MAX][3];
+};
+
+/* loads v's star in shape s; 0 if it has more than STAR_MAX triangles */
+static int star_load(const struct compat *c, const struct topology *t, int s, int v, struct star *st)
+{
+    const double *X = c->X[s];
+    int n = t->VFs[v + 1] - t->VFs[v];
+    if (n > STAR_MAX) return 0;
+    st->n = n;
+    st->first = 0;
+    for (int k = 0; k < n; k++) {
+        const int *F = c->F + 3 * t->VF[t->VFs[v] + k];
+        for (int j = 0; j < 3; j++) st->Q[k][j] = F[j] == v ? NULL : X + 2 * F[j];
+    }
+    return 1;
+}
+
+/* star_quality_above on a loaded star (the same value where it is above
+ * floor); remembers the triangle that stopped it */
+static double star_above(struct star *st, const double *p, double floor)
+{
+    double q = INFINITY;
+    for (int i = 0, k = st->first; i < st->n; i++, k = k + 1 == st->n ? 0 : k + 1) {
+        const double *const *Q = st->Q[k];
+        double x = sin_min_valid(Q[0] ? Q[0] : p, Q[1] ? Q[1] : p, Q[2] ? Q[2] : p);
+        if (x < q) q = x;
+        if (q <= floor) { st->first = k; break; }
+    }
+    return q;
+}
+
 /* mark v and its neighbours for the next visit (dirty: #V flags of one shape) */
 static void touch_star(const struct topology *t, int v, unsigned char *dirty)
 {
@@ -265,9 +307,11 @@ static int smooth_pass(struct compat *c, const struct topology *t, const unsigne
             cand[5][0] = 0.5 * (ix + gx); cand[5][1] = 0.5 * (iy + gy);
             int best = -1;
             double bq = old;
+            struct star st;
+            int big = !star_load(c, t, s, v, &st);
             for (int k = 0; k < 6; k++) {
                 double thr = bq * (1 + 1e-9) + 1e-15;
-                double q = star_quality_above(c, t, s, v, cand[k], thr);
+                double q = big ? star_quality_above(c, t, s, v, cand[k], thr) : star_above(&st, cand[k], thr);
                 if (q > thr) { bq = q; best = k; }
             }
             if (best >= 0) { X[2 * v] = cand[best][0]; X[2 * v + 1] = cand[best][1]; moves++; touch_star(t, v, dy); }
@@ -299,6 +343,27 @@ static double face_ratio(const struct compat *c, int f, double goal, const doubl
         }
     }
     return r;
+}
+
+/* sine above which a triangle's smallest angle is at least 1.02 goal (2 if
+ * no triangle can be: its smallest angle is at most 60 degrees) */
+static double clear_sine(double goal)
+{
+    return goal * 1.02 < M_PI / 3 ? sin(goal * 1.02) : 2;
+}
+
+/* face f is clear of the goal in every shape: its smallest angle is at
+ * least 1.02 goal (sclear = clear_sine(goal)), so face_ratio is at least
+ * 1.02 (minus rounding).  The sine costs no atan2, and most faces are
+ * clear once the refinement is under way. */
+static int face_clear(const struct compat *c, int f, double sclear)
+{
+    const int *F = c->F + 3 * f;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        if (!(compat_sin_min_angle(X + 2 * F[0], X + 2 * F[1], X + 2 * F[2]) >= sclear)) return 0;
+    }
+    return 1;
 }
 
 struct bad { double r; int f, s; };
@@ -361,9 +426,10 @@ static int split_pass(struct work *w, const struct compat_refine_params *pa, int
     if (!open || !cnt || !B || !touched) { rc = cm_seterr("out of memory"); goto done; }
     corner_openings(c, w->bnd, open, cnt);
     int nb = 0;
+    double sclear = clear_sine(goal);
     for (int f = 0; f < nf0; f++) {
         int s = 0;
-        double r = face_ratio(c, f, goal, open, cnt, &s);
+        double r = face_clear(c, f, sclear) ? 2 : face_ratio(c, f, goal, open, cnt, &s);
         if (r < 1 - 1e-9) { B[nb].r = r; B[nb].f = f; B[nb].s = s; nb++; continue; }
         if (pa->size <= 0) continue;
         /* too large: after every triangle below the goal, largest first */
@@ -589,6 +655,58 @@ static double star_mips(const struct compat *c, const struct topology *t, int s,
     return E;
 }
 
+/* v's star in one shape for star_mips's line search: the two other
+ * corners of each triangle (in star_mips's order), and the triangle that
+ * stopped the last evaluation.  A step that overshoots is stopped by the
+ * triangle it squeezes; that triangle's term alone, looked at first,
+ * mostly reaches the ceiling already (each term is at most the sum, also
+ * in floating point: the rounding of a sum of non-negative terms is
+ * monotone). */
+struct mips_star {
+    int n, first;
+    const double *a[STAR_MAX], *b[STAR_MAX];
+};
+
+/* loads v's star in shape s; 0 if it has more than STAR_MAX triangles */
+static int mips_load(const struct compat *c, const struct topology *t, int s, int v, struct mips_star *st)
+{
+    const double *X = c->X[s];
+    int n = t->VFs[v + 1] - t->VFs[v];
+    if (n > STAR_MAX) return 0;
+    st->n = n;
+    st->first = 0;
+    for (int k = 0; k < n; k++) {
+        const int *F = c->F + 3 * t->VF[t->VFs[v] + k];
+        int j = F[0] == v ? 0 : F[1] == v ? 1 : 2;
+        st->a[k] = X + 2 * F[(j + 1) % 3];
+        st->b[k] = X + 2 * F[(j + 2) % 3];
+    }
+    return 1;
+}
+
+/* star_mips without the gradient: the same value where it is below
+ * ceiling, else a value >= ceiling */
+static double mips_below(struct mips_star *st, const double *p, double ceiling)
+{
+    double k = 1 / (4 * sqrt(3.0));
+    for (int pass = 0; pass < 2; pass++) {
+        double E = 0;
+        for (int i = pass ? 0 : st->first; i < (pass ? st->n : st->first + 1); i++) {
+            const double *a = st->a[i], *b = st->b[i];
+            double pax = p[0] - a[0], pay = p[1] - a[1], pbx = p[0] - b[0], pby = p[1] - b[1];
+            double abx = a[0] - b[0], aby = a[1] - b[1];
+            double S = pax * pax + pay * pay + pbx * pbx + pby * pby + abx * abx + aby * aby;
+            double A = 0.5 * ((a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]));
+            if (!(A > 1e-12 * S) && (A <= 0 || orient2_sign(p, a, b) <= 0)) { st->first = i; return INFINITY; }
+            double e = k * S / A;
+            E += e * e;
+            if (E >= ceiling) { st->first = i; return E; }
+        }
+        if (pass) return E;
+    }
+    return INFINITY;   /* not reached */
+}
+
 /* Per-shape smoothing by the MIPS energy of star_mips: every interior
  * vertex takes a gradient step (backtracking from a quarter of its mean
  * edge length) that lowers its star's energy and keeps every triangle
@@ -632,6 +750,9 @@ static void mips_job(void *ctx, int s)
                     gn = (g[0] * ux + g[1] * uy) / lab;
                     if (gn == 0) continue;
                 }
+                struct mips_star st;
+                st.first = 0;
+                int big = !mips_load(c, t, s, v, &st);
                 for (double h = 0.25 * L; h > 1e-4 * L; h *= 0.5) {
                     double p[2] = {x[0] - h * g[0] / gn, x[1] - h * g[1] / gn};
                     if (sl) {
@@ -640,7 +761,7 @@ static void mips_job(void *ctx, int s)
                         p[0] = A[0] + tn * ux; p[1] = A[1] + tn * uy;
                     }
                     double ceil = E0 * (1 - 1e-6);
-                    if (star_mips(c, t, s, v, p, NULL, ceil) < ceil) {
+                    if ((big ? star_mips(c, t, s, v, p, NULL, ceil) : mips_below(&st, p, ceil)) < ceil) {
                         x[0] = p[0]; x[1] = p[1]; m++;
                         /* a step under 1% of the mean edge does not wake
                          * the neighbours (nor v): the sweeps stay where
@@ -700,6 +821,8 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
                                    {0.7071067811865476, -0.7071067811865476}};
     double p[2] = {x[0], x[1]};
     int moved = 0;
+    struct star st;
+    int big = !star_load(c, t, s, v, &st);
     for (double h = 0.2 * L; h > 1e-3 * L;) {
         double bq = q, bp[2] = {0, 0};
         int nd = sl ? 2 : 8, found = 0;
@@ -714,7 +837,7 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
                 cp[0] = p[0] + h * D[k][0]; cp[1] = p[1] + h * D[k][1];
             }
             double thr = bq * (1 + 1e-9);
-            double cq = star_quality_above(c, t, s, v, cp, thr);
+            double cq = big ? star_quality_above(c, t, s, v, cp, thr) : star_above(&st, cp, thr);
             if (cq > thr) { bq = cq; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; }
         }
         if (found) { q = bq; p[0] = bp[0]; p[1] = bp[1]; moved = 1; }
@@ -1046,13 +1169,21 @@ static double worst_ratio(struct work *w, double goal, int *wf, int *ws, int *nb
     int *cnt = malloc((c->nv ? c->nv : 1) * sizeof *cnt);
     if (!open || !cnt) { free(open); free(cnt); cm_seterr("out of memory"); return -1; }
     corner_openings(c, w->bnd, open, cnt);
-    double r = INFINITY;
+    double r = INFINITY, sclear = clear_sine(goal);
     *wf = *ws = *nbad = 0;
-    for (int f = 0; f < c->nf; f++) {
-        int s = 0;
-        double x = face_ratio(c, f, goal, open, cnt, &s);
-        if (x < r) { r = x; *wf = f; *ws = s; }
-        *nbad += x < 1 - 1e-9;
+    /* faces clear of the goal (ratio >= 1.02) can be neither the worst nor
+     * below the goal while some face is under 1.01: skip them, and look at
+     * every face only when none is */
+    for (int pass = 0; pass < 2 && !(r <= 1.01); pass++) {
+        r = INFINITY;
+        *wf = *ws = *nbad = 0;
+        for (int f = 0; f < c->nf; f++) {
+            if (!pass && face_clear(c, f, sclear)) continue;
+            int s = 0;
+            double x = face_ratio(c, f, goal, open, cnt, &s);
+            if (x < r) { r = x; *wf = f; *ws = s; }
+            *nbad += x < 1 - 1e-9;
+        }
     }
     free(open); free(cnt);
     return r;

@@ -13,6 +13,7 @@
 #include "progress.h"
 #include "parallel.h"
 #include "cm_error.h"
+#include "blas_tune.h"
 #include <limits.h>
 #include <pthread.h>
 #include <stdarg.h>
@@ -265,6 +266,7 @@ static int *match_points(const struct options *o, int N, double **P, const int *
     prm.mode = o->match;
     prm.bend = o->bend;
     prm.feature = o->feature;
+    prm.threads = o->threads;
     int *corr, nc, K = o->match_points;
     double *cost = malloc(N * sizeof *cost);
     if (bmatch_corr(N, P, n, given, *ncorr, want, nwant, K, &prm, &corr, &nc, cost) < 0)
@@ -756,6 +758,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
+    blas_single_thread();   /* the transfer's CHOLMOD supernodes are small: BLAS threads only spin */
     struct options o;
     parse_args(argc, argv, &o);
     int N = o.nshapes;
