@@ -1,27 +1,49 @@
 /* sparse.c -- see sparse.h */
 #include "sparse.h"
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
-static cholmod_common common;
-static int started;
+/* One cholmod_common per thread: its workspace (Iwork, Flag, Head, ...) is
+ * written by every factorization and solve, and compat-tri refines two
+ * candidates on two threads, each with its own ARAP transfers (one shared
+ * common corrupted the heap there).  Freed when the thread ends, and the
+ * main thread's at exit. */
+static pthread_key_t key;
+static pthread_once_t once = PTHREAD_ONCE_INIT;
 
-static void finish(void)
+static void destroy(void *p)
 {
-    if (started) cholmod_finish(&common);
-    started = 0;
+    if (!p) return;
+    cholmod_finish(p);
+    free(p);
+}
+
+static void finish_main(void)
+{
+    destroy(pthread_getspecific(key));
+    pthread_setspecific(key, NULL);
+}
+
+static void make_key(void)
+{
+    pthread_key_create(&key, destroy);
+    atexit(finish_main);
 }
 
 cholmod_common *cm_cholmod(void)
 {
-    if (!started) {
-        cholmod_start(&common);
-        common.print = 0;            /* libcommon never prints */
-        common.error_handler = NULL;
-        started = 1;
-        atexit(finish);
+    pthread_once(&once, make_key);
+    cholmod_common *c = pthread_getspecific(key);
+    if (!c) {
+        c = malloc(sizeof *c);
+        if (!c) return NULL;
+        cholmod_start(c);
+        c->print = 0;            /* libcommon never prints */
+        c->error_handler = NULL;
+        if (pthread_setspecific(key, c) != 0) { cholmod_finish(c); free(c); return NULL; }
     }
-    return &common;
+    return c;
 }
 
 void triplets_init(struct triplets *t, int nrow, int ncol)

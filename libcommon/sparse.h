@@ -1,6 +1,6 @@
 /* sparse.h -- sparse matrices for libcommon: a growable triplet list that
  * becomes a CHOLMOD compressed-column matrix (duplicates summed), and the
- * shared cholmod_common.
+ * calling thread's cholmod_common.
  */
 #ifndef CM_SPARSE_H
 #define CM_SPARSE_H
@@ -9,7 +9,11 @@
 extern "C" {
 #endif
 
-/* The process-wide cholmod_common (started on first use, finished atexit). */
+/* The calling thread's cholmod_common (started on its first use, finished
+ * when the thread ends or, for the main thread, at exit): CHOLMOD writes
+ * its workspace there, so two threads must not share one.  A matrix or
+ * factor belongs to no common: it may be made on one thread and freed on
+ * another.  NULL only if out of memory. */
 cholmod_common *cm_cholmod(void);
 
 struct triplets {

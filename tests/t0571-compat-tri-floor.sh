@@ -77,4 +77,18 @@ test_expect_success 'elephant, all six poses, pose 3 stored clockwise: the same 
 		cmp d6.mesh cw$t.mesh || return 1
 	done
 '
+# --refine sg runs ARAP transfers (CHOLMOD) in both candidates, on two
+# threads at once: one CHOLMOD workspace shared by both corrupted the heap
+# ("double free or corruption", or a segmentation fault); now each thread
+# has its own
+test_expect_success 'poses 3 5 6, --refine sg, both candidates on 2 threads: the mesh of --threads 1, three runs' '
+	cut -d" " -f3,5,6 c6.txt >c356.txt &&
+	compat-tri --refine sg --threads 1 -c c356.txt $P/elephant-pose3.rings.txt $P/elephant-pose5.rings.txt \
+		$P/elephant-pose6.rings.txt >sg1.mesh &&
+	for k in 1 2 3; do
+		compat-tri --refine sg --threads 2 -c c356.txt $P/elephant-pose3.rings.txt $P/elephant-pose5.rings.txt \
+			$P/elephant-pose6.rings.txt >sg2.mesh &&
+		cmp sg1.mesh sg2.mesh || return 1
+	done
+'
 test_done
