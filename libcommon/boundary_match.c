@@ -135,6 +135,21 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
             double best = INFINITY;
             int bs = 255;
             double f = dA ? wf * desc_dist(dA + (size_t)i * BMATCH_SCALES, dB + (size_t)j * BMATCH_SCALES) : 0;
+            if (i >= 3 && j >= 3 && R > 0) {
+                /* every step inside: all nine costs, the first smallest
+                 * kept without branches (a step from a cell at or above
+                 * the best so far costs at least as much, so the branches
+                 * below skip nothing that could win) */
+                double tAi = thA[i], tBj = thB[j], f5 = f * 0.5;
+                for (int k = 0; k < 9; k++) {
+                    int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
+                    double c = D[(size_t)pi * W + pj] + stretch[k] + R * fabs((tAi - thA[pi]) - (tBj - thB[pj])) +
+                               f5 * half[k];
+                    int lt = c < best;
+                    best = lt ? c : best;
+                    bs = lt ? k : bs;
+                }
+            } else
             for (int k = 0; k < 9; k++) {
                 int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
                 if (pi < 0 || pj < 0) continue;
