@@ -641,9 +641,10 @@ struct cone_cache {
     double *const *C;     /* N: candidate points of each shape */
     int m;
     const int *nc;        /* N: candidates of each shape */
-    double **pm, **an;    /* N: m by nc[s] (corner-major: the pair search runs
-                           * over the candidates), the smaller pseudo-angle and the angle */
-    unsigned char **have; /* N: m by nc[s]; 0: not yet, 1: done */
+    struct cone_val { double an, pm; } **v;
+                          /* N: m by nc[s] (corner-major: the pair search runs
+                           * over the candidates), the angle (NAN: not yet) and
+                           * the smaller pseudo-angle side by side, one stream */
     double **from, **to;  /* N: m by nc[s], clearance_cut of corner i -> a and of
                            * a -> corner i, in full (NAN: not yet) */
 };
@@ -653,17 +654,17 @@ struct cone_cache {
 static void cone_fill(struct cone_cache *cc, int s, int a, int i, size_t k)
 {
     double pm = 0;
-    cc->an[s][k] = cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1);
-    cc->pm[s][k] = pm;
-    cc->have[s][k] = 1;
+    cc->v[s][k].an = cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1);
+    cc->v[s][k].pm = pm;
 }
 
 static inline double cone_cached(struct cone_cache *cc, int s, int a, int i, double pc)
 {
     size_t k = (size_t)i * cc->nc[s] + a;
-    if (!cc->have[s][k]) cone_fill(cc, s, a, i, k);
-    double e = cc->an[s][k];
-    return e == 0 || cc->pm[s][k] < pc ? 0 : e;
+    const struct cone_val *x = cc->v[s] + k;
+    if (isnan(x->an)) cone_fill(cc, s, a, i, k);   /* (a NAN angle is worked out again: the same) */
+    double e = x->an;
+    return e == 0 || x->pm < pc ? 0 : e;
 }
 
 /* clearance_cut of the segment corner i -> candidate a (to = 0) or
@@ -779,16 +780,16 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         cv[s] = calloc((size_t)nc[s] * m + 1, 1);
     }
     struct vis_cache vc = {sp, m, vis, C, nc, cv};
-    struct cone_cache cones = {sp, C, m, nc, malloc(N * sizeof(double *)), malloc(N * sizeof(double *)),
-                               malloc(N * sizeof(unsigned char *)), malloc(N * sizeof(double *)),
+    struct cone_cache cones = {sp, C, m, nc, malloc(N * sizeof *cones.v), malloc(N * sizeof(double *)),
                                malloc(N * sizeof(double *))};
     for (int s = 0; s < N; s++) {
-        cones.pm[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.pm);
-        cones.an[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.an);
-        cones.have[s] = calloc((size_t)nc[s] * m + 1, 1);
+        cones.v[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.v);
         cones.from[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.from);
         cones.to[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.to);
-        for (size_t k = 0; k < (size_t)nc[s] * m; k++) cones.from[s][k] = cones.to[s][k] = NAN;
+        for (size_t k = 0; k < (size_t)nc[s] * m; k++) {
+            cones.from[s][k] = cones.to[s][k] = NAN;
+            cones.v[s][k].an = NAN;
+        }
     }
     double *bestpath = malloc(2 * (size_t)N * sizeof *bestpath);
     double *tmp = malloc(2 * (size_t)N * sizeof *tmp);
@@ -861,9 +862,9 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     free(tmp);
     free(ord);
     for (int s = 0; s < N; s++) {
-        free(cones.pm[s]); free(cones.an[s]); free(cones.have[s]); free(cones.from[s]); free(cones.to[s]);
+        free(cones.v[s]); free(cones.from[s]); free(cones.to[s]);
     }
-    free(cones.pm); free(cones.an); free(cones.have); free(cones.from); free(cones.to);
+    free(cones.v); free(cones.from); free(cones.to);
     int rc = 0;
     /* a Steiner point squeezed into a sliver only makes thinner pieces: below
      * STAGE2_MIN the overlay does better */
