@@ -233,6 +233,7 @@ static double star_quality_above(const struct compat *c, const struct topology *
 struct star {
     int n, first;
     const double *Q[STAR_MAX][3];
+    unsigned char at[STAR_MAX];   /* v's corner in each triangle */
 };
 
 /* loads v's star in shape s; 0 if it has more than STAR_MAX triangles */
@@ -245,7 +246,10 @@ static int star_load(const struct compat *c, const struct topology *t, int s, in
     st->first = 0;
     for (int k = 0; k < n; k++) {
         const int *F = c->F + 3 * t->VF[t->VFs[v] + k];
-        for (int j = 0; j < 3; j++) st->Q[k][j] = F[j] == v ? NULL : X + 2 * F[j];
+        for (int j = 0; j < 3; j++) {
+            st->Q[k][j] = F[j] == v ? NULL : X + 2 * F[j];
+            if (F[j] == v) st->at[k] = (unsigned char)j;
+        }
     }
     return 1;
 }
@@ -655,44 +659,20 @@ static double star_mips(const struct compat *c, const struct topology *t, int s,
     return E;
 }
 
-/* v's star in one shape for star_mips's line search: the two other
- * corners of each triangle (in star_mips's order), and the triangle that
- * stopped the last evaluation.  A step that overshoots is stopped by the
- * triangle it squeezes; that triangle's term alone, looked at first,
- * mostly reaches the ceiling already (each term is at most the sum, also
- * in floating point: the rounding of a sum of non-negative terms is
- * monotone). */
-struct mips_star {
-    int n, first;
-    const double *a[STAR_MAX], *b[STAR_MAX];
-};
-
-/* loads v's star in shape s; 0 if it has more than STAR_MAX triangles */
-static int mips_load(const struct compat *c, const struct topology *t, int s, int v, struct mips_star *st)
-{
-    const double *X = c->X[s];
-    int n = t->VFs[v + 1] - t->VFs[v];
-    if (n > STAR_MAX) return 0;
-    st->n = n;
-    st->first = 0;
-    for (int k = 0; k < n; k++) {
-        const int *F = c->F + 3 * t->VF[t->VFs[v] + k];
-        int j = F[0] == v ? 0 : F[1] == v ? 1 : 2;
-        st->a[k] = X + 2 * F[(j + 1) % 3];
-        st->b[k] = X + 2 * F[(j + 2) % 3];
-    }
-    return 1;
-}
-
-/* star_mips without the gradient: the same value where it is below
- * ceiling, else a value >= ceiling */
-static double mips_below(struct mips_star *st, const double *p, double ceiling)
+/* star_mips without the gradient on a loaded star (struct star): the same
+ * value where it is below ceiling, else a value >= ceiling.  A step that
+ * overshoots is stopped by the triangle it squeezes; that triangle's term
+ * alone, looked at first, mostly reaches the ceiling already (a term is at
+ * most the sum, also in floating point: the rounding of a sum of
+ * non-negative terms is monotone). */
+static double mips_below(struct star *st, const double *p, double ceiling)
 {
     double k = 1 / (4 * sqrt(3.0));
     for (int pass = 0; pass < 2; pass++) {
         double E = 0;
         for (int i = pass ? 0 : st->first; i < (pass ? st->n : st->first + 1); i++) {
-            const double *a = st->a[i], *b = st->b[i];
+            int j = st->at[i];
+            const double *a = st->Q[i][(j + 1) % 3], *b = st->Q[i][(j + 2) % 3];
             double pax = p[0] - a[0], pay = p[1] - a[1], pbx = p[0] - b[0], pby = p[1] - b[1];
             double abx = a[0] - b[0], aby = a[1] - b[1];
             double S = pax * pax + pay * pay + pbx * pbx + pby * pby + abx * abx + aby * aby;
@@ -750,9 +730,9 @@ static void mips_job(void *ctx, int s)
                     gn = (g[0] * ux + g[1] * uy) / lab;
                     if (gn == 0) continue;
                 }
-                struct mips_star st;
+                struct star st;
                 st.first = 0;
-                int big = !mips_load(c, t, s, v, &st);
+                int big = !star_load(c, t, s, v, &st);
                 for (double h = 0.25 * L; h > 1e-4 * L; h *= 0.5) {
                     double p[2] = {x[0] - h * g[0] / gn, x[1] - h * g[1] / gn};
                     if (sl) {
