@@ -532,7 +532,7 @@ static int library_out(const struct replib_data *D, const struct lstate *s, doub
     if (D->Xf || D->Xi) {
         /* rows are frames only (no fixed pieces with the sketch) */
         int nf = s->nfree;
-        double *tmp = nf ? calloc((size_t)nf * m3, sizeof(double)) : NULL;
+        double *tmp = nf ? big_calloc(sizeof(double) * (size_t)nf * m3) : NULL;
         if (nf && !tmp) return cm_seterr("replib: out of memory");
         struct kept_job job = {D, s, R, tmp};
         parallel_run((m3 + KEPT_COLS - 1) / KEPT_COLS, threads, kept_block, &job);

@@ -70,8 +70,8 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     S->keep_bytes = keep_bytes; S->keeping = keep_bytes > 0;
     S->ref = malloc(sizeof(double) * m3);
     S->om = malloc(sizeof(int) * (size_t)m3 * S->zeta);
-    S->W = calloc((size_t)S->s * m3, sizeof(double));
-    S->zb = malloc(sizeof(double) * 2 * (size_t)BATCH * m3);
+    S->W = big_calloc(sizeof(double) * (size_t)S->s * m3);
+    S->zb = big_alloc(sizeof(double) * 2 * (size_t)BATCH * m3);
     S->zt = malloc(sizeof(double) * (size_t)BATCH * TILE);
     S->yt = malloc(sizeof(double) * (size_t)BATCH * k);
     S->zprev = malloc(sizeof(double) * 3 * (size_t)m3);     /* keep_chunk's scratch */

@@ -271,8 +271,8 @@ static void stage(const char *what)
  * the frames buffered so far fed to it.  Weights are read once the vertex
  * count is known.  Returns 1 if the frames went to the sketch.  A raw
  * stream in a regular file that goes to the sketch from its first frame
- * is mapped (*map, *maplen: to munmap after the last use of D): its
- * frames are sketched where they lie, and kept there instead of copied
+ * is mapped (*map, *maplen: to munmap once the sketch is finished): its
+ * frames are sketched and encoded where they lie, not copied
  * (replib_sketch_add_ref; the same results). */
 static int read_anim(const struct options *o, struct mesh *m, struct columns *wc, struct replib_sketch *S,
                      const void **map, size_t *maplen)
