@@ -1935,7 +1935,7 @@ static int learn_run(const struct replib_data *D, const struct replib_opts *o, s
     if (nth > 16) nth = 16;
     struct restart *out = calloc(restarts, sizeof *out);
     res->labels = malloc(sizeof(int) * n);
-    res->R = keep ? NULL : malloc(sizeof(double) * (size_t)d * m3);
+    res->R = keep ? NULL : big_alloc(sizeof(double) * (size_t)d * m3);     /* written whole: no calloc */
     if (!out || !res->labels || (!keep && !res->R)) {
         free(out); replib_result_free(res);
         return cm_seterr("replib: out of memory");
