@@ -7,6 +7,10 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
+#ifndef MADV_POPULATE_READ
+#define MADV_POPULATE_READ 22      /* Linux 5.14 */
+#endif
 #include <sys/stat.h>
 #include <pthread.h>
 #include <unistd.h>
@@ -81,7 +85,13 @@ static int fill(struct mesh_reader *r)
      * dict-learn's CPU at the Monkey size, perf) */
     size_t want = r->cap - 1 - r->len;
     if (r->raw && want > RAW_FILL) want = RAW_FILL;
-    size_t n = fread(r->buf + r->len, 1, want, r->f);
+    size_t n;
+    if (r->map) {
+        n = r->map_len - r->map_pos < want ? r->map_len - r->map_pos : want;
+        memcpy(r->buf + r->len, r->map + r->map_pos, n);
+        r->map_pos += n;
+    } else
+        n = fread(r->buf + r->len, 1, want, r->f);
     if (n == 0) {
         if (ferror(r->f))
             return cm_seterr("cannot read '%s': %s", r->name, strerror(errno));
@@ -152,6 +162,12 @@ static int read_bytes(struct mesh_reader *r, void *dst, size_t n)
         r->pos += k;
         d += k;
         n -= k;
+        if (n > 0 && r->map) {
+            if (r->map_len - r->map_pos < n) { r->map_pos = r->map_len; r->eof = 1; return 0; }
+            memcpy(d, r->map + r->map_pos, n);
+            r->map_pos += n;
+            return 1;
+        }
         if (n > 0) {
             size_t got = fread(d, 1, n, r->f);
             if (got < n) {
@@ -357,7 +373,8 @@ fail:
     return -1;
 }
 
-int mesh_reader_next(struct mesh_reader *r, double *X, int *cut)
+/* The next frame's header line: 1 (and *cut), 0 at the proper end, -1 */
+static int frame_header(struct mesh_reader *r, int *cut)
 {
     int err;
     char *s = next_line(r, &err);
@@ -386,6 +403,13 @@ int mesh_reader_next(struct mesh_reader *r, double *X, int *cut)
     else if (!at_end(p))
         RERR("unexpected '%.20s' after frame number", p);
     if (cut) *cut = c;
+    return 1;
+}
+int mesh_reader_next(struct mesh_reader *r, double *X, int *cut)
+{
+    int rc0 = frame_header(r, cut), err;
+    char *s;
+    if (rc0 <= 0) return rc0;
     size_t n3 = (size_t)r->nv * 3;
     if (r->raw) {
         long fl = r->line;
@@ -474,8 +498,89 @@ int mesh_reader_next(struct mesh_reader *r, double *X, int *cut)
     return 1;
 }
 
+int mesh_reader_map(struct mesh_reader *r)
+{
+#if __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+    (void)r;
+    return 0;
+#else
+    struct stat st;
+    if (!r->raw || r->map || !r->f || fstat(fileno(r->f), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0)
+        return 0;
+    off_t at = ftello(r->f);
+    if (at < 0 || at > st.st_size || (uintmax_t)st.st_size > SIZE_MAX) return 0;
+    void *p = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fileno(r->f), 0);
+    if (p == MAP_FAILED) return 0;
+    /* the buffer holds what was read up to `at`; it fills from there on */
+    r->map = p;
+    r->map_len = (size_t)st.st_size;
+    r->map_pos = (size_t)at;
+    r->map_owned = 1;
+    return 1;
+#endif
+}
+
+const void *mesh_reader_take_map(struct mesh_reader *r, size_t *len)
+{
+    if (len) *len = r->map_len;
+    r->map_owned = 0;
+    return r->map;
+}
+
+int mesh_reader_next_ref(struct mesh_reader *r, const mesh_udouble **X, int *cut)
+{
+    if (!r->map || !r->raw) return cm_seterr("cannot read '%s': not a mapped raw stream", r->name);
+    int rc = frame_header(r, cut);
+    if (rc <= 0) return rc;
+    size_t n3 = (size_t)r->nv * 3, nb = n3 * sizeof(double);
+    /* the block starts at the buffer's unread bytes, which the mapping
+     * holds too: it ends map_pos - (len - pos) + nb */
+    size_t at = r->map_pos - (r->len - r->pos);
+    if (r->map_len - at < nb)
+        return cm_seterr("cannot read '%s': frame %d (header line %ld): truncated vertex block",
+                         r->name, r->frame, r->line);
+    /* the block's page tables in one call, not a fault per 64 KB (Linux
+     * 5.14; an older kernel refuses and the pages fault as they are read) */
+    uintptr_t p0 = (uintptr_t)(r->map + at) & ~(uintptr_t)4095, p1 = (uintptr_t)(r->map + at + nb);
+    madvise((void *)p0, p1 - p0, MADV_POPULATE_READ);
+    const mesh_udouble *x = (const mesh_udouble *)(const void *)(r->map + at);
+    typedef uint64_t u64u __attribute__((aligned(1)));
+    const u64u *U = (const u64u *)(const void *)(r->map + at);
+    /* non-finite test of mesh_reader_next */
+    const uint64_t expo = 0x7ff0000000000000ULL, one = 0x0010000000000000ULL;
+    uint64_t a0 = 0, a1 = 0, a2 = 0, a3 = 0;
+    size_t i = 0;
+    for (; i + 4 <= n3; i += 4) {
+        a0 |= (U[i] & expo) + one;
+        a1 |= (U[i + 1] & expo) + one;
+        a2 |= (U[i + 2] & expo) + one;
+        a3 |= (U[i + 3] & expo) + one;
+    }
+    for (; i < n3; i++)
+        a0 |= (U[i] & expo) + one;
+    if ((a0 | a1 | a2 | a3) >> 63)
+        for (size_t j = 0; j < n3; j++)
+            if (!isfinite(x[j]))
+                return cm_seterr("cannot read '%s': frame %d: vertex %zu: non-finite coordinate",
+                                 r->name, r->frame, j / 3);
+    if (r->map_len - at == nb || r->map[at + nb] != '\n')
+        return cm_seterr("cannot read '%s': frame %d: missing newline after vertex block",
+                         r->name, r->frame);
+    /* consumed through the newline: the buffer refills from there */
+    r->pos = r->len = 0;
+    r->buf[0] = 0;
+    r->map_pos = at + nb + 1;
+    r->eof = 0;
+    *X = x;
+    r->frame++;
+    return 1;
+}
+
 void mesh_reader_close(struct mesh_reader *r)
 {
+    if (r->map && r->map_owned)
+        munmap((void *)r->map, r->map_len);
+    r->map = NULL;
     if (r->own && r->f)
         fclose(r->f);
     free(r->buf);

@@ -68,6 +68,9 @@ struct mesh_reader {
     char *buf;
     size_t cap, len, pos;
     int eof;
+    const unsigned char *map;   /* mesh_reader_map: the whole file, read-only, or NULL */
+    size_t map_len, map_pos;    /* its size; the offset the buffer fills from next */
+    int map_owned;              /* 1: mesh_reader_close unmaps it */
 };
 
 /* Open and read the header and faces.  path NULL or "-" reads stdin.
@@ -84,6 +87,23 @@ int mesh_reader_open_stream(struct mesh_reader *r, FILE *f, const char *name, in
  * -1 on error (truncated, wrong count, NaN, ...). */
 int mesh_reader_next(struct mesh_reader *r, double *X, int *cut);
 void mesh_reader_close(struct mesh_reader *r);
+/* ---- raw frames left in place (a regular file, mapped) ----
+ * mesh_reader_map maps a raw stream's regular file read-only (PROT_READ,
+ * MAP_PRIVATE) once the header is read: returns 1, or 0 (nothing changes:
+ * a text stream, a pipe, a big-endian host, or mmap refused).  Then
+ * mesh_reader_next_ref gives each frame's vertex block where it lies in
+ * the mapping: *X points to #V by 3 little-endian doubles at any byte
+ * alignment (read them through mesh_udouble), valid until the mapping is
+ * unmapped; the same checks, results and messages as mesh_reader_next,
+ * without copying the block.  mesh_reader_next still works on a mapped
+ * reader (it copies).  The file must not shrink meanwhile (SIGBUS).
+ * mesh_reader_take_map hands the mapping over (*len: its size): the
+ * caller munmaps it after its last use of the blocks, and
+ * mesh_reader_close leaves it. */
+typedef double mesh_udouble __attribute__((aligned(1)));
+int mesh_reader_map(struct mesh_reader *r);
+int mesh_reader_next_ref(struct mesh_reader *r, const mesh_udouble **X, int *cut);
+const void *mesh_reader_take_map(struct mesh_reader *r, size_t *len);
 
 /* ---- frame-by-frame writing ---- */
 struct mesh_writer {

@@ -15,8 +15,9 @@ static void *reader_main(void *arg)
         int slot = (p->head + p->count) % p->depth, stop = p->stop;
         pthread_mutex_unlock(&p->lock);
         if (stop) break;
-        int cut = 0;
-        int rc = mesh_reader_next(p->r, p->buf + (size_t)slot * fl, &cut);
+        int cut = 0, rc;
+        if (p->ptr) rc = mesh_reader_next_ref(p->r, &p->ptr[slot], &cut);
+        else rc = mesh_reader_next(p->r, p->buf + (size_t)slot * fl, &cut);
         pthread_mutex_lock(&p->lock);
         if (rc == 1) {
             p->cut[slot] = cut;
@@ -33,16 +34,18 @@ static void *reader_main(void *arg)
     return NULL;
 }
 
-int mesh_prefetch_start(struct mesh_prefetch *p, struct mesh_reader *r, int depth)
+static int start(struct mesh_prefetch *p, struct mesh_reader *r, int depth, int ref)
 {
     memset(p, 0, sizeof *p);
     p->r = r;
     p->depth = depth < 2 ? 2 : depth;
     size_t fl = 3 * (size_t)(r->nv > 0 ? r->nv : 1);
-    p->buf = malloc(sizeof(double) * fl * p->depth);
+    /* by reference: only the pointers (buf stays a 1-double placeholder) */
+    p->buf = malloc(ref ? sizeof(double) : sizeof(double) * fl * p->depth);
     p->cut = calloc(p->depth, sizeof(int));
-    if (!p->buf || !p->cut) {
-        free(p->buf); free(p->cut); p->buf = NULL; p->cut = NULL;
+    if (ref) p->ptr = calloc(p->depth, sizeof *p->ptr);
+    if (!p->buf || !p->cut || (ref && !p->ptr)) {
+        free(p->buf); free(p->cut); free(p->ptr); p->buf = NULL; p->cut = NULL; p->ptr = NULL;
         return cm_seterr("out of memory (%d frame buffers of %d vertices)", p->depth, r->nv);
     }
     pthread_mutex_init(&p->lock, NULL);
@@ -52,13 +55,24 @@ int mesh_prefetch_start(struct mesh_prefetch *p, struct mesh_reader *r, int dept
         pthread_mutex_destroy(&p->lock);
         pthread_cond_destroy(&p->filled);
         pthread_cond_destroy(&p->freed);
-        free(p->buf); free(p->cut); p->buf = NULL; p->cut = NULL;
+        free(p->buf); free(p->cut); free(p->ptr); p->buf = NULL; p->cut = NULL; p->ptr = NULL;
         return cm_seterr("cannot start the reader thread");
     }
     return 0;
 }
 
-int mesh_prefetch_next(struct mesh_prefetch *p, const double **X, int *cut)
+int mesh_prefetch_start(struct mesh_prefetch *p, struct mesh_reader *r, int depth)
+{
+    return start(p, r, depth, 0);
+}
+
+int mesh_prefetch_start_ref(struct mesh_prefetch *p, struct mesh_reader *r, int depth)
+{
+    return start(p, r, depth, 1);
+}
+
+/* the next frame as a copy (*X) or by reference (*Xr) */
+static int next(struct mesh_prefetch *p, const double **X, const mesh_udouble **Xr, int *cut)
 {
     size_t fl = 3 * (size_t)p->r->nv;
     pthread_mutex_lock(&p->lock);
@@ -71,7 +85,8 @@ int mesh_prefetch_next(struct mesh_prefetch *p, const double **X, int *cut)
     while (p->count == 0 && !p->done) pthread_cond_wait(&p->filled, &p->lock);
     int rc;
     if (p->count > 0) {
-        *X = p->buf + (size_t)p->head * fl;
+        if (Xr) *Xr = p->ptr[p->head];
+        else *X = p->buf + (size_t)p->head * fl;
         if (cut) *cut = p->cut[p->head];
         p->held = 1;
         rc = 1;
@@ -81,6 +96,18 @@ int mesh_prefetch_next(struct mesh_prefetch *p, const double **X, int *cut)
     }
     pthread_mutex_unlock(&p->lock);
     return rc;
+}
+
+int mesh_prefetch_next(struct mesh_prefetch *p, const double **X, int *cut)
+{
+    if (p->ptr) return cm_seterr("mesh_prefetch_next: started by reference");
+    return next(p, X, NULL, cut);
+}
+
+int mesh_prefetch_next_ref(struct mesh_prefetch *p, const mesh_udouble **X, int *cut)
+{
+    if (!p->ptr) return cm_seterr("mesh_prefetch_next_ref: not started by reference");
+    return next(p, NULL, X, cut);
 }
 
 void mesh_prefetch_stop(struct mesh_prefetch *p)
@@ -94,6 +121,6 @@ void mesh_prefetch_stop(struct mesh_prefetch *p)
     pthread_mutex_destroy(&p->lock);
     pthread_cond_destroy(&p->filled);
     pthread_cond_destroy(&p->freed);
-    free(p->buf); free(p->cut);
-    p->buf = NULL; p->cut = NULL;
+    free(p->buf); free(p->cut); free(p->ptr);
+    p->buf = NULL; p->cut = NULL; p->ptr = NULL;
 }

@@ -532,7 +532,7 @@ static int library_out(const struct replib_data *D, const struct lstate *s, doub
     if (D->Xf || D->Xi) {
         /* rows are frames only (no fixed pieces with the sketch) */
         int nf = s->nfree;
-        double *tmp = nf ? calloc((size_t)nf * m3, sizeof(double)) : NULL;
+        double *tmp = nf ? big_calloc(sizeof(double) * (size_t)nf * m3) : NULL;
         if (nf && !tmp) return cm_seterr("replib: out of memory");
         struct kept_job job = {D, s, R, tmp};
         parallel_run((m3 + KEPT_COLS - 1) / KEPT_COLS, threads, kept_block, &job);
@@ -1935,7 +1935,7 @@ static int learn_run(const struct replib_data *D, const struct replib_opts *o, s
     if (nth > 16) nth = 16;
     struct restart *out = calloc(restarts, sizeof *out);
     res->labels = malloc(sizeof(int) * n);
-    res->R = keep ? NULL : malloc(sizeof(double) * (size_t)d * m3);
+    res->R = keep ? NULL : big_alloc(sizeof(double) * (size_t)d * m3);     /* written whole: no calloc */
     if (!out || !res->labels || (!keep && !res->R)) {
         free(out); replib_result_free(res);
         return cm_seterr("replib: out of memory");

@@ -39,7 +39,7 @@ void replib_sketch_free(struct replib_sketch *S)
     flush_wait(S);
     free(S->ref); free(S->sw); free(S->om); free(S->Y); free(S->W);
     free(S->cut); free(S->Xk); free(S->xbase); free(S->kb); free(S->zb); free(S->zprev); free(S->V);
-    free(S->zt); free(S->yt);
+    free(S->zt); free(S->yt); free(S->xp);
     memset(S, 0, sizeof *S);
 }
 
@@ -70,8 +70,8 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
     S->keep_bytes = keep_bytes; S->keeping = keep_bytes > 0;
     S->ref = malloc(sizeof(double) * m3);
     S->om = malloc(sizeof(int) * (size_t)m3 * S->zeta);
-    S->W = calloc((size_t)S->s * m3, sizeof(double));
-    S->zb = malloc(sizeof(double) * 2 * (size_t)BATCH * m3);
+    S->W = big_calloc(sizeof(double) * (size_t)S->s * m3);
+    S->zb = big_alloc(sizeof(double) * 2 * (size_t)BATCH * m3);
     S->zt = malloc(sizeof(double) * (size_t)BATCH * TILE);
     S->yt = malloc(sizeof(double) * (size_t)BATCH * k);
     S->zprev = malloc(sizeof(double) * 3 * (size_t)m3);     /* keep_chunk's scratch */
@@ -365,18 +365,24 @@ static int grow(struct replib_sketch *S)
     unsigned char *c = realloc(S->cut, nc);
     if (!c) return -1;
     S->cut = c;
+    if (S->xref) {
+        const mapped_double **xp = realloc(S->xp, sizeof *xp * (size_t)nc);
+        if (!xp) return -1;
+        S->xp = xp;
+    }
     S->cap = nc;
     return 0;
 }
 
-/* lo, hi (m3) = the smallest and largest of each coordinate over nb frames */
+/* lo, hi (m3) = the smallest and largest of each coordinate over the nb
+ * frames xs[0 .. nb-1] */
 SKETCH_SIMD
-static void chunk_range(const double *restrict kb, int nb, int m3, double *restrict lo, double *restrict hi)
+static void chunk_range(const mapped_double *const *xs, int nb, int m3, double *restrict lo, double *restrict hi)
 {
-    memcpy(lo, kb, sizeof(double) * m3);
-    memcpy(hi, kb, sizeof(double) * m3);
+    memcpy(lo, (const void *)xs[0], sizeof(double) * m3);
+    memcpy(hi, (const void *)xs[0], sizeof(double) * m3);
     for (int g = 1; g < nb; g++) {
-        const double *restrict x = kb + (size_t)g * m3;
+        const mapped_double *restrict x = xs[g];
         for (int t = 0; t < m3; t++) {
             lo[t] = x[t] < lo[t] ? x[t] : lo[t];
             hi[t] = x[t] > hi[t] ? x[t] : hi[t];
@@ -393,15 +399,15 @@ static void chunk_range(const double *restrict kb, int nb, int m3, double *restr
  * not vectorize without -ffinite-math-only; perf: this was 5% of the
  * Monkey-size run's CPU as scalar code).  Same integers, same *e. */
 SKETCH_SIMD
-static int chunk_ints(struct replib_sketch *S, const double *kb, int f0, int nb, const double *restrict o, double q,
-                      double iq, double *e)
+static int chunk_ints(struct replib_sketch *S, const mapped_double *const *xs, int f0, int nb, const double *restrict o,
+                      double q, double iq, double *e)
 {
     int m3 = S->m3, bad = 0;
     double tol = 1e-3 * q;
     int64_t em;
     memcpy(&em, e, sizeof em);
     for (int g = 0; g < nb; g++) {
-        const double *restrict x = kb + (size_t)g * m3;
+        const mapped_double *restrict x = xs[g];
         int32_t *restrict xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
         for (int t = 0; t < m3; t++) {
             double v = x[t] - o[t], u = v * iq;
@@ -423,18 +429,24 @@ static int chunk_ints(struct replib_sketch *S, const double *kb, int f0, int nb,
  * the kept 32-bit frames: base = the midrange of each coordinate over the
  * chunk (on the input's grid), then integers of the step while every value
  * is on the grid and within +-2^31 steps, else floats (all kept frames
- * turned to floats once, in place). */
+ * turned to floats once, in place).  kb: the chunk's frames one after the
+ * other, or NULL: where they lie (S->xp; then, with S->release, their pages
+ * are released once read). */
 static void keep_chunk(struct replib_sketch *S, int f1, const double *kb)
 {
     int m3 = S->m3, c = (f1 - 1) / REPLIB_KEEP_CHUNK, f0 = c * REPLIB_KEEP_CHUNK, nb = f1 - f0;
     double q = S->xstep, iq = q > 0 ? 1 / q : 0, e = 0, *o = S->xbase + (size_t)c * m3;
     double *lo = S->zprev + m3, *hi = lo + m3;   /* scratch */
-    chunk_range(kb, nb, m3, lo, hi);
+    const mapped_double *xb[REPLIB_KEEP_CHUNK];
+    const mapped_double *const *xs = xb;
+    if (kb) for (int g = 0; g < nb; g++) xb[g] = kb + (size_t)g * m3;
+    else xs = S->xp + f0;
+    chunk_range(xs, nb, m3, lo, hi);
     for (int t = 0; t < m3; t++)
         o[t] = q > 0 ? nearbyint(0.5 * (lo[t] + hi[t]) / q) * q : 0.5 * (lo[t] + hi[t]);
-    int done = S->fixed && chunk_ints(S, kb, f0, nb, o, q, iq, &e) == 0;    /* every value on the grid */
+    int done = S->fixed && chunk_ints(S, xs, f0, nb, o, q, iq, &e) == 0;    /* every value on the grid */
     for (int g = 0; g < nb && S->fixed && !done; g++) {
-        const double *x = kb + (size_t)g * m3;
+        const mapped_double *x = xs[g];
         int32_t *xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
         for (int t = 0; t < m3; t++) {
             /* round to nearest by the 1.5 2^52 trick (|v / q| < 2^31 checked first) */
@@ -460,7 +472,7 @@ static void keep_chunk(struct replib_sketch *S, int f1, const double *kb)
     if (!S->fixed) {
         S->floated = 1;
         for (int g = 0; g < nb; g++) {
-            const double *x = kb + (size_t)g * m3;
+            const mapped_double *x = xs[g];
             float *xf = (float *)S->Xk + (size_t)(f0 + g) * m3;
             for (int t = 0; t < m3; t++) {
                 double v = x[t] - o[t];
@@ -470,6 +482,8 @@ static void keep_chunk(struct replib_sketch *S, int f1, const double *kb)
         }
     }
     if (e > S->float_err) S->float_err = e;
+    /* the frames' pages: read again only by later passes */
+    if (!kb && S->release) mapped_release((const void *)xs[0], (const void *)(xs[nb - 1] + m3));
 }
 
 /* The kept frames are encoded on a helper thread, one chunk at a time,
@@ -562,8 +576,8 @@ static void keeper_start(struct replib_sketch *S)
 /* z (m) = sw (x - ref) (sw may be NULL: 1); returns |z|^2 (eight partial
  * sums: vectorized), not finite if a value of x is not */
 SKETCH_SIMD
-static double center_row(const double *restrict x, const double *restrict ref, const double *restrict sw, int m,
-                         double *restrict z)
+static double center_row(const mapped_double *restrict x, const mapped_double *restrict ref,
+                         const double *restrict sw, int m, double *restrict z)
 {
     double acc[8] = {0};
     int t = 0;
@@ -577,9 +591,14 @@ static double center_row(const double *restrict x, const double *restrict ref, c
     return s;
 }
 
-int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
+/* byref: x stays where it is (replib_sketch_add_ref) */
+static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, int byref)
 {
     int m3 = S->m3, f = S->n;
+    if (f == 0) S->xref = byref;
+    else if (S->xref != byref)
+        return cm_seterr("replib_sketch: frame %d added %s reference, the earlier ones %s", f,
+                         byref ? "by" : "not by", byref ? "not" : "by");
     double zz = center_row(x, f ? S->ref : x, S->sw, m3, S->zb + ((size_t)S->zhalf * BATCH + S->nb) * m3);
     if (!(zz <= 1.7976931348623157e308))     /* a coordinate is not finite (or the squares overflow) */
         for (int t = 0; t < m3; t++)
@@ -590,8 +609,8 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
         if (grow(S) < 0) return cm_seterr("replib_sketch: out of memory at frame %d", f);
     }
     if (f == 0) {
-        memcpy(S->ref, x, sizeof(double) * m3);
-        S->xstep = replib_input_step(x, m3);
+        memcpy(S->ref, (const void *)x, sizeof(double) * m3);
+        S->xstep = replib_input_step(S->ref, m3);
         S->fixed = S->xstep > 0;
     }
     if (S->keeping) {
@@ -613,9 +632,14 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
             if (!nx) { keeper_wait(S); free(S->Xk); S->Xk = NULL; S->keeping = 0; }
             else {
                 /* chunk c is buffered in half c % 2 of kb while the
-                 * helper encodes chunk c - 1 from the other half */
-                double *kb = S->kb + (size_t)(f / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * m3;
-                memcpy(kb + (size_t)(f % REPLIB_KEEP_CHUNK) * m3, x, sizeof(double) * m3);
+                 * helper encodes chunk c - 1 from the other half; by
+                 * reference, the helper reads the frames where they are */
+                double *kb = NULL;
+                if (byref) S->xp[f] = x;
+                else {
+                    kb = S->kb + (size_t)(f / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * m3;
+                    memcpy(kb + (size_t)(f % REPLIB_KEEP_CHUNK) * m3, (const void *)x, sizeof(double) * m3);
+                }
                 if (f % REPLIB_KEEP_CHUNK == REPLIB_KEEP_CHUNK - 1) {
                     keeper_post(S, f + 1, kb);
                     /* the next chunk's kept frames faulted in here, so
@@ -630,6 +654,8 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
             }
         }
     }
+    else if (byref && S->release && f > 0)
+        mapped_release((const void *)x, (const void *)(x + m3));   /* read once: not kept */
     S->cut[f] = f > 0 && cut;
     S->zn += zz;
     S->n++;
@@ -638,12 +664,22 @@ int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
     return 0;
 }
 
+int replib_sketch_add(struct replib_sketch *S, const double *x, int cut)
+{
+    return sketch_add(S, x, cut, 0);
+}
+
+int replib_sketch_add_ref(struct replib_sketch *S, const mapped_double *x, int cut)
+{
+    return sketch_add(S, x, cut, 1);
+}
+
 int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
 {
     if (flush(S) < 0 || flush_wait(S) < 0) return -1;
     keeper_stop(S);                 /* the chunks handed over are encoded */
     if (S->keeping && S->n % REPLIB_KEEP_CHUNK)
-        keep_chunk(S, S->n, S->kb + (size_t)((S->n - 1) / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * S->m3);
+        keep_chunk(S, S->n, S->xref ? NULL : S->kb + (size_t)((S->n - 1) / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * S->m3);
     int n = S->n, k = S->k, s = S->s, m3 = S->m3, info = 0;
     if (n < 1) return cm_seterr("replib_sketch: no frames");
     if (!S->keeping && S->sw)

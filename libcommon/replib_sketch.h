@@ -31,6 +31,7 @@
 #ifndef CM_REPLIB_SKETCH_H
 #define CM_REPLIB_SKETCH_H
 #include "replib.h"
+#include "mapped_frames.h"
 #include <stddef.h>
 #include <stdint.h>
 #ifdef __cplusplus
@@ -69,6 +70,11 @@ struct replib_sketch {
     int nb, cap, xcap;
     int expect;                 /* frames announced (0: unknown; set before the first add): the
                                    kept frames are then allocated once, on huge pages */
+    const mapped_double **xp;   /* replib_sketch_add_ref: cap frame pointers (valid until finish) */
+    int xref;                   /* 1: frames were added by reference */
+    int release;                /* 1 (set by the caller): the referenced frames lie in a read-only
+                                   private file mapping; their pages are released once read
+                                   (mapped_release) and fault in again when a pass needs them */
     uint64_t seed;
     double zn;                  /* |Z|_F^2 */
     double float_err;           /* max |kept(x - x_0) - (x - x_0)| over kept frames (model units) */
@@ -84,6 +90,13 @@ int replib_sketch_init(struct replib_sketch *S, int nv, int k, const double *w, 
                        uint64_t seed);
 /* Add one frame x (#V by 3); cut = 1 if it starts a clip. */
 int replib_sketch_add(struct replib_sketch *S, const double *x, int cut);
+/* The same for a frame that stays where it is, x (3#V doubles at any
+ * alignment, e.g. a raw block in a file mapping: mesh_reader_next_ref)
+ * valid until replib_sketch_finish returns: the frame is not copied; the
+ * helper that encodes the kept frames reads each chunk where it lies (the
+ * same bytes of every result as replib_sketch_add).  All frames of a
+ * sketch are added one way or the other, not both. */
+int replib_sketch_add_ref(struct replib_sketch *S, const mapped_double *x, int cut);
 /* Finish the sketch and fill D (D->n, nv, and everything replib_prepare
  * derives; D->X = NULL, D->Xi or D->Xf / D->ref / D->V point into S, which must
  * outlive D).  No fixed pieces.  Returns 0 or -1. */

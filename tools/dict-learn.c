@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/mman.h>
 
 #define DEFAULT_SAMPLE 16384    /* --sample */
 #define STR_(x) #x
@@ -268,9 +269,15 @@ static void stage(const char *what)
 /* Read the animation once, frame by frame: in memory (m->V, double) while
  * it is small, else (or with --stream on) into the one-pass sketch S, with
  * the frames buffered so far fed to it.  Weights are read once the vertex
- * count is known.  Returns 1 if the frames went to the sketch. */
-static int read_anim(const struct options *o, struct mesh *m, struct columns *wc, struct replib_sketch *S)
+ * count is known.  Returns 1 if the frames went to the sketch.  A raw
+ * stream in a regular file that goes to the sketch from its first frame
+ * is mapped (*map, *maplen: to munmap once the sketch is finished): its
+ * frames are sketched and encoded where they lie, not copied
+ * (replib_sketch_add_ref; the same results). */
+static int read_anim(const struct options *o, struct mesh *m, struct columns *wc, struct replib_sketch *S,
+                     const void **map, size_t *maplen)
 {
+    *map = NULL; *maplen = 0;
     struct mesh_reader r;
     if (mesh_reader_open(&r, o->input) < 0) die("%s", cm_errmsg());
     memset(m, 0, sizeof *m);
@@ -286,6 +293,39 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
      * at the cost of a copy and a page fault per 4 KB) */
     if (r.nframes > 0 && (double)r.nframes * fb > (double)lim) lim = 0;
     int cap = 0, sk = 0, rc, cut;
+    if (lim == 0 && mesh_reader_map(&r) == 1) {
+        /* no copy: the frames are where they lie */
+        size_t keep = (size_t)(o->memory * 1048576.0);
+        if (r.nframes > 0 && (double)r.nframes * 12 * m->nv > o->memory * 1048576.0) keep = 0;
+        if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
+            die("%s", cm_errmsg());
+        S->expect = r.nframes > 0 ? r.nframes : 0;
+        S->release = 1;
+        info(1, "read: '%s' mapped: raw frames sketched where they lie in the file", r.name);
+        /* a second thread finds the frames (headers, checks, page tables)
+         * while this one sketches them */
+        struct mesh_prefetch pf;
+        if (mesh_prefetch_start_ref(&pf, &r, 8) < 0) die("%s", cm_errmsg());
+        const mesh_udouble *x;
+        while ((rc = mesh_prefetch_next_ref(&pf, &x, &cut)) == 1) {
+            int f = m->nframes;
+            if (replib_sketch_add_ref(S, (const mapped_double *)(const void *)x, cut) < 0)
+                die("cannot read '%s': %s", r.name, cm_errmsg());
+            if (f % 1024 == 0) {
+                unsigned char *c = realloc(m->cut, (size_t)f + 1024);
+                if (!c) die("out of memory");
+                m->cut = c;
+            }
+            m->cut[f] = f > 0 && cut;
+            m->nframes++;
+        }
+        if (rc < 0) die("%s", cm_errmsg());
+        mesh_prefetch_stop(&pf);
+        if (m->nframes < 1) die("cannot read '%s': no frames", r.name);
+        *map = mesh_reader_take_map(&r, maplen);
+        mesh_reader_close(&r);
+        return 1;
+    }
     /* frames parsed on a second thread while this one sketches or stores */
     struct mesh_prefetch pf;
     if (mesh_prefetch_start(&pf, &r, 8) < 0) die("%s", cm_errmsg());
@@ -354,7 +394,9 @@ int main(int argc, char **argv)
     struct columns wc = {0};
     struct replib_sketch S = {0};
     stage(NULL);
-    int streamed = read_anim(&o, &m, &wc, &S);
+    const void *map;
+    size_t maplen;
+    int streamed = read_anim(&o, &m, &wc, &S, &map, &maplen);
     stage(streamed ? "read + sketch" : "read");
     struct mesh fx = {0};
     if (o.fixed) {
@@ -378,6 +420,7 @@ int main(int argc, char **argv)
     if (streamed) {
         if (replib_sketch_finish(&S, &D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
         D.w = o.weights ? wc.x : NULL;
+        if (map) munmap((void *)map, maplen);      /* the frames are read */
         info(1, "sketch: rank %d captures %.8f of |Z|^2; frames %s", D.zdim, S.captured,
              D.Xi ? "kept in 32-bit integers of the input's step" : D.Xf ? "kept in single precision" :
              "not kept (pieces from the sketch)");
