@@ -11,12 +11,14 @@
 void patch_unflip_defaults(struct patch_unflip_params *p)
 {
     p->rings = 2;
+    p->rounds = 2;
     p->iters = 30;
     p->wdata = 10;
     p->lambda = 1;
     p->wface = 100;
     p->wback = 100;
     p->max_verts = 2000;
+    p->max_flipped = 0.03;
     p->tol = 0;
 }
 
@@ -504,37 +506,51 @@ int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
     int nfl = flipped_face_flags(P, F, nf, VT, nvt, FT, nft, TT, p->tol, w.flip);
     if (nfl < 0) goto done;
     if (stats) { stats[0] = stats[1] = nfl; stats[2] = stats[3] = 0; }
-    if (nfl == 0) { rc = 0; goto done; }
+    if (nfl == 0 || nfl > p->max_flipped * nf) { rc = 0; goto done; }
     double rms;
     TS = closest_point_tree_new(P, nv, F, nf);
     if (!TS || symmetric_distance(P, nv, F, nf, TS, VT, nvt, FT, nft, TT, &w.h0, &rms) < 0) goto done;
     w.TS = TS;
-    /* the region: flipped faces' vertices and `rings` rings, in connected pieces */
-    for (int f = 0; f < nf; f++)
-        if (w.flip[f]) for (int c = 0; c < 3; c++) in[F[3 * f + c]] = 1;
-    for (int g = 0; g < p->rings; g++) {
-        memcpy(tmp, in, (size_t)nv);
-        for (int i = 0; i < nv; i++)
-            if (tmp[i]) for (int q = t.VVs[i]; q < t.VVs[i + 1]; q++) in[t.VV[q]] = 1;
-    }
-    for (int i = 0; i < nv; i++) in[i] &= !fixed[i];
-    for (int s = 0; s < nv; s++) {
-        if (!in[s] || done_v[s]) continue;
-        int head = 0, tail = 0;
-        queue[tail++] = s;
-        done_v[s] = 1;
-        while (head < tail) {
-            int v = queue[head++];
-            for (int q = t.VVs[v]; q < t.VVs[v + 1]; q++) {
-                int u = t.VV[q];
-                if (in[u] && !done_v[u]) { done_v[u] = 1; queue[tail++] = u; }
-            }
+    /* round after round (one ring more each), on what is still flipped */
+    for (int round = 0; round < p->rounds; round++) {
+        int rings = p->rings + round, left = 0;
+        for (int f = 0; f < nf; f++) left += w.flip[f];
+        if (left == 0) break;
+        if (round > 0) {
+            closest_point_tree_free(TS);
+            TS = closest_point_tree_new(P, nv, F, nf);
+            w.TS = TS;
+            if (!TS) goto done;
         }
-        if (tail > p->max_verts) continue;
-        tried++;
-        int r = solve_patch(&w, queue, tail, P, p->iters);
-        if (r < 0) goto done;
-        kept += r;
+        memset(in, 0, (size_t)nv);
+        memset(done_v, 0, (size_t)nv);
+        /* the region: flipped faces' vertices and `rings` rings, in connected pieces */
+        for (int f = 0; f < nf; f++)
+            if (w.flip[f]) for (int c = 0; c < 3; c++) in[F[3 * f + c]] = 1;
+        for (int g = 0; g < rings; g++) {
+            memcpy(tmp, in, (size_t)nv);
+            for (int i = 0; i < nv; i++)
+                if (tmp[i]) for (int q = t.VVs[i]; q < t.VVs[i + 1]; q++) in[t.VV[q]] = 1;
+        }
+        for (int i = 0; i < nv; i++) in[i] &= !fixed[i];
+        for (int s = 0; s < nv; s++) {
+            if (!in[s] || done_v[s]) continue;
+            int head = 0, tail = 0;
+            queue[tail++] = s;
+            done_v[s] = 1;
+            while (head < tail) {
+                int v = queue[head++];
+                for (int q = t.VVs[v]; q < t.VVs[v + 1]; q++) {
+                    int u = t.VV[q];
+                    if (in[u] && !done_v[u]) { done_v[u] = 1; queue[tail++] = u; }
+                }
+            }
+            if (tail > p->max_verts) continue;
+            tried++;
+            int r = solve_patch(&w, queue, tail, P, p->iters);
+            if (r < 0) goto done;
+            kept += r;
+        }
     }
     nfl = 0;
     for (int f = 0; f < nf; f++) nfl += w.flip[f];

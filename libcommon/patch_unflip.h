@@ -41,6 +41,8 @@ extern "C" {
 
 struct patch_unflip_params {
     int rings;       /* rings around the flipped faces' vertices that move (default 2) */
+    int rounds;      /* rounds over the faces still flipped, each with one ring more
+                        (default 2) */
     int iters;       /* outer iterations (eps updates) per patch (default 30) */
     double wdata;    /* weight of the distance to the target (default 10) */
     double wface;    /* weight of the face centroids' distance to the target (default 100) */
@@ -48,6 +50,10 @@ struct patch_unflip_params {
                         closest point of the patch (default 100) */
     double lambda;   /* weight of the area term against the conformal one (default 1) */
     int max_verts;   /* patches with more free vertices are left alone (default 2000) */
+    double max_flipped; /* a pose with more than this fraction of its faces flipped is
+                        left alone: a start that went wrong, not a pleat (default 0.03:
+                        on camel 01 -> 04 the starts above it ended at 139-413 flipped
+                        faces after the solve, at up to 16 s each) */
     double tol;      /* thin-part allowance of the flip test (flipped_face_flags), in
                         the points' units (e.g. FLIP_THIN_TOL diagonals) */
 };
