@@ -11,7 +11,7 @@
 void patch_unflip_defaults(struct patch_unflip_params *p)
 {
     p->rings = 2;
-    p->rounds = 2;
+    p->rounds = 1;
     p->iters = 30;
     p->wdata = 10;
     p->lambda = 1;
