@@ -48,7 +48,7 @@ struct work {
     int *bf;                      /* their closest patch face (local) */
     double *bb, *Xl;              /* their barycentrics; all local positions */
     double wbackp, wback;
-    double *Q, *D;
+    double *Q;                    /* scratch: face centroids */
     int *I, *cand;
     unsigned char *fsub;
     int ncand_max;
