@@ -9,6 +9,8 @@
 #     time.  Goals: < 1 %, no flipped face, <= 3 s.  Peer (trimesh
 #     nricp_amberg, measured by the issue on this machine): 3.4-3.7 % in
 #     10-17 s.  01 -> 05 direct and chained (goal < 2 %; peer 21 %).
+#   --unflip (the foldover-free solve on flipped patches) against --unflip 0
+#     on camel 01 -> 04 and 02 -> 04.
 #   arap-interp 10 steps vs lin-interp 10 steps on a bent closed tube of
 #     3520 faces: CPU time and mean |area distortion| at t = 1/2.  Goal 0.5 s.
 #   clay-deform on the same tube (10 steps x 5 iterations, volume kept), the
@@ -53,8 +55,8 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
     # (cleaning may shift vertex indices: the landmark files name raw ones)
     lm() { echo "-l $EX/landmarks-01-$1.txt --landmark-mesh $T/raw${1%-direct}.mesh"; }
     nricp --init-deform $(lm 02) "$T/c01.mesh" "$T/c02.mesh" >"$T/r.mesh" &&
-    nricp --init-deform --fit 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh" >"$T/r0.mesh" &&
-    nricp --nearest-vertex --backward 0 --fit 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh" >"$T/b.mesh" || exit 1
+    nricp --init-deform --fit 0 --unflip 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh" >"$T/r0.mesh" &&
+    nricp --nearest-vertex --backward 0 --fit 0 --unflip 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh" >"$T/b.mesh" || exit 1
     set -- $(hf "$T/c02.mesh" "$T/r.mesh"); h=$1 f=$2
     set -- $(hf "$T/c02.mesh" "$T/r0.mesh"); h0=$1 f0=$2
     set -- $(hf "$T/c02.mesh" "$T/b.mesh"); hb=$1 fb=$2
@@ -62,13 +64,13 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
     echo "nricp ARAP fit camel 01->02: $h % ($f flipped) | baseline --fit 0 (Amberg + backward term) $h0 % ($f0 flipped) | ratio $(ratio "$h" "$h0")"
     tw=$(walltime nricp --init-deform $(lm 02) "$T/c01.mesh" "$T/c02.mesh")
     t=$(best3 nricp --init-deform $(lm 02) "$T/c01.mesh" "$T/c02.mesh")
-    tb=$(best3 nricp --nearest-vertex --backward 0 --fit 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh")
+    tb=$(best3 nricp --nearest-vertex --backward 0 --fit 0 --unflip 0 $(lm 02) "$T/c01.mesh" "$T/c02.mesh")
     echo "nricp --init-deform camel 01->02 time: $tw s wall ($t s CPU) | baseline nearest-vertex $tb s CPU | ratio $(ratio "$t" "$tb") in CPU (goal <= 3 s on 2 cores; trimesh peer 10-17 s)"
     # 01 -> 05, the legs swap places: directly (a landmark set marking every
     # leg three times) and chained through 02, 03, 04 as examples/clay does
     nricp --init-deform $(lm 05-direct) "$T/c01.mesh" "$T/c05.mesh" >"$T/d5.mesh" &&
     nricp --init-model shell $(lm 05-direct) "$T/c01.mesh" "$T/c05.mesh" >"$T/s5.mesh" &&
-    nricp --nearest-vertex --backward 0 --fit 0 $(lm 05-direct) "$T/c01.mesh" "$T/c05.mesh" >"$T/b5.mesh" || exit 1
+    nricp --nearest-vertex --backward 0 --fit 0 --unflip 0 $(lm 05-direct) "$T/c01.mesh" "$T/c05.mesh" >"$T/b5.mesh" || exit 1
     prev="$T/c01.mesh"
     for k in 02 03 04 05; do
         nricp --init-deform $(lm $k) "$prev" "$T/c$k.mesh" >"$T/ch$k.mesh" || exit 1
@@ -109,6 +111,18 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
         set -- $(hf "$T/c$b.mesh" "$T/pa$p.mesh"); h2=$1 f2=$2
         set -- $(hf "$T/c$b.mesh" "$T/p1$p.mesh"); h1=$1 f1=$2
         echo "nricp --passes auto camel $a->$b: $h2 % ($f2 flipped), $t2 s CPU | baseline --passes 1 $h1 % ($f1 flipped), $t1 s | ratio $(ratio "$h2" "$h1") in Hausdorff, $(ratio "$t2" "$t1") in CPU (goals: two apart < 1 % and 0 flipped, far pairs <= 10 flipped)"
+    done
+    # the foldover-free solve on the patches left flipped (--unflip 2, the
+    # default) against --unflip 0 (the earlier default), 01 -> 04 (three
+    # apart: the fetlock pleats) and 02 -> 04 (two apart)
+    for p in 01-04 02-04; do
+        a=${p%-*} b=${p#*-}
+        tu=$(cput "$T/uf$p.mesh" nricp "$T/c$a.mesh" "$T/c$b.mesh") &&
+        t0=$(cput "$T/u0$p.mesh" nricp --unflip 0 "$T/c$a.mesh" "$T/c$b.mesh") &&
+        [ -s "$T/uf$p.mesh" ] && [ -s "$T/u0$p.mesh" ] || exit 1
+        set -- $(hf "$T/c$b.mesh" "$T/uf$p.mesh"); hu=$1 fu=$2
+        set -- $(hf "$T/c$b.mesh" "$T/u0$p.mesh"); h0=$1 f0=$2
+        echo "nricp --unflip camel $a->$b: $hu % ($fu flipped), $tu s CPU | baseline --unflip 0 $h0 % ($f0 flipped), $t0 s | ratio $(ratio "$hu" "$h0") in Hausdorff, $(ratio "$tu" "$t0") in CPU (goals: far pairs < 2 % and <= 10 flipped, two apart < 1 % and 0 flipped)"
     done
     # a chain of keys without landmark files: nricp --chain (each key's fit
     # relative to scan 01) against --chain-rest previous (each key a plain

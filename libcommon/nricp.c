@@ -8,6 +8,7 @@
 #include "mesh_distance.h"
 #include "mesh_clean.h"
 #include "nricp_untangle.h"
+#include "patch_unflip.h"
 #include "spd.h"
 #include "topology.h"
 #include <stdio.h>
@@ -35,6 +36,7 @@ void nricp_defaults(struct nricp_params *p)
     p->rigid = 0;
     p->rigid_iters = 4;
     p->untangle = 1;
+    p->unflip = 2;
     p->fit_release = 0;
     p->coarse = 0;
     p->fine_steps = 2;
@@ -533,6 +535,20 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
             for (int i = 0; i < nvs; i++)
                 for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
             cb(ctx, K + (p->fit > 0 ? p->fit : 0), 0, 0, fl[0], fl[1], -2, Xout);
+        }
+    }
+    /* what is left flipped: each patch laid flat by a foldover-free solve */
+    if (p->unflip > 0) {
+        struct patch_unflip_params up;
+        patch_unflip_defaults(&up);
+        up.rings = p->unflip;
+        up.tol = FLIP_THIN_TOL;     /* coordinates are in diagonals here */
+        int st[4];
+        if (patch_unflip(P, RS ? RS : VS, FS, nvs, nfs, VT, FT, nvt, nft, TT, &up, st) < 0) goto done;
+        if (cb) {
+            for (int i = 0; i < nvs; i++)
+                for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
+            cb(ctx, K + (p->fit > 0 ? p->fit : 0), 0, 0, st[0], st[1], -4, Xout);
         }
     }
     for (int i = 0; i < nvs; i++)

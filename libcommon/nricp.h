@@ -38,7 +38,9 @@
  * along the target, and folded faces released from the data terms.
  * Where the target's skin folds, the fit may still lay the source's
  * surplus on the target in a pleat (faces on the target, turned over);
- * with untangle > 0 nricp_untangle.h smooths them out on the target.
+ * with untangle > 0 nricp_untangle.h smooths them out on the target, and
+ * with unflip > 0 patch_unflip.h lays what is left flat by a foldover-free
+ * solve on each flipped patch.
  * Internally coordinates are centred on the target and divided by its
  * bounding-box diagonal, so the parameters do not depend on the scale.
  */
@@ -78,6 +80,11 @@ struct nricp_params {
                               flipped against it, mesh-metrics' test) are smoothed out on the
                               target, with this many rings around them (nricp_untangle.h;
                               default 1; 0: off) */
+    int unflip;            /* > 0: last, the patches still flipped against the target (the
+                              vertices of those faces and this many rings around them) are
+                              laid flat on the target by an injectivity-restoring solve,
+                              each kept only where it flips fewer faces and uncovers nothing
+                              (patch_unflip.h; default 2; 0: off) */
     int fit_release;       /* the ARAP fit's released vertices (folded faces and a ring
                               around them): 0 keep their place as goal (default), 1 the
                               mean of their neighbours (arap_fit_params.release_mean) */
@@ -104,7 +111,9 @@ void nricp_defaults(struct nricp_params *p);
  * is called once more with folded -2, inner and rejected the faces flipped
  * against the target before and after (X the untangled pose).  With
  * coarse > 0 it is called first with folded -3, inner and rejected the
- * coarse level's vertex and face counts (X NULL); the coarse steps report
+ * coarse level's vertex and face counts (X NULL); after the unflipping
+ * (unflip > 0) with folded -4, inner and rejected the flipped faces before
+ * and after; the coarse steps report
  * the fine vertices moved by the coarse maps. */
 typedef int (*nricp_step_fn)(void *ctx, int step, double alpha, double beta, int inner,
                              int rejected, int folded, const double *X);

@@ -81,6 +81,9 @@ static const char help[] =
 "      --untangle R      after the fit, smooth out the pleats where the target's\n"
 "                        skin folds (faces on the target but turned over) on the\n"
 "                        target, with R rings around them (default 1; 0: off)\n"
+"      --unflip R        last, lay the patches still flipped against the target\n"
+"                        (R rings around them) flat on it by a foldover-free solve,\n"
+"                        each kept where it flips fewer faces (default 2; 0: off)\n"
 "      --fit-release R   the ARAP fit's vertices released at folds keep their place\n"
 "                        (stay), take their neighbours' mean (mean: irons flaps of\n"
 "                        surplus skin flat), or both (default): the mean too where\n"
@@ -161,14 +164,14 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES };
+           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES, O_UNFLIP };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
-        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"fit-release", 1, 0, O_FITREL},
+        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"unflip", 1, 0, O_UNFLIP}, {"fit-release", 1, 0, O_FITREL},
         {"fit-smooth-retry", 1, 0, O_FITSR}, {"coarse", 1, 0, O_COARSE}, {"fine-steps", 1, 0, O_FINESTEPS}, {"rigid-const", 0, 0, O_RIGIDC}, {"passes", 1, 0, O_PASSES},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
@@ -209,6 +212,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_PAPER: o->paper = 1; break;
         case O_RIGID: o->p.rigid = arg_double(optarg, "--rigid"); break;
         case O_UNTANGLE: o->p.untangle = arg_int(optarg, "--untangle"); break;
+        case O_UNFLIP: o->p.unflip = arg_int(optarg, "--unflip"); break;
         case O_FITREL:
             if (!strcmp(optarg, "stay")) o->fit_release = 0;
             else if (!strcmp(optarg, "mean")) o->fit_release = 1;
@@ -292,6 +296,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         o->p.fit = 0;
         o->p.rigid = 0;
         o->p.untangle = 0;
+        o->p.unflip = 0;
         o->p.backward = 0;
         o->p.search = 0;
         o->p.max_inner = 10;
@@ -305,6 +310,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->p.fit < 0 || o->p.fit > 1000) usage_error("--fit must be in 0..1000");
     if (!(o->p.rigid >= 0 && o->p.rigid <= 1e6)) usage_error("--rigid must be in [0, 1e6]");
     if (o->p.untangle < 0 || o->p.untangle > 20) usage_error("--untangle must be in 0..20");
+    if (o->p.unflip < 0 || o->p.unflip > 20) usage_error("--unflip must be in 0..20");
     if (o->p.rigid_iters < 1 || o->p.rigid_iters > 100) usage_error("--rigid-iters must be in 1..100");
     if (!(o->p.coarse >= 0 && o->p.coarse <= 0.5)) usage_error("--coarse must be in [0, 0.5]");
     if (o->p.fine_steps < 0 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 0..1000");
@@ -330,6 +336,11 @@ static int on_step(void *ctx, int step, double alpha, double beta, int inner, in
     if (folded == -3) {
         info(1, "coarse level: %d vertices, %d faces (--coarse %g); the last %d steps on the "
              "source's %d vertices", inner, rejected, s->coarse, s->fine_steps, s->nv);
+        return 0;
+    }
+    if (folded == -4) {
+        info(1, "unflipped: %d -> %d faces flipped against the target, %.2f s", inner, rejected,
+             now_seconds() - s->t0);
         return 0;
     }
     if (folded == -2) {
