@@ -59,7 +59,8 @@ build_rev() { # rev [more libcommon files of that rev] -> path of the binary, or
     [ -x "$b" ] && echo "$b"
 }
 OLD=$(build_rev $OLDREV)
-PRE=$(build_rev $PREREV libcommon/mesh.c libcommon/mesh.h libcommon/numparse.c libcommon/numparse.h)
+PRE=$(build_rev $PREREV libcommon/mesh.c libcommon/mesh.h libcommon/numparse.c libcommon/numparse.h \
+    libcommon/mesh_prefetch.c libcommon/mesh_prefetch.h)
 timed() { # prints "wall cpu peak_MB energy learn_wall" of dict-learn-like command "$@" --report
     /usr/bin/time -f "%e %U %S %M" -o "$T/time" "$@" -v --report "$T/rep" >/dev/null 2>"$T/err" ||
         { sed 's/^/   /' "$T/err" | tail -3 >&2; return 1; }
