@@ -274,6 +274,20 @@ static void stage(const char *what)
  * is mapped (*map, *maplen: to munmap once the sketch is finished): its
  * frames are sketched and encoded where they lie, not copied
  * (replib_sketch_add_ref; the same results). */
+/* one more frame read into m (its vertices stored or sketched elsewhere):
+ * its cut flag (a clip starts there; never the first frame) */
+static void add_frame_cut(struct mesh *m, int cut)
+{
+    int f = m->nframes;
+    if (f % 1024 == 0) {
+        unsigned char *c = realloc(m->cut, (size_t)f + 1024);
+        if (!c) die("out of memory");
+        m->cut = c;
+    }
+    m->cut[f] = f > 0 && cut;
+    m->nframes++;
+}
+
 static int read_anim(const struct options *o, struct mesh *m, struct columns *wc, struct replib_sketch *S,
                      const void **map, size_t *maplen)
 {
@@ -308,16 +322,9 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
         if (mesh_prefetch_start_ref(&pf, &r, 8) < 0) die("%s", cm_errmsg());
         const mesh_udouble *x;
         while ((rc = mesh_prefetch_next_ref(&pf, &x, &cut)) == 1) {
-            int f = m->nframes;
             if (replib_sketch_add_ref(S, (const mapped_double *)(const void *)x, cut) < 0)
                 die("cannot read '%s': %s", r.name, cm_errmsg());
-            if (f % 1024 == 0) {
-                unsigned char *c = realloc(m->cut, (size_t)f + 1024);
-                if (!c) die("out of memory");
-                m->cut = c;
-            }
-            m->cut[f] = f > 0 && cut;
-            m->nframes++;
+            add_frame_cut(m, cut);
         }
         if (rc < 0) die("%s", cm_errmsg());
         mesh_prefetch_stop(&pf);
@@ -357,13 +364,7 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
             m->V = nvv;
         }
         if (!sk) memcpy(m->V + (size_t)f * 3 * m->nv, x, fb);
-        if (f % 1024 == 0) {
-            unsigned char *c = realloc(m->cut, (size_t)f + 1024);
-            if (!c) die("out of memory");
-            m->cut = c;
-        }
-        m->cut[f] = f > 0 && cut;
-        m->nframes++;
+        add_frame_cut(m, cut);
     }
     if (rc < 0) die("%s", cm_errmsg());
     mesh_prefetch_stop(&pf);

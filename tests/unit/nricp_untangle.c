@@ -6,37 +6,18 @@
 #include "closest_point.h"
 #include "mesh_distance.h"
 #include "tap.h"
-#include "testmesh.h"
+#include "pleat_fixture.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* x -> x + b(y) g(x): g a sine wave on [0.35, 0.65] steep enough that the
- * map runs backwards around x = 0.5 where b(y) > 0.6 */
-static void pleat(const double *V, int nv, double *P)
-{
-    for (int i = 0; i < nv; i++) {
-        double x = V[3 * i], y = V[3 * i + 1];
-        double g = x > 0.35 && x < 0.65 ? 0.08 * sin(2 * M_PI * (x - 0.35) / 0.3) : 0;
-        double b = y > 0.2 && y < 0.8 ? 0.5 - 0.5 * cos(2 * M_PI * (y - 0.2) / 0.6) : 0;
-        P[3 * i] = x + b * g;
-        P[3 * i + 1] = y;
-        P[3 * i + 2] = 0;
-    }
-}
-
 int main(void)
 {
-    double *V, *VT;
-    int *F, *FT, nv, nf, nvt, nft;
-    grid_mesh(24, 24, 0, 1, &V, &F, &nv, &nf);
-    grid_mesh(17, 19, 0.3, 2, &VT, &FT, &nvt, &nft);    /* the target: another meshing */
-    struct closest_point_tree *TT = closest_point_tree_new(VT, nvt, FT, nft);
-    ok(TT != NULL, "target tree");
-    double *P = malloc(sizeof *P * 3 * nv), *P2 = malloc(sizeof *P2 * 3 * nv);
-    pleat(V, nv, P);
-    int before = flipped_faces(P, F, nf, VT, nvt, FT, nft, TT, 1e-3);
-    ok(before >= 10, "the pleat turns faces over (%d)", before);
+    struct pleat_fixture x;
+    pleat_fixture_make(&x);
+    double *V = x.V, *VT = x.VT, *P = x.P, *P2 = x.P2;
+    int *F = x.F, *FT = x.FT, nv = x.nv, nf = x.nf, nvt = x.nvt, nft = x.nft, before = x.before;
+    struct closest_point_tree *TT = x.TT;
     struct nricp_untangle_params p;
     nricp_untangle_defaults(&p);
     p.tol = 1e-3;

@@ -5,6 +5,9 @@
  *                  interior vertices in the plane (seeded).
  *   cylinder_mesh: n around, m rings, open tube (two boundary loops).
  *   icosahedron:   12 vertices, 20 faces, closed.
+ *   pleat_grid:    a grid's vertices pushed sideways into a pleat (the map
+ *                  runs backwards around x = 0.5 where y is mid-range), for
+ *                  the untangling tests; P is #V by 3, given.
  * Arrays are malloc'd; the caller frees V and F. */
 #ifndef STOPMO_TESTMESH_H
 #define STOPMO_TESTMESH_H
@@ -79,5 +82,18 @@ static inline void icosahedron(double **V, int **F, int *nv, int *nf)
     *F = malloc(sizeof f0);
     for (int i = 0; i < 36; i++) (*V)[i] = v0[i];
     for (int i = 0; i < 60; i++) (*F)[i] = f0[i];
+}
+/* x -> x + b(y) g(x): g a sine wave on [0.35, 0.65] steep enough that the
+ * map runs backwards around x = 0.5 where b(y) > 0.6 */
+static inline void pleat_grid(const double *V, int nv, double *P)
+{
+    for (int i = 0; i < nv; i++) {
+        double x = V[3 * i], y = V[3 * i + 1];
+        double g = x > 0.35 && x < 0.65 ? 0.08 * sin(2 * M_PI * (x - 0.35) / 0.3) : 0;
+        double b = y > 0.2 && y < 0.8 ? 0.5 - 0.5 * cos(2 * M_PI * (y - 0.2) / 0.6) : 0;
+        P[3 * i] = x + b * g;
+        P[3 * i + 1] = y;
+        P[3 * i + 2] = 0;
+    }
 }
 #endif
