@@ -527,7 +527,7 @@ const void *mesh_reader_take_map(struct mesh_reader *r, size_t *len)
     return r->map;
 }
 
-int mesh_reader_next_ref(struct mesh_reader *r, const mesh_udouble **X, int *cut)
+int mesh_reader_next_ref(struct mesh_reader *r, const mapped_double **X, int *cut)
 {
     if (!r->map || !r->raw) return cm_seterr("cannot read '%s': not a mapped raw stream", r->name);
     int rc = frame_header(r, cut);
@@ -543,7 +543,7 @@ int mesh_reader_next_ref(struct mesh_reader *r, const mesh_udouble **X, int *cut
      * 5.14; an older kernel refuses and the pages fault as they are read) */
     uintptr_t p0 = (uintptr_t)(r->map + at) & ~(uintptr_t)4095, p1 = (uintptr_t)(r->map + at + nb);
     madvise((void *)p0, p1 - p0, MADV_POPULATE_READ);
-    const mesh_udouble *x = (const mesh_udouble *)(const void *)(r->map + at);
+    const mapped_double *x = (const mapped_double *)(const void *)(r->map + at);
     typedef uint64_t u64u __attribute__((aligned(1)));
     const u64u *U = (const u64u *)(const void *)(r->map + at);
     /* non-finite test of mesh_reader_next */

@@ -18,6 +18,7 @@
  */
 #ifndef CM_MESH_H
 #define CM_MESH_H
+#include "mapped_frames.h"
 #include <stdio.h>
 #ifdef __cplusplus
 extern "C" {
@@ -93,16 +94,15 @@ void mesh_reader_close(struct mesh_reader *r);
  * a text stream, a pipe, a big-endian host, or mmap refused).  Then
  * mesh_reader_next_ref gives each frame's vertex block where it lies in
  * the mapping: *X points to #V by 3 little-endian doubles at any byte
- * alignment (read them through mesh_udouble), valid until the mapping is
- * unmapped; the same checks, results and messages as mesh_reader_next,
+ * alignment (read them through mapped_double, mapped_frames.h), valid
+ * until the mapping is unmapped; the same checks, results and messages as mesh_reader_next,
  * without copying the block.  mesh_reader_next still works on a mapped
  * reader (it copies).  The file must not shrink meanwhile (SIGBUS).
  * mesh_reader_take_map hands the mapping over (*len: its size): the
  * caller munmaps it after its last use of the blocks, and
  * mesh_reader_close leaves it. */
-typedef double mesh_udouble __attribute__((aligned(1)));
 int mesh_reader_map(struct mesh_reader *r);
-int mesh_reader_next_ref(struct mesh_reader *r, const mesh_udouble **X, int *cut);
+int mesh_reader_next_ref(struct mesh_reader *r, const mapped_double **X, int *cut);
 const void *mesh_reader_take_map(struct mesh_reader *r, size_t *len);
 
 /* ---- frame-by-frame writing ---- */

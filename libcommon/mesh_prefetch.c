@@ -72,7 +72,7 @@ int mesh_prefetch_start_ref(struct mesh_prefetch *p, struct mesh_reader *r, int 
 }
 
 /* the next frame as a copy (*X) or by reference (*Xr) */
-static int next(struct mesh_prefetch *p, const double **X, const mesh_udouble **Xr, int *cut)
+static int next(struct mesh_prefetch *p, const double **X, const mapped_double **Xr, int *cut)
 {
     size_t fl = 3 * (size_t)p->r->nv;
     pthread_mutex_lock(&p->lock);
@@ -104,7 +104,7 @@ int mesh_prefetch_next(struct mesh_prefetch *p, const double **X, int *cut)
     return next(p, X, NULL, cut);
 }
 
-int mesh_prefetch_next_ref(struct mesh_prefetch *p, const mesh_udouble **X, int *cut)
+int mesh_prefetch_next_ref(struct mesh_prefetch *p, const mapped_double **X, int *cut)
 {
     if (!p->ptr) return cm_seterr("mesh_prefetch_next_ref: not started by reference");
     return next(p, NULL, X, cut);

@@ -23,7 +23,7 @@ struct mesh_prefetch {
     struct mesh_reader *r;
     int depth;                  /* ring slots */
     double *buf;                /* depth by #V by 3 */
-    const mesh_udouble **ptr;   /* by reference: depth frame pointers (buf unused), else NULL */
+    const mapped_double **ptr;   /* by reference: depth frame pointers (buf unused), else NULL */
     int *cut;                   /* depth */
     int head, count, held;      /* first filled slot, filled slots, caller holds slot head */
     int done, rc, stop;         /* reader finished with rc (0 end, -1 error) */
@@ -49,7 +49,7 @@ int mesh_prefetch_next(struct mesh_prefetch *p, const double **X, int *cut);
  * mesh_prefetch_next_ref gives *X as mesh_reader_next_ref does (valid
  * while the mapping is). */
 int mesh_prefetch_start_ref(struct mesh_prefetch *p, struct mesh_reader *r, int depth);
-int mesh_prefetch_next_ref(struct mesh_prefetch *p, const mesh_udouble **X, int *cut);
+int mesh_prefetch_next_ref(struct mesh_prefetch *p, const mapped_double **X, int *cut);
 
 /* Stop the reader thread (it finishes the frame it is parsing) and free
  * the buffers.  Safe after start failed or twice. */

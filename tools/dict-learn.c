@@ -320,9 +320,9 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
          * while this one sketches them */
         struct mesh_prefetch pf;
         if (mesh_prefetch_start_ref(&pf, &r, 8) < 0) die("%s", cm_errmsg());
-        const mesh_udouble *x;
+        const mapped_double *x;
         while ((rc = mesh_prefetch_next_ref(&pf, &x, &cut)) == 1) {
-            if (replib_sketch_add_ref(S, (const mapped_double *)(const void *)x, cut) < 0)
+            if (replib_sketch_add_ref(S, x, cut) < 0)
                 die("cannot read '%s': %s", r.name, cm_errmsg());
             add_frame_cut(m, cut);
         }
