@@ -8,6 +8,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdatomic.h>
+#include "parallel.h"
 
 /* ------------------------------------------------------------------ */
 /* storage */
@@ -635,36 +637,39 @@ static double path_quality(const struct sub *p, int i, int j, const double *pts,
 }
 
 /* cone_quality_cut of the candidate points of stage II, worked out once per
- * candidate and corner (the pair search asks each many times) */
+ * candidate and corner (the pair search asks each many times).  The caches
+ * of stage II are shared by the threads of the pair search: an entry is
+ * worked out by whichever thread first needs it (two may both do it: the
+ * same value), so they are atomics, written and read without ordering
+ * except the angle, which publishes its pseudo-angle. */
 struct cone_cache {
     const struct sub *sp;
     double *const *C;     /* N: candidate points of each shape */
     int m;
     const int *nc;        /* N: candidates of each shape */
-    struct cone_val { double an, pm; } **v;
+    struct cone_val { _Atomic double an, pm; } **v;
                           /* N: m by nc[s] (corner-major: the pair search runs
                            * over the candidates), the angle (NAN: not yet) and
                            * the smaller pseudo-angle side by side, one stream */
-    double **from, **to;  /* N: m by nc[s], clearance_cut of corner i -> a and of
+    _Atomic double **from, **to;
+                          /* N: m by nc[s], clearance_cut of corner i -> a and of
                            * a -> corner i, in full (NAN: not yet) */
 };
 
 /* cone_quality_cut(corner i, candidate a of shape s, cut), pc =
  * cone_cut_pseudo(cut) */
-static void cone_fill(struct cone_cache *cc, int s, int a, int i, size_t k)
-{
-    double pm = 0;
-    cc->v[s][k].an = cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1);
-    cc->v[s][k].pm = pm;
-}
-
 static inline double cone_cached(struct cone_cache *cc, int s, int a, int i, double pc)
 {
     size_t k = (size_t)i * cc->nc[s] + a;
-    const struct cone_val *x = cc->v[s] + k;
-    if (isnan(x->an)) cone_fill(cc, s, a, i, k);   /* (a NAN angle is worked out again: the same) */
-    double e = x->an;
-    return e == 0 || x->pm < pc ? 0 : e;
+    struct cone_val *x = cc->v[s] + k;
+    double e = atomic_load_explicit(&x->an, memory_order_acquire), pm;
+    if (isnan(e)) {   /* (a NAN angle is worked out again: the same) */
+        pm = 0;
+        e = cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1);
+        atomic_store_explicit(&x->pm, pm, memory_order_relaxed);
+        atomic_store_explicit(&x->an, e, memory_order_release);
+    } else pm = atomic_load_explicit(&x->pm, memory_order_relaxed);
+    return e == 0 || pm < pc ? 0 : e;
 }
 
 /* clearance_cut of the segment corner i -> candidate a (to = 0) or
@@ -674,25 +679,28 @@ static inline double cone_cached(struct cone_cache *cc, int s, int a, int i, dou
 static double clearance_cached(struct cone_cache *cc, int s, int a, int i, int to)
 {
     size_t k = (size_t)i * cc->nc[s] + a;
-    double *x = (to ? cc->to : cc->from)[s] + k;
-    if (isnan(*x)) {
+    _Atomic double *x = (to ? cc->to : cc->from)[s] + k;
+    double v = atomic_load_explicit(x, memory_order_relaxed);
+    if (isnan(v)) {
         const struct sub *p = &cc->sp[s];
         const double *c = cc->C[s] + 2 * a;
-        *x = to ? clearance_cut(p, -1, c, i, V(p, i), 0) : clearance_cut(p, i, V(p, i), -1, c, 0);
+        v = to ? clearance_cut(p, -1, c, i, V(p, i), 0) : clearance_cut(p, i, V(p, i), -1, c, 0);
+        atomic_store_explicit(x, v, memory_order_relaxed);
     }
-    return *x;
+    return v;
 }
 
 /* Visibility tests of stage II and III, made when first asked and kept
  * (0: not asked yet, 1: no, 2: yes): with the cheap tests first, most
- * corner pairs and candidate points are ruled out before their O(m) test. */
+ * corner pairs and candidate points are ruled out before their O(m) test.
+ * Shared by the threads of the pair search, as the cone cache. */
 struct vis_cache {
     const struct sub *sp; /* N shapes of the piece */
     int m;
-    unsigned char *cc;    /* N by m by m: corner i sees corner j */
+    atomic_uchar *cc;     /* N by m by m: corner i sees corner j */
     double *const *C;     /* N: candidate points of each shape */
     const int *nc;        /* N: candidates of each shape */
-    unsigned char **cv;   /* N: candidate a sees corner i, m by nc[s] */
+    atomic_uchar **cv;    /* N: candidate a sees corner i, m by nc[s] */
 };
 
 /* corners i and j of shape s see each other through the piece's interior */
@@ -700,20 +708,215 @@ static int vis_corners(struct vis_cache *vc, int s, int i, int j)
 {
     int m = vc->m;
     if (i > j) { int t = i; i = j; j = t; }
-    unsigned char *x = vc->cc + ((size_t)s * m + i) * m + j;
-    if (!*x) {
+    atomic_uchar *x = vc->cc + ((size_t)s * m + i) * m + j;
+    unsigned char v = atomic_load_explicit(x, memory_order_relaxed);
+    if (!v) {
         const struct sub *p = &vc->sp[s];
-        *x = (i == 0 && j == m - 1) || j < i + 2 ? 1 : 1 + seg_inside(p, i, V(p, i), j, V(p, j));
+        v = (i == 0 && j == m - 1) || j < i + 2 ? 1 : 1 + seg_inside(p, i, V(p, i), j, V(p, j));
+        atomic_store_explicit(x, v, memory_order_relaxed);
     }
-    return *x == 2;
+    return v == 2;
 }
 
 /* candidate point a of shape s sees corner i */
 static int vis_cand(struct vis_cache *vc, int s, int a, int i)
 {
-    unsigned char *x = vc->cv[s] + (size_t)i * vc->nc[s] + a;
-    if (!*x) *x = 1 + seg_inside(&vc->sp[s], i, V(&vc->sp[s], i), -1, vc->C[s] + 2 * a);
-    return *x == 2;
+    atomic_uchar *x = vc->cv[s] + (size_t)i * vc->nc[s] + a;
+    unsigned char v = atomic_load_explicit(x, memory_order_relaxed);
+    if (!v) {
+        v = 1 + seg_inside(&vc->sp[s], i, V(&vc->sp[s], i), -1, vc->C[s] + 2 * a);
+        atomic_store_explicit(x, v, memory_order_relaxed);
+    }
+    return v == 2;
+}
+
+/* The pair search of stages I and II, one row (corner i, every j > i) per
+ * job on c->threads threads.  The split is the pair of the highest score,
+ * the first in (i, j) order among equal ones, as a search of the rows in
+ * order gives it.  Each row keeps its first best pair; pruning uses the
+ * row's best and the best score any row has found so far, lowered by a
+ * relative 1e-9 so that a pair equal to it is still worked out in full:
+ * the pair chosen, its score and its path do not depend on the threads or
+ * on which row finished first (a pair is only pruned if its score is at
+ * most a score some pair has, and the winner's is worked out exactly). */
+#define PAIR_SEARCH_PARALLEL 32   /* pieces of fewer corners: one thread */
+
+struct pair_search {
+    const struct compat *c;
+    const struct sub *sp;   /* N shapes of the piece */
+    int N, m;
+    _Atomic double bound;   /* the best score found so far by any row */
+    double *row_score;      /* m: the row's best score (-1: none) */
+    int *row_j;             /* m: its pair */
+    /* stage II */
+    struct vis_cache *vc;
+    struct cone_cache *cones;
+    double *const *C;       /* N: candidate points of each shape */
+    const int *nc;
+    unsigned char *const *hug;   /* N: hugs_edge of each candidate */
+    double *row_path;       /* m by N by 2: the Steiner point of the row's best pair */
+};
+
+/* the score a pair must beat: the row's best, or just under the best of
+ * any row */
+static double search_bound(struct pair_search *ps, double rowbest)
+{
+    double b = atomic_load_explicit(&ps->bound, memory_order_relaxed);
+    b = b > 0 ? b * (1 - 1e-9) : -1;
+    return rowbest > b ? rowbest : b;
+}
+
+static void search_publish(struct pair_search *ps, double sc)
+{
+    double b = atomic_load_explicit(&ps->bound, memory_order_relaxed);
+    while (sc > b && !atomic_compare_exchange_weak_explicit(&ps->bound, &b, sc, memory_order_relaxed,
+                                                            memory_order_relaxed)) {}
+}
+
+/* stage I, row i: a diagonal i-j inside every shape */
+static void stage1_row(void *ctx, int i)
+{
+    struct pair_search *ps = ctx;
+    const struct sub *sp = ps->sp;
+    int N = ps->N, m = ps->m, mode = ps->c->split_mode, rj = -1;
+    double rowbest = -1;
+    for (int j = i + 2; j < m; j++) {
+        if (i == 0 && j == m - 1) continue;
+        double best = search_bound(ps, rowbest);
+        double q = INFINITY;
+        int all = 1;
+        /* cheapest test first: the cone angles at both ends; stop at
+         * the first shape where the pair does not see itself */
+        for (int s = 0; s < N && all; s++) {
+            if (!incone(&sp[s], i, V(&sp[s], j)) || !incone(&sp[s], j, V(&sp[s], i))) { all = 0; break; }
+            /* a cone angle that cannot beat the best score needs no
+             * atan2 (cone_quality_cut gives 0: rejected below) */
+            double cq = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
+            double qq = cone_quality_cut(&sp[s], i, V(&sp[s], j), cq);
+            if (qq > 0) qq = fmin(qq, cone_quality_cut(&sp[s], j, V(&sp[s], i), cq));
+            /* a diagonal along a run of (nearly) collinear corners cuts off
+             * a zero-width sliver: leave such pieces to the overlay */
+            if (qq < STAGE1_MIN && mode != COMPAT_LINKPATH) { all = 0; break; }
+            /* a pair that cannot beat the best score needs no edge tests */
+            if (pair_score(fmin(q, qq), i, j, m) <= best) { all = 0; break; }
+            /* the clearance first, cut short where the pair cannot win
+             * (score <= best), then the edge tests */
+            double cut = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
+            if (cut >= M_PI / 3) cut = 0;
+            double cl = clearance_cut(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j), cut);
+            if (cut > 0 && cl <= cut) { all = 0; break; }
+            /* a diagonal grazing another corner makes a sliver piece */
+            if (cl < CLEARANCE_MIN && mode != COMPAT_LINKPATH) { all = 0; break; }
+            if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) q = fmin(q, fmin(qq, cl));
+            else all = 0;
+        }
+        if (all) {
+            double sc = pair_score(q, i, j, m);
+            if (sc > best) { rowbest = sc; rj = j; search_publish(ps, sc); }
+        }
+    }
+    ps->row_score[i] = rowbest;
+    ps->row_j[i] = rj;
+}
+
+/* stage II, row i: a path i -> one Steiner point -> j in every shape, the
+ * point the best of the candidates (or a point off the middle of i-j) */
+static void stage2_row(void *ctx, int i)
+{
+    struct pair_search *ps = ctx;
+    const struct sub *sp = ps->sp;
+    int N = ps->N, m = ps->m, rj = -1;
+    double *const *C = ps->C;
+    const int *nc = ps->nc;
+    double rowbest = -1;
+    double *tmp = malloc(2 * (size_t)N * sizeof *tmp);
+    int *ord = malloc(N * sizeof *ord);
+    if (!tmp || !ord) abort();
+    for (int s = 0; s < N; s++) ord[s] = s;
+    for (int j = i + 2; j < m; j++) {
+        if (i == 0 && j == m - 1) continue;
+        double best = search_bound(ps, rowbest);
+        double q = INFINITY;
+        int all = 1;
+        /* a pair whose quality is at most qcut cannot beat the best:
+         * clearances are cut short there (same choice, less work) */
+        double qcut = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
+        if (qcut >= M_PI / 3) qcut = 0;
+        for (int o = 0; o < N && all; o++) {
+            int s = ord[o];
+            double bq = -1;
+            if (vis_corners(ps->vc, s, i, j)) {
+                const double *A = V(&sp[s], i), *B = V(&sp[s], j);
+                double mid[2];
+                if (bent_point(&sp[s], i, A, j, B, mid) == 0) {
+                    bq = hugs_edge(&sp[s], mid) ? -1 : path_quality(&sp[s], i, j, mid, 1, qcut);
+                    if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], i, A, -1, mid, qcut));
+                    if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], -1, mid, j, B, qcut));
+                    tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
+                }
+            }
+            double lastcut = NAN, pc = -1;
+            for (int a = 0; a < nc[s]; a++) {
+                const double *x = C[s] + 2 * a;
+                if (ps->hug[s][a]) continue;
+                double cut = fmax(bq, qcut);
+                if (cut != lastcut) { pc = cone_cut_pseudo(cut); lastcut = cut; }
+                double ci = cone_cached(ps->cones, s, a, i, pc), cj = ci > 0 ? cone_cached(ps->cones, s, a, j, pc) : 0;
+                /* an end angle at most cut > 0 leaves the pair below
+                 * the best either way: no visibility test needed */
+                if (cut > 0 && cj == 0) continue;
+                /* nor one whose end angles cannot beat this shape's
+                 * best path (its quality is at most them) */
+                if (cj > 0 && fmin(ci, cj) <= bq) continue;
+                if (vis_cand(ps->vc, s, a, i) && vis_cand(ps->vc, s, a, j)) {
+                    /* path_quality of corner i -> x -> corner j */
+                    double pq = 0;
+                    if (cj > 0) {
+                        const double *A = V(&sp[s], i), *B = V(&sp[s], j);
+                        double an = ccw_angle(A[0] - x[0], A[1] - x[1], B[0] - x[0], B[1] - x[1]);
+                        pq = fmin(fmin(ci, cj), fmin(an, 2 * M_PI - an));
+                    }
+                    if (pq > cut) pq = fmin(pq, clearance_cached(ps->cones, s, a, i, 0));
+                    if (pq > cut) pq = fmin(pq, clearance_cached(ps->cones, s, a, j, 1));
+                    if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
+                }
+            }
+            if (bq < 0) all = 0;
+            q = fmin(q, bq);
+            /* the other shapes can only lower q: a pair already at
+             * or below the best is out */
+            if (best >= 0 && pair_score(q, i, j, m) <= best) all = 0;
+            /* the shape that ruled the pair out is tried first next
+             * time (the order changes the work, not the result: a pair
+             * that wins has every shape's best path) */
+            if (!all && o > 0) { memmove(ord + 1, ord, o * sizeof *ord); ord[0] = s; }
+        }
+        if (all) {
+            double sc = pair_score(q, i, j, m);
+            if (sc > best) {
+                rowbest = sc; rj = j;
+                memcpy(ps->row_path + 2 * (size_t)N * i, tmp, 2 * (size_t)N * sizeof *tmp);
+                search_publish(ps, sc);
+            }
+        }
+    }
+    free(tmp);
+    free(ord);
+    ps->row_score[i] = rowbest;
+    ps->row_j[i] = rj;
+}
+
+/* the rows of the search on the threads (small pieces: this thread); the
+ * first row of the highest score, -1 if no row has a pair */
+static int pair_search_run(struct pair_search *ps, void (*row)(void *, int), double *best)
+{
+    int m = ps->m, bi = -1;
+    atomic_init(&ps->bound, -1);
+    parallel_run(m, m >= PAIR_SEARCH_PARALLEL ? ps->c->threads : 1, row, ps);
+    *best = -1;
+    for (int i = 0; i < m; i++)
+        if (ps->row_j[i] >= 0 && ps->row_score[i] > *best) { *best = ps->row_score[i]; bi = i; }
+    return bi;
 }
 
 static int choose_split(struct compat *c, const int *poly, int m, struct split *out)
@@ -721,146 +924,51 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     int N = c->N;
     struct sub *sp = malloc(N * sizeof *sp);
     for (int s = 0; s < N; s++) { sp[s].m = m; sp[s].poly = poly; sp[s].X = c->X[s]; }
+    struct pair_search ps = {.c = c, .sp = sp, .N = N, .m = m};
+    ps.row_score = malloc(m * sizeof *ps.row_score);
+    ps.row_j = malloc(m * sizeof *ps.row_j);
     /* stage I */
-    unsigned char *vis = malloc((size_t)N * m * m);
-    memset(vis, 0, (size_t)N * m * m);
-    double best = -1;
-    int bi = -1, bj = -1;
-    for (int i = 0; i < m; i++)
-        for (int j = i + 2; j < m; j++) {
-            if (i == 0 && j == m - 1) continue;
-            double q = INFINITY;
-            int all = 1;
-            /* cheapest test first: the cone angles at both ends; stop at
-             * the first shape where the pair does not see itself (the full
-             * visibility matrix is only needed by stage II, rarely) */
-            for (int s = 0; s < N && all; s++) {
-                if (!incone(&sp[s], i, V(&sp[s], j)) || !incone(&sp[s], j, V(&sp[s], i))) { all = 0; break; }
-                /* a cone angle that cannot beat the best score needs no
-                 * atan2 (cone_quality_cut gives 0: rejected below) */
-                double cq = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
-                double qq = cone_quality_cut(&sp[s], i, V(&sp[s], j), cq);
-                if (qq > 0) qq = fmin(qq, cone_quality_cut(&sp[s], j, V(&sp[s], i), cq));
-                /* a diagonal along a run of (nearly) collinear corners cuts off
-                 * a zero-width sliver: leave such pieces to the overlay */
-                if (qq < STAGE1_MIN && c->split_mode != COMPAT_LINKPATH) { all = 0; break; }
-                /* a pair that cannot beat the best score needs no edge tests */
-                if (pair_score(fmin(q, qq), i, j, m) <= best) { all = 0; break; }
-                /* the clearance first, cut short where the pair cannot win
-                 * (score <= best), then the edge tests */
-                double cut = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
-                if (cut >= M_PI / 3) cut = 0;
-                double cl = clearance_cut(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j), cut);
-                if (cut > 0 && cl <= cut) { all = 0; break; }
-                /* a diagonal grazing another corner makes a sliver piece */
-                if (cl < CLEARANCE_MIN && c->split_mode != COMPAT_LINKPATH) { all = 0; break; }
-                if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) q = fmin(q, fmin(qq, cl));
-                else all = 0;
-            }
-            if (all) {
-                double sc = pair_score(q, i, j, m);
-                if (sc > best) { best = sc; bi = i; bj = j; }
-            }
-        }
+    double best;
+    int bi = pair_search_run(&ps, stage1_row, &best), bj = bi >= 0 ? ps.row_j[bi] : -1;
     if (bi >= 0) {
         out->i = bi; out->j = bj; out->k = 0; out->path = NULL; out->stage = 0;
-        free(vis); free(sp);
+        free(ps.row_score); free(ps.row_j); free(sp);
         return 0;
     }
     /* stage II: candidates per shape; visibility between corners and from
      * candidates to corners is tested when first needed (vis_cache) */
+    atomic_uchar *vis = calloc((size_t)N * m * m, sizeof *vis);
     double **C = malloc(N * sizeof *C);
     int *nc = malloc(N * sizeof *nc);
-    unsigned char **cv = malloc(N * sizeof *cv);
+    atomic_uchar **cv = malloc(N * sizeof *cv);
     unsigned char **hug = malloc(N * sizeof *hug); /* hugs_edge of each candidate */
     for (int s = 0; s < N; s++) {
         nc[s] = candidates(&sp[s], &C[s]);
         hug[s] = malloc((size_t)nc[s] + 1);
         for (int a = 0; a < nc[s]; a++) hug[s][a] = hugs_edge(&sp[s], C[s] + 2 * a);
-        cv[s] = calloc((size_t)nc[s] * m + 1, 1);
+        cv[s] = calloc((size_t)nc[s] * m + 1, sizeof **cv);
     }
     struct vis_cache vc = {sp, m, vis, C, nc, cv};
-    struct cone_cache cones = {sp, C, m, nc, malloc(N * sizeof *cones.v), malloc(N * sizeof(double *)),
-                               malloc(N * sizeof(double *))};
+    struct cone_cache cones = {sp, C, m, nc, malloc(N * sizeof *cones.v), malloc(N * sizeof *cones.from),
+                               malloc(N * sizeof *cones.to)};
     for (int s = 0; s < N; s++) {
         cones.v[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.v);
         cones.from[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.from);
         cones.to[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.to);
         for (size_t k = 0; k < (size_t)nc[s] * m; k++) {
-            cones.from[s][k] = cones.to[s][k] = NAN;
-            cones.v[s][k].an = NAN;
+            atomic_init(&cones.from[s][k], NAN);
+            atomic_init(&cones.to[s][k], NAN);
+            atomic_init(&cones.v[s][k].an, NAN);
+            atomic_init(&cones.v[s][k].pm, 0);
         }
     }
+    ps.vc = &vc; ps.cones = &cones; ps.C = C; ps.nc = nc; ps.hug = hug;
+    ps.row_path = malloc(2 * (size_t)N * m * sizeof *ps.row_path);
+    bi = pair_search_run(&ps, stage2_row, &best);
+    bj = bi >= 0 ? ps.row_j[bi] : -1;
     double *bestpath = malloc(2 * (size_t)N * sizeof *bestpath);
-    double *tmp = malloc(2 * (size_t)N * sizeof *tmp);
-    int *ord = malloc(N * sizeof *ord);
-    for (int s = 0; s < N; s++) ord[s] = s;
-    best = -1;
-    for (int i = 0; i < m; i++)
-        for (int j = i + 2; j < m; j++) {
-            if (i == 0 && j == m - 1) continue;
-            double q = INFINITY;
-            int all = 1;
-            /* a pair whose quality is at most qcut cannot beat the best:
-             * clearances are cut short there (same choice, less work) */
-            double qcut = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
-            if (qcut >= M_PI / 3) qcut = 0;
-            for (int o = 0; o < N && all; o++) {
-                int s = ord[o];
-                double bq = -1;
-                if (vis_corners(&vc, s, i, j)) {
-                    const double *A = V(&sp[s], i), *B = V(&sp[s], j);
-                    double mid[2];
-                    if (bent_point(&sp[s], i, A, j, B, mid) == 0) {
-                        bq = hugs_edge(&sp[s], mid) ? -1 : path_quality(&sp[s], i, j, mid, 1, qcut);
-                        if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], i, A, -1, mid, qcut));
-                        if (bq > qcut) bq = fmin(bq, clearance_cut(&sp[s], -1, mid, j, B, qcut));
-                        tmp[2 * s] = mid[0]; tmp[2 * s + 1] = mid[1];
-                    }
-                }
-                double lastcut = NAN, pc = -1;
-                for (int a = 0; a < nc[s]; a++) {
-                    const double *x = C[s] + 2 * a;
-                    if (hug[s][a]) continue;
-                    double cut = fmax(bq, qcut);
-                    if (cut != lastcut) { pc = cone_cut_pseudo(cut); lastcut = cut; }
-                    double ci = cone_cached(&cones, s, a, i, pc), cj = ci > 0 ? cone_cached(&cones, s, a, j, pc) : 0;
-                    /* an end angle at most cut > 0 leaves the pair below
-                     * the best either way: no visibility test needed */
-                    if (cut > 0 && cj == 0) continue;
-                    /* nor one whose end angles cannot beat this shape's
-                     * best path (its quality is at most them) */
-                    if (cj > 0 && fmin(ci, cj) <= bq) continue;
-                    if (vis_cand(&vc, s, a, i) && vis_cand(&vc, s, a, j)) {
-                        /* path_quality of corner i -> x -> corner j */
-                        double pq = 0;
-                        if (cj > 0) {
-                            const double *A = V(&sp[s], i), *B = V(&sp[s], j);
-                            double an = ccw_angle(A[0] - x[0], A[1] - x[1], B[0] - x[0], B[1] - x[1]);
-                            pq = fmin(fmin(ci, cj), fmin(an, 2 * M_PI - an));
-                        }
-                        if (pq > cut) pq = fmin(pq, clearance_cached(&cones, s, a, i, 0));
-                        if (pq > cut) pq = fmin(pq, clearance_cached(&cones, s, a, j, 1));
-                        if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
-                    }
-                }
-                if (bq < 0) all = 0;
-                q = fmin(q, bq);
-                /* the other shapes can only lower q: a pair already at
-                 * or below the best is out */
-                if (best >= 0 && pair_score(q, i, j, m) <= best) all = 0;
-                /* the shape that ruled the pair out is tried first next
-                 * time (the order changes the work, not the result: a pair
-                 * that wins has every shape's best path) */
-                if (!all && o > 0) { memmove(ord + 1, ord, o * sizeof *ord); ord[0] = s; }
-            }
-            if (all) {
-                double sc = pair_score(q, i, j, m);
-                if (sc > best) { best = sc; bi = i; bj = j; memcpy(bestpath, tmp, 2 * (size_t)N * sizeof *tmp); }
-            }
-        }
-    free(tmp);
-    free(ord);
+    if (bi >= 0) memcpy(bestpath, ps.row_path + 2 * (size_t)N * bi, 2 * (size_t)N * sizeof *bestpath);
+    free(ps.row_path); free(ps.row_score); free(ps.row_j);
     for (int s = 0; s < N; s++) {
         free(cones.v[s]); free(cones.from[s]); free(cones.to[s]);
     }

@@ -47,6 +47,8 @@ struct compat {
     int nrefine;      /* interior vertices added by refinement */
     int stage_count[3]; /* splits made by stage I, II, III (or overlays) */
     int split_mode;   /* COMPAT_OVERLAY (default) or COMPAT_LINKPATH */
+    int threads;      /* the split search runs on this many threads (0: one
+                       * per processor); the mesh does not depend on it */
     int cap;          /* private: allocated vertices */
     int fcap;         /* private: allocated faces */
     /* private: the matched boundary before simplification (for errors) */

@@ -88,9 +88,10 @@ static const char help[] =
 "      --max-vertices K  --refine stops splitting at K vertices (default: the\n"
 "                        triangulation's vertices plus 10 times the simplified\n"
 "                        outline's vertex count)\n"
-"      --threads N       the boundary matching and the refinement's smoothing\n"
-"                        run on N threads (default 0: one per core); the\n"
-"                        output does not depend on N\n"
+"      --threads N       the boundary matching, the triangulation's split\n"
+"                        search and the refinement's smoothing run on N\n"
+"                        threads (default 0: one per core); the output does\n"
+"                        not depend on N\n"
 "      --split MODE      pieces that no common diagonal or single Steiner point\n"
 "                        splits: 'overlay' (default: overlay of the shapes'\n"
 "                        triangulations, always succeeds) or 'linkpath' (the\n"
@@ -356,6 +357,7 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
     }
     int M = cp->nb;
     cp->split_mode = o->split;
+    cp->threads = o->threads;
     compat_simplify(cp, o->err, keep);
     /* the outline actually kept, against the input rings */
     double hmax = 0;
@@ -417,6 +419,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
             "two-sided Hausdorff distance %.3g, in %s)", cp->ring_start[nr], nr, cp->npts, st[0], st[1],
          o->shapes[(int)st[2]]);
     cp->split_mode = o->split;
+    cp->threads = o->threads;
     if (compat_multi_triangulate(cp) < 0) die("%s", cm_errmsg());
     free(parent); free(flipped); free(corr);
     columns_free(&C);
@@ -574,7 +577,9 @@ static void *ahead_run(void *arg)
     struct ahead *a = arg;
     struct candidate *k = a->k;
     a->off.log = a->log;
-    if (build_single(&a->off, a->R, &k->cp) < 0 || (atomic_load(&a->stop) ? 0 : compat_triangulate(&k->cp) < 0)) {
+    int built = build_single(&a->off, a->R, &k->cp) == 0;
+    k->cp.threads = 1;   /* the caller's triangulation has the other threads */
+    if (!built || (atomic_load(&a->stop) ? 0 : compat_triangulate(&k->cp) < 0)) {
         snprintf(a->err, sizeof a->err, "%s", cm_errmsg());
         goto out;
     }
