@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <stdatomic.h>
+#include <stdint.h>
 #include "parallel.h"
 
 /* ------------------------------------------------------------------ */
@@ -374,13 +375,94 @@ static double ccw_pseudo(double y, double x)
     return y >= 0 ? 1 - x / d : 3 + x / d;
 }
 
+struct edge_grid;
+
 struct sub {
     int m;            /* polygon size */
     const int *poly;  /* m vertex ids */
     const double *X;  /* positions of the shape */
+    const struct edge_grid *grid;   /* the edges by cell (NULL: small piece, every edge is tested) */
 };
 
 static const double *V(const struct sub *p, int i) { return p->X + 2 * p->poly[i]; }
+
+/* The edges of a piece in a uniform grid of about m cells over its
+ * bounding box, for seg_inside: a segment is tested against the edges of
+ * the cells it passes, not all m.  Cells are closed and the ranges on both
+ * sides (an edge's bounding box, a segment's span in a row of cells) are
+ * widened by GRID_SLACK cells, so every edge that meets the segment shares
+ * a listed cell with it despite rounding: the exact tests then give the
+ * same answer as the test of every edge.  An edge in several cells the
+ * segment passes is tested once per cell. */
+#define GRID_SLACK 1e-4
+#define GRID_MIN_CORNERS 40   /* smaller pieces: every edge */
+
+struct edge_grid {
+    int gx, gy;       /* cells */
+    double lo[2];     /* the box's lower corner */
+    double inv[2];    /* cells per unit length */
+    int *start;       /* gx * gy + 1: the cell's edges are edge[start[c] .. start[c+1]-1] */
+    int *edge;        /* edge e runs from corner e to corner e + 1 */
+};
+
+/* cell range [*a, *b] of the interval [x0, x1] on axis d, widened */
+static void grid_span(const struct edge_grid *g, int d, double x0, double x1, int *a, int *b)
+{
+    int n = d ? g->gy : g->gx;
+    double u0 = (x0 - g->lo[d]) * g->inv[d] - GRID_SLACK, u1 = (x1 - g->lo[d]) * g->inv[d] + GRID_SLACK;
+    *a = u0 <= 0 ? 0 : u0 >= n - 1 ? n - 1 : (int)u0;
+    *b = u1 <= 0 ? 0 : u1 >= n - 1 ? n - 1 : (int)u1;
+}
+
+static void grid_free(struct edge_grid *g)
+{
+    free(g->start);
+    free(g->edge);
+}
+
+/* the grid of piece p (0; -1 out of memory or a box of no area: use no grid) */
+static int grid_build(struct edge_grid *g, const struct sub *p)
+{
+    int m = p->m;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < m; i++)
+        for (int d = 0; d < 2; d++) {
+            lo[d] = fmin(lo[d], V(p, i)[d]);
+            hi[d] = fmax(hi[d], V(p, i)[d]);
+        }
+    double w = hi[0] - lo[0], h = hi[1] - lo[1];
+    if (!(w > 0 && h > 0)) return -1;
+    double cell = sqrt(w * h / m);
+    g->gx = (int)fmin(fmax(ceil(w / cell), 1), 4 * sqrt(m));
+    g->gy = (int)fmin(fmax(ceil(h / cell), 1), 4 * sqrt(m));
+    g->lo[0] = lo[0]; g->lo[1] = lo[1];
+    g->inv[0] = g->gx / w; g->inv[1] = g->gy / h;
+    size_t nc = (size_t)g->gx * g->gy;
+    g->start = calloc(nc + 1, sizeof *g->start);
+    g->edge = NULL;
+    if (!g->start) return -1;
+    for (int pass = 0; pass < 2; pass++) {   /* count, then fill */
+        for (int e = 0; e < m; e++) {
+            const double *a = V(p, e), *b = V(p, (e + 1) % m);
+            int x0, x1, y0, y1;
+            grid_span(g, 0, fmin(a[0], b[0]), fmax(a[0], b[0]), &x0, &x1);
+            grid_span(g, 1, fmin(a[1], b[1]), fmax(a[1], b[1]), &y0, &y1);
+            for (int y = y0; y <= y1; y++)
+                for (int x = x0; x <= x1; x++) {
+                    size_t c = (size_t)y * g->gx + x;
+                    if (pass) g->edge[g->start[c]++] = e;
+                    else g->start[c + 1]++;
+                }
+        }
+        if (pass) break;
+        for (size_t c = 0; c < nc; c++) g->start[c + 1] += g->start[c];
+        if (!(g->edge = malloc(((size_t)g->start[nc] + 1) * sizeof *g->edge))) { free(g->start); return -1; }
+    }
+    /* the fill advanced each start to the next cell's: shift back */
+    memmove(g->start + 1, g->start, nc * sizeof *g->start);
+    g->start[0] = 0;
+    return 0;
+}
 
 /* direction q strictly inside the interior angle at polygon corner i
  * (exact predicates: a corner whose neighbours are collinear with it to
@@ -443,6 +525,37 @@ static int seg_inside(const struct sub *p, int i, const double *P, int j, const 
     int m = p->m;
     /* edges whose bounding box misses the segment's cannot meet it */
     double lo0 = fmin(P[0], Q[0]), hi0 = fmax(P[0], Q[0]), lo1 = fmin(P[1], Q[1]), hi1 = fmax(P[1], Q[1]);
+    const struct edge_grid *g = p->grid;
+    if (g) {   /* the cells the segment passes, row by row */
+        int y0, y1;
+        grid_span(g, 1, lo1, hi1, &y0, &y1);
+        double dy = Q[1] - P[1];
+        for (int y = y0; y <= y1; y++) {
+            /* the segment's x range within the row's band of y (widened) */
+            double b0 = g->lo[1] + (y - GRID_SLACK) / g->inv[1], b1 = g->lo[1] + (y + 1 + GRID_SLACK) / g->inv[1];
+            double xa = lo0, xb = hi0;
+            if (dy != 0) {
+                double t0 = (fmax(b0, lo1) - P[1]) / dy, t1 = (fmin(b1, hi1) - P[1]) / dy;
+                double u0 = P[0] + t0 * (Q[0] - P[0]), u1 = P[0] + t1 * (Q[0] - P[0]);
+                xa = fmax(lo0, fmin(u0, u1));
+                xb = fmin(hi0, fmax(u0, u1));
+            }
+            int x0, x1;
+            grid_span(g, 0, xa, xb, &x0, &x1);
+            for (int x = x0; x <= x1; x++) {
+                size_t c = (size_t)y * g->gx + x;
+                for (int k = g->start[c]; k < g->start[c + 1]; k++) {
+                    int e = g->edge[k], f = (e + 1) % m;
+                    if (e == i || f == i || e == j || f == j) continue;
+                    const double *a = V(p, e), *b = V(p, f);
+                    if ((a[0] < lo0 && b[0] < lo0) || (a[0] > hi0 && b[0] > hi0) || (a[1] < lo1 && b[1] < lo1) ||
+                        (a[1] > hi1 && b[1] > hi1)) continue;
+                    if (segments_meet(P, Q, a, b)) return 0;
+                }
+            }
+        }
+        return 1;
+    }
     for (int e = 0; e < m; e++) {
         int f = (e + 1) % m;
         if (e == i || f == i || e == j || f == j) continue;
@@ -492,6 +605,34 @@ static double clearance_cut(const struct sub *p, int i, const double *P, int j, 
         if (pmin < pcut) break;
     }
     return pmin == INFINITY ? M_PI : atan2(my, mx);
+}
+
+/* clearance_cut(p, i, V(p, i), -1, q, 0) in *from and clearance_cut(p,
+ * -1, q, i, V(p, i), 0) in *to, in one pass: the two see the same corners
+ * and the same two angles at each (the second's terms are the first's
+ * swapped, bit for bit: negation is exact), so the smallest is the same;
+ * each keeps the first smallest term in its own order for the atan2. */
+static void clearance_pair(const struct sub *p, int i, const double *q, double *from, double *to)
+{
+    const double *P = V(p, i);
+    double ux = q[0] - P[0], uy = q[1] - P[1];
+    double pf = INFINITY, fy = 0, fx = -1, pt = INFINITY, ty = 0, tx = -1;
+    int m = p->m;
+    for (int v = 0; v < m; v++) {
+        if (v == i || v == (i + 1) % m || v == (i + m - 1) % m) continue;
+        const double *x = V(p, v);
+        double ax = x[0] - P[0], ay = x[1] - P[1], bx = x[0] - q[0], by = x[1] - q[1];
+        double y1 = fabs(ux * ay - uy * ax), x1 = ux * ax + uy * ay;
+        double y2 = fabs(ux * by - uy * bx), x2 = -(ux * bx + uy * by);
+        double d1 = fabs(x1) + y1, d2 = fabs(x2) + y2;
+        double p1 = d1 > 0 ? 1 - x1 / d1 : 0, p2 = d2 > 0 ? 1 - x2 / d2 : 0;
+        if (p1 < pf) { pf = p1; fy = y1; fx = x1; }
+        if (p2 < pf) { pf = p2; fy = y2; fx = x2; }
+        if (p2 < pt) { pt = p2; ty = y2; tx = x2; }
+        if (p1 < pt) { pt = p1; ty = y1; tx = x1; }
+    }
+    *from = pf == INFINITY ? M_PI : atan2(fy, fx);
+    *to = pt == INFINITY ? M_PI : (pt == pf && ty == fy && tx == fx) ? *from : atan2(ty, tx);
 }
 
 /* Does the free point x lie within STAGE1_MIN of an edge, as an angle:
@@ -636,6 +777,8 @@ static double path_quality(const struct sub *p, int i, int j, const double *pts,
     return q;
 }
 
+#define PAIR_SEARCH_PARALLEL 32   /* pieces of fewer corners: one thread */
+
 /* cone_quality_cut of the candidate points of stage II, worked out once per
  * candidate and corner (the pair search asks each many times).  The caches
  * of stage II are shared by the threads of the pair search: an entry is
@@ -681,26 +824,30 @@ static double clearance_cached(struct cone_cache *cc, int s, int a, int i, int t
     size_t k = (size_t)i * cc->nc[s] + a;
     _Atomic double *x = (to ? cc->to : cc->from)[s] + k;
     double v = atomic_load_explicit(x, memory_order_relaxed);
-    if (isnan(v)) {
-        const struct sub *p = &cc->sp[s];
-        const double *c = cc->C[s] + 2 * a;
-        v = to ? clearance_cut(p, -1, c, i, V(p, i), 0) : clearance_cut(p, i, V(p, i), -1, c, 0);
-        atomic_store_explicit(x, v, memory_order_relaxed);
+    if (isnan(v)) {   /* both ways at once (clearance_pair) */
+        double f, t;
+        clearance_pair(&cc->sp[s], i, cc->C[s] + 2 * a, &f, &t);
+        atomic_store_explicit(cc->from[s] + k, f, memory_order_relaxed);
+        atomic_store_explicit(cc->to[s] + k, t, memory_order_relaxed);
+        v = to ? t : f;
     }
     return v;
 }
 
-/* Visibility tests of stage II and III, made when first asked and kept
- * (0: not asked yet, 1: no, 2: yes): with the cheap tests first, most
- * corner pairs and candidate points are ruled out before their O(m) test.
- * Shared by the threads of the pair search, as the cone cache. */
+/* Visibility of stage II and III.  Between corners: tested when first
+ * asked and kept (0: not asked yet, 1: no, 2: yes; shared by the threads
+ * of the pair search, as the cone cache).  From candidates to corners:
+ * every candidate against every corner, up front (vis_bits_build), a bit
+ * set per corner, so that the pair search runs over the candidates both
+ * corners see (an AND of two rows) instead of testing each. */
 struct vis_cache {
     const struct sub *sp; /* N shapes of the piece */
     int m;
     atomic_uchar *cc;     /* N by m by m: corner i sees corner j */
     double *const *C;     /* N: candidate points of each shape */
     const int *nc;        /* N: candidates of each shape */
-    atomic_uchar **cv;    /* N: candidate a sees corner i, m by nc[s] */
+    int *words;           /* N: 64-bit words per row, (nc[s] + 63) / 64 */
+    uint64_t **bits;      /* N: m by words[s]: bit a of row i, candidate a sees corner i */
 };
 
 /* corners i and j of shape s see each other through the piece's interior */
@@ -718,16 +865,38 @@ static int vis_corners(struct vis_cache *vc, int s, int i, int j)
     return v == 2;
 }
 
-/* candidate point a of shape s sees corner i */
-static int vis_cand(struct vis_cache *vc, int s, int a, int i)
+/* the candidates of shape s that see corner i, a bit each */
+static const uint64_t *vis_row(const struct vis_cache *vc, int s, int i)
 {
-    atomic_uchar *x = vc->cv[s] + (size_t)i * vc->nc[s] + a;
-    unsigned char v = atomic_load_explicit(x, memory_order_relaxed);
-    if (!v) {
-        v = 1 + seg_inside(&vc->sp[s], i, V(&vc->sp[s], i), -1, vc->C[s] + 2 * a);
-        atomic_store_explicit(x, v, memory_order_relaxed);
+    return vc->bits[s] + (size_t)i * vc->words[s];
+}
+
+/* candidate point a of shape s sees corner i */
+static int vis_cand(const struct vis_cache *vc, int s, int a, int i)
+{
+    return vis_row(vc, s, i)[a >> 6] >> (a & 63) & 1;
+}
+
+/* job (shape, corner) of the bit sets: k = s * m + i */
+static void vis_bits_job(void *ctx, int k)
+{
+    struct vis_cache *vc = ctx;
+    int s = k / vc->m, i = k % vc->m;
+    const struct sub *p = &vc->sp[s];
+    uint64_t *row = vc->bits[s] + (size_t)i * vc->words[s];
+    for (int a = 0; a < vc->nc[s]; a++)
+        if (seg_inside(p, i, V(p, i), -1, vc->C[s] + 2 * a)) row[a >> 6] |= (uint64_t)1 << (a & 63);
+}
+
+/* fills vc->words and vc->bits (zeroed, N by m by words) on threads */
+static int vis_bits_build(struct vis_cache *vc, int N, int threads)
+{
+    for (int s = 0; s < N; s++) {
+        vc->words[s] = (vc->nc[s] + 63) / 64;
+        if (!(vc->bits[s] = calloc((size_t)vc->m * vc->words[s] + 1, sizeof **vc->bits))) return -1;
     }
-    return v == 2;
+    parallel_run(N * vc->m, vc->m >= PAIR_SEARCH_PARALLEL ? threads : 1, vis_bits_job, vc);
+    return 0;
 }
 
 /* The pair search of stages I and II, one row (corner i, every j > i) per
@@ -739,8 +908,6 @@ static int vis_cand(struct vis_cache *vc, int s, int a, int i)
  * the pair chosen, its score and its path do not depend on the threads or
  * on which row finished first (a pair is only pruned if its score is at
  * most a score some pair has, and the winner's is worked out exactly). */
-#define PAIR_SEARCH_PARALLEL 32   /* pieces of fewer corners: one thread */
-
 struct pair_search {
     const struct compat *c;
     const struct sub *sp;   /* N shapes of the piece */
@@ -753,7 +920,7 @@ struct pair_search {
     struct cone_cache *cones;
     double *const *C;       /* N: candidate points of each shape */
     const int *nc;
-    unsigned char *const *hug;   /* N: hugs_edge of each candidate */
+    uint64_t *const *nohug;  /* N: a bit per candidate, set if it does not hug an edge (hugs_edge) */
     double *row_path;       /* m by N by 2: the Steiner point of the row's best pair */
 };
 
@@ -827,7 +994,6 @@ static void stage2_row(void *ctx, int i)
     const struct sub *sp = ps->sp;
     int N = ps->N, m = ps->m, rj = -1;
     double *const *C = ps->C;
-    const int *nc = ps->nc;
     double rowbest = -1;
     double *tmp = malloc(2 * (size_t)N * sizeof *tmp);
     int *ord = malloc(N * sizeof *ord);
@@ -856,9 +1022,13 @@ static void stage2_row(void *ctx, int i)
                 }
             }
             double lastcut = NAN, pc = -1;
-            for (int a = 0; a < nc[s]; a++) {
+            /* the candidates both corners see, in order, except those
+             * that hug an edge */
+            const uint64_t *vi = vis_row(ps->vc, s, i), *vj = vis_row(ps->vc, s, j), *nh = ps->nohug[s];
+            for (int w = 0; w < ps->vc->words[s]; w++)
+            for (uint64_t bits = vi[w] & vj[w] & nh[w]; bits; bits &= bits - 1) {
+                int a = 64 * w + __builtin_ctzll(bits);
                 const double *x = C[s] + 2 * a;
-                if (ps->hug[s][a]) continue;
                 double cut = fmax(bq, qcut);
                 if (cut != lastcut) { pc = cone_cut_pseudo(cut); lastcut = cut; }
                 double ci = cone_cached(ps->cones, s, a, i, pc), cj = ci > 0 ? cone_cached(ps->cones, s, a, j, pc) : 0;
@@ -868,18 +1038,16 @@ static void stage2_row(void *ctx, int i)
                 /* nor one whose end angles cannot beat this shape's
                  * best path (its quality is at most them) */
                 if (cj > 0 && fmin(ci, cj) <= bq) continue;
-                if (vis_cand(ps->vc, s, a, i) && vis_cand(ps->vc, s, a, j)) {
-                    /* path_quality of corner i -> x -> corner j */
-                    double pq = 0;
-                    if (cj > 0) {
-                        const double *A = V(&sp[s], i), *B = V(&sp[s], j);
-                        double an = ccw_angle(A[0] - x[0], A[1] - x[1], B[0] - x[0], B[1] - x[1]);
-                        pq = fmin(fmin(ci, cj), fmin(an, 2 * M_PI - an));
-                    }
-                    if (pq > cut) pq = fmin(pq, clearance_cached(ps->cones, s, a, i, 0));
-                    if (pq > cut) pq = fmin(pq, clearance_cached(ps->cones, s, a, j, 1));
-                    if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
+                /* path_quality of corner i -> x -> corner j */
+                double pq = 0;
+                if (cj > 0) {
+                    const double *A = V(&sp[s], i), *B = V(&sp[s], j);
+                    double an = ccw_angle(A[0] - x[0], A[1] - x[1], B[0] - x[0], B[1] - x[1]);
+                    pq = fmin(fmin(ci, cj), fmin(an, 2 * M_PI - an));
                 }
+                if (pq > cut) pq = fmin(pq, clearance_cached(ps->cones, s, a, i, 0));
+                if (pq > cut) pq = fmin(pq, clearance_cached(ps->cones, s, a, j, 1));
+                if (pq > bq) { bq = pq; tmp[2 * s] = C[s][2 * a]; tmp[2 * s + 1] = C[s][2 * a + 1]; }
             }
             if (bq < 0) all = 0;
             q = fmin(q, bq);
@@ -923,7 +1091,11 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
 {
     int N = c->N;
     struct sub *sp = malloc(N * sizeof *sp);
-    for (int s = 0; s < N; s++) { sp[s].m = m; sp[s].poly = poly; sp[s].X = c->X[s]; }
+    struct edge_grid *grid = malloc(N * sizeof *grid);
+    for (int s = 0; s < N; s++) {
+        sp[s].m = m; sp[s].poly = poly; sp[s].X = c->X[s]; sp[s].grid = NULL;
+        if (m >= GRID_MIN_CORNERS && grid_build(&grid[s], &sp[s]) == 0) sp[s].grid = &grid[s];
+    }
     struct pair_search ps = {.c = c, .sp = sp, .N = N, .m = m};
     ps.row_score = malloc(m * sizeof *ps.row_score);
     ps.row_j = malloc(m * sizeof *ps.row_j);
@@ -932,7 +1104,9 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     int bi = pair_search_run(&ps, stage1_row, &best), bj = bi >= 0 ? ps.row_j[bi] : -1;
     if (bi >= 0) {
         out->i = bi; out->j = bj; out->k = 0; out->path = NULL; out->stage = 0;
-        free(ps.row_score); free(ps.row_j); free(sp);
+        free(ps.row_score); free(ps.row_j);
+        for (int s = 0; s < N; s++) if (sp[s].grid) grid_free(&grid[s]);
+        free(grid); free(sp);
         return 0;
     }
     /* stage II: candidates per shape; visibility between corners and from
@@ -940,15 +1114,15 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     atomic_uchar *vis = calloc((size_t)N * m * m, sizeof *vis);
     double **C = malloc(N * sizeof *C);
     int *nc = malloc(N * sizeof *nc);
-    atomic_uchar **cv = malloc(N * sizeof *cv);
-    unsigned char **hug = malloc(N * sizeof *hug); /* hugs_edge of each candidate */
+    uint64_t **nohug = malloc(N * sizeof *nohug);
     for (int s = 0; s < N; s++) {
         nc[s] = candidates(&sp[s], &C[s]);
-        hug[s] = malloc((size_t)nc[s] + 1);
-        for (int a = 0; a < nc[s]; a++) hug[s][a] = hugs_edge(&sp[s], C[s] + 2 * a);
-        cv[s] = calloc((size_t)nc[s] * m + 1, sizeof **cv);
+        nohug[s] = calloc((size_t)(nc[s] + 63) / 64 + 1, sizeof **nohug);
+        for (int a = 0; a < nc[s]; a++)
+            if (!hugs_edge(&sp[s], C[s] + 2 * a)) nohug[s][a >> 6] |= (uint64_t)1 << (a & 63);
     }
-    struct vis_cache vc = {sp, m, vis, C, nc, cv};
+    struct vis_cache vc = {sp, m, vis, C, nc, malloc(N * sizeof *vc.words), calloc(N, sizeof *vc.bits)};
+    if (vis_bits_build(&vc, N, c->threads) < 0) abort();
     struct cone_cache cones = {sp, C, m, nc, malloc(N * sizeof *cones.v), malloc(N * sizeof *cones.from),
                                malloc(N * sizeof *cones.to)};
     for (int s = 0; s < N; s++) {
@@ -962,7 +1136,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
             atomic_init(&cones.v[s][k].pm, 0);
         }
     }
-    ps.vc = &vc; ps.cones = &cones; ps.C = C; ps.nc = nc; ps.hug = hug;
+    ps.vc = &vc; ps.cones = &cones; ps.C = C; ps.nc = nc; ps.nohug = nohug;
     ps.row_path = malloc(2 * (size_t)N * m * sizeof *ps.row_path);
     bi = pair_search_run(&ps, stage2_row, &best);
     bj = bi >= 0 ? ps.row_j[bi] : -1;
@@ -1109,8 +1283,10 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         free(dist); free(cc);
     }
 done:
-    for (int s = 0; s < N; s++) { free(C[s]); free(cv[s]); free(hug[s]); }
-    free(C); free(nc); free(cv); free(hug); free(vis); free(sp);
+    for (int s = 0; s < N; s++) { free(C[s]); free(vc.bits[s]); free(nohug[s]); }
+    free(C); free(nc); free(vc.bits); free(vc.words); free(nohug); free(vis);
+    for (int s = 0; s < N; s++) if (sp[s].grid) grid_free(&grid[s]);
+    free(grid); free(sp);
     return rc;
 }
 
