@@ -1094,7 +1094,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     struct edge_grid *grid = malloc(N * sizeof *grid);
     for (int s = 0; s < N; s++) {
         sp[s].m = m; sp[s].poly = poly; sp[s].X = c->X[s]; sp[s].grid = NULL;
-        if (m >= GRID_MIN_CORNERS && grid_build(&grid[s], &sp[s]) == 0) sp[s].grid = &grid[s];
+        if (m >= GRID_MIN_CORNERS && !c->exhaustive && grid_build(&grid[s], &sp[s]) == 0) sp[s].grid = &grid[s];
     }
     struct pair_search ps = {.c = c, .sp = sp, .N = N, .m = m};
     ps.row_score = malloc(m * sizeof *ps.row_score);

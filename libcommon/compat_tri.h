@@ -49,6 +49,9 @@ struct compat {
     int split_mode;   /* COMPAT_OVERLAY (default) or COMPAT_LINKPATH */
     int threads;      /* the split search runs on this many threads (0: one
                        * per processor); the mesh does not depend on it */
+    int exhaustive;   /* 1: the split search's inside tests try every edge of
+                       * a piece, not the edges of a grid's cells (tests: the
+                       * mesh is the same) */
     int cap;          /* private: allocated vertices */
     int fcap;         /* private: allocated faces */
     /* private: the matched boundary before simplification (for errors) */
