@@ -319,7 +319,15 @@ static double search_start(const struct outline *A, double sA, const struct outl
     cost = realloc(cost, 3 * (2 * r + 1) * sizeof *cost);
     for (int k = 0; k < 3; k++) {
         if (!isfinite(best[k])) continue;
-        for (int d = -r; d <= r; d++) s[ns++] = wrap((bi[k] * r + d) * B->L / M, B->L);
+        for (int d = -r; d <= r; d++) {
+            /* the three best are often neighbours: a start already in
+             * the list is aligned once (the first of equal costs wins
+             * either way) */
+            double t = wrap((bi[k] * r + d) * B->L / M, B->L);
+            int seen = 0;
+            for (int u = 0; u < ns && !seen; u++) seen = s[u] == t;
+            if (!seen) s[ns++] = t;
+        }
     }
     struct start_jobs fj = {.A = A, .B = B, .a = &a, .ds = ds, .M = M, .Mc = Mc, .s = s, .cost = cost};
     parallel_run(ns, threads, start_job, &fj);
