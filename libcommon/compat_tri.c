@@ -922,6 +922,8 @@ struct pair_search {
     const int *nc;
     uint64_t *const *nohug;  /* N: a bit per candidate, set if it does not hug an edge (hugs_edge) */
     double *row_path;       /* m by N by 2: the Steiner point of the row's best pair */
+    double *row_tmp;        /* m by N by 2: the row's scratch for its current pair */
+    int *row_ord;           /* m by N: the row's order of the shapes */
 };
 
 /* the score a pair must beat: the row's best, or just under the best of
@@ -995,9 +997,8 @@ static void stage2_row(void *ctx, int i)
     int N = ps->N, m = ps->m, rj = -1;
     double *const *C = ps->C;
     double rowbest = -1;
-    double *tmp = malloc(2 * (size_t)N * sizeof *tmp);
-    int *ord = malloc(N * sizeof *ord);
-    if (!tmp || !ord) abort();
+    double *tmp = ps->row_tmp + 2 * (size_t)N * i;
+    int *ord = ps->row_ord + (size_t)N * i;
     for (int s = 0; s < N; s++) ord[s] = s;
     for (int j = i + 2; j < m; j++) {
         if (i == 0 && j == m - 1) continue;
@@ -1068,8 +1069,6 @@ static void stage2_row(void *ctx, int i)
             }
         }
     }
-    free(tmp);
-    free(ord);
     ps->row_score[i] = rowbest;
     ps->row_j[i] = rj;
 }
@@ -1122,7 +1121,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
             if (!hugs_edge(&sp[s], C[s] + 2 * a)) nohug[s][a >> 6] |= (uint64_t)1 << (a & 63);
     }
     struct vis_cache vc = {sp, m, vis, C, nc, malloc(N * sizeof *vc.words), calloc(N, sizeof *vc.bits)};
-    if (vis_bits_build(&vc, N, c->threads) < 0) abort();
+    int oom = vis_bits_build(&vc, N, c->threads) < 0;
     struct cone_cache cones = {sp, C, m, nc, malloc(N * sizeof *cones.v), malloc(N * sizeof *cones.from),
                                malloc(N * sizeof *cones.to)};
     for (int s = 0; s < N; s++) {
@@ -1138,16 +1137,20 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     }
     ps.vc = &vc; ps.cones = &cones; ps.C = C; ps.nc = nc; ps.nohug = nohug;
     ps.row_path = malloc(2 * (size_t)N * m * sizeof *ps.row_path);
-    bi = pair_search_run(&ps, stage2_row, &best);
+    ps.row_tmp = malloc(2 * (size_t)N * m * sizeof *ps.row_tmp);
+    ps.row_ord = malloc((size_t)N * m * sizeof *ps.row_ord);
+    oom |= !ps.row_path || !ps.row_tmp || !ps.row_ord;
+    bi = oom ? -1 : pair_search_run(&ps, stage2_row, &best);
     bj = bi >= 0 ? ps.row_j[bi] : -1;
     double *bestpath = malloc(2 * (size_t)N * sizeof *bestpath);
     if (bi >= 0) memcpy(bestpath, ps.row_path + 2 * (size_t)N * bi, 2 * (size_t)N * sizeof *bestpath);
-    free(ps.row_path); free(ps.row_score); free(ps.row_j);
+    free(ps.row_path); free(ps.row_tmp); free(ps.row_ord); free(ps.row_score); free(ps.row_j);
     for (int s = 0; s < N; s++) {
         free(cones.v[s]); free(cones.from[s]); free(cones.to[s]);
     }
     free(cones.v); free(cones.from); free(cones.to);
     int rc = 0;
+    if (oom) { free(bestpath); rc = cm_seterr("out of memory"); goto done; }
     /* a Steiner point squeezed into a sliver only makes thinner pieces: below
      * STAGE2_MIN the overlay does better */
     if (bi >= 0 && (best >= STAGE2_MIN || c->split_mode == COMPAT_LINKPATH)) {
