@@ -1327,21 +1327,30 @@ struct dcols_job {
     const double *Zc;
     const double *ZcT;          /* zdim by 8: Zc transposed, zero-padded (dots_avx512), or NULL */
     double *dist;
+    const int *rows;            /* with ZcT: only these nrows frames (dcols_pruned), or NULL: all */
+    int nrows;
 };
 
-/* dist[c n + f] = z_f . zc_c for frames [f0, f1), c < L <= 8: the candidates
- * in the 8 lanes of a vector, the coordinates in order, one fused
- * multiply-add each from 0: the operations of OpenBLAS's AVX-512 and AVX2
- * DGEMM kernels for an inner dimension they do not split (<= 256: checked
- * bitwise, the same numbers), without packing Z for every call (1.7x
- * faster for the 7 candidates of a greedy start at 2,653 x 128). */
+/* dist[c n + f] = z_f . zc_c for the rows f = rows[i] of Z, i in [i0, i1)
+ * (rows NULL: f = i; n: the row stride of dist, > every f), c < L <= 8: the
+ * candidates in the 8 lanes of a vector, the coordinates in order, one
+ * fused multiply-add each from 0: the operations of OpenBLAS's AVX-512 and
+ * AVX2 DGEMM kernels for an inner dimension they do not split (<= 256:
+ * checked bitwise, the same numbers), without packing Z for every call
+ * (1.7x faster for the 7 candidates of a greedy start at 2,653 x 128).
+ * Each row's sums are its own, so which rows are taken together does not
+ * change a bit. */
 __attribute__((target("avx512f,fma")))
-static void dots_avx512(const double *Z, int zd, int f0, int f1, const double *ZcT, int L, int n, double *dist)
+static void dots_avx512(const double *Z, int zd, const int *rows, int i0, int i1, const double *ZcT, int L, int n,
+                        double *dist)
 {
-    int f = f0;
+    int i = i0;
     double t[32] __attribute__((aligned(64)));
-    for (; f + 4 <= f1; f += 4) {
-        const double *z0 = Z + (size_t)f * zd, *z1 = z0 + zd, *z2 = z1 + zd, *z3 = z2 + zd;
+#define ROW_(j) (rows ? rows[j] : (j))
+    for (; i + 4 <= i1; i += 4) {
+        int f[4] = {ROW_(i), ROW_(i + 1), ROW_(i + 2), ROW_(i + 3)};
+        const double *z0 = Z + (size_t)f[0] * zd, *z1 = Z + (size_t)f[1] * zd, *z2 = Z + (size_t)f[2] * zd,
+                     *z3 = Z + (size_t)f[3] * zd;
         __m512d a0 = _mm512_setzero_pd(), a1 = a0, a2 = a0, a3 = a0;
         for (int k = 0; k < zd; k++) {
             __m512d b = _mm512_load_pd(ZcT + (size_t)k * 8);
@@ -1352,15 +1361,17 @@ static void dots_avx512(const double *Z, int zd, int f0, int f1, const double *Z
         }
         _mm512_store_pd(t, a0); _mm512_store_pd(t + 8, a1); _mm512_store_pd(t + 16, a2); _mm512_store_pd(t + 24, a3);
         for (int c = 0; c < L; c++)
-            for (int q = 0; q < 4; q++) dist[(size_t)c * n + f + q] = t[8 * q + c];
+            for (int q = 0; q < 4; q++) dist[(size_t)c * n + f[q]] = t[8 * q + c];
     }
-    for (; f < f1; f++) {
+    for (; i < i1; i++) {
+        int f = ROW_(i);
         const double *z0 = Z + (size_t)f * zd;
         __m512d a0 = _mm512_setzero_pd();
         for (int k = 0; k < zd; k++) a0 = _mm512_fmadd_pd(_mm512_set1_pd(z0[k]), _mm512_load_pd(ZcT + (size_t)k * 8), a0);
         _mm512_store_pd(t, a0);
         for (int c = 0; c < L; c++) dist[(size_t)c * n + f] = t[c];
     }
+#undef ROW_
 }
 
 static void dcols_block(void *ctx, int i)
@@ -1368,13 +1379,29 @@ static void dcols_block(void *ctx, int i)
     const struct dcols_job *j = ctx;
     const struct replib_data *D = j->D;
     int n = D->n, zd = D->zdim, L = j->L, f0 = 0, f1 = n;
+    if (j->rows) {
+        /* a block of the listed frames (dcols_pruned) */
+        int i0 = 0, i1 = j->nrows;
+        if (i >= 0) chunk_rows(j->nrows, i, &i0, &i1);
+        if (i1 <= i0) return;
+        dots_avx512(D->Z, zd, j->rows, i0, i1, j->ZcT, L, n, j->dist);
+        for (int c = 0; c < L; c++) {
+            double *dc = j->dist + (size_t)c * n, zg = D->zz[j->g[c]];
+            for (int r = i0; r < i1; r++) {
+                int f = j->rows[r];
+                double v = D->zz[f] + zg - 2 * dc[f];
+                dc[f] = v > 0 ? v : 0;
+            }
+        }
+        return;
+    }
     if (i >= 0) chunk_rows(n, i, &f0, &f1);
     if (f1 <= f0) return;
     if (D->K) {
         for (int c = 0; c < L; c++)
             memcpy(j->dist + (size_t)c * n + f0, D->K + (size_t)j->g[c] * D->N + f0, sizeof(double) * (f1 - f0));
     } else if (j->ZcT) {
-        dots_avx512(D->Z, zd, f0, f1, j->ZcT, L, n, j->dist);
+        dots_avx512(D->Z, zd, NULL, f0, f1, j->ZcT, L, n, j->dist);
     } else {
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, L, f1 - f0, zd, 1.0, j->Zc, zd, D->Z + (size_t)f0 * zd, zd,
                     0.0, j->dist + f0, n);
@@ -1403,27 +1430,135 @@ static int dots_avx512_ok(void)
     return ok;
 }
 
+/* ZcT (zdim by 8, 64-byte aligned, zero-padded) for dots_avx512 with the
+ * L <= 8 rows g of Z, or NULL (allocation) */
+static double *candidates_t(const struct replib_data *D, const int *g, int L)
+{
+    int zd = D->zdim;
+    double *ZcT = aligned_alloc(64, sizeof(double) * 8 * (size_t)zd);
+    if (ZcT)
+        for (int k = 0; k < zd; k++)
+            for (int c = 0; c < 8; c++) ZcT[(size_t)k * 8 + c] = c < L ? D->Z[(size_t)g[c] * zd + k] : 0;
+    return ZcT;
+}
+
 static int dcols(const struct replib_data *D, struct team *t, const int *g, int L, double *dist)
 {
     int zd = D->zdim;
     double *Zc = NULL, *ZcT = NULL;
     if (!D->K && L <= 8 && zd <= REPLIB_TEAM_MAXK && dots_avx512_ok()) {
-        ZcT = aligned_alloc(64, sizeof(double) * 8 * (size_t)zd);
-        if (!ZcT) return -1;
-        for (int k = 0; k < zd; k++)
-            for (int c = 0; c < 8; c++) ZcT[(size_t)k * 8 + c] = c < L ? D->Z[(size_t)g[c] * zd + k] : 0;
+        if (!(ZcT = candidates_t(D, g, L))) return -1;
     } else if (!D->K) {
         Zc = malloc(sizeof(double) * (size_t)L * zd);
         if (!Zc) return -1;
         for (int c = 0; c < L; c++) memcpy(Zc + (size_t)c * zd, D->Z + (size_t)g[c] * zd, sizeof(double) * zd);
     }
-    struct dcols_job j = {D, g, L, Zc, ZcT, dist};
+    struct dcols_job j = {D, g, L, Zc, ZcT, dist, NULL, 0};
     if (t && D->n >= REPLIB_TEAM_MINROWS && (D->K || zd <= REPLIB_TEAM_MAXK))
         team_run(t, REPLIB_TEAM_CHUNKS, dcols_block, &j);
     else
         dcols_block(&j, -1);
     free(Zc);
     free(ZcT);
+    return 0;
+}
+
+/* dcols_pruned's bounds: need (out) = the frames to measure, returns
+ * their count; the others' entries of dist are set to mind[f].  A frame
+ * whose mind is not finite fails every comparison: measured.  dco: L rows
+ * of stride N + 1, entry N of each -infinity (no owner).  Branch-free over
+ * the frames, candidate by candidate (vectorized); scratch: sk (n), oi, nf,
+ * ez (n each). */
+__attribute__((optimize("tree-vectorize"), target_clones("avx512f", "avx2", "default")))
+static int prune_frames(const struct replib_data *D, const int *g, int L, const double *mind, const int *owner,
+                        const double *dco, int *need, double *dist, unsigned char *restrict sk, int *restrict oi,
+                        double *restrict nf, double *restrict ez)
+{
+    int n = D->n, N = D->N, nn = 0;
+    const double *zz = D->zz;
+    for (int f = 0; f < n; f++) {
+        int o = owner ? owner[f] : -1;
+        oi[f] = o >= 0 ? o : N;
+        ez[f] = zz[f] + (o >= 0 ? zz[o] : 0);
+        nf[f] = sqrt(zz[f]);
+        sk[f] = 1;
+    }
+    for (int c = 0; c < L; c++) {
+        double zc = zz[g[c]], nc = sqrt(zc);
+        const double *dc = dco + (size_t)c * (N + 1);
+        for (int f = 0; f < n; f++) {
+            double m = mind[f], dn = nf[f] - nc, E = 1e-10 * (ez[f] + zc), dcoo = dc[oi[f]];
+            sk[f] &= (dn * dn >= m + E) | (dcoo - E >= 4 * (m + E));
+        }
+    }
+    for (int f = 0; f < n; f++) {
+        if (sk[f])
+            for (int c = 0; c < L; c++) dist[(size_t)c * n + f] = mind[f];
+        else
+            need[nn++] = f;
+    }
+    return nn;
+}
+
+/* dcols for the candidates g of a greedy start or a split/merge proposal,
+ * where the caller needs only min(dist, mind) per frame, or only whether
+ * dist < mind and then dist: a frame whose distance to every
+ * candidate provably is >= mind[f] as computed (the value it would get
+ * from dcols, rounding included) is not measured, and its entries are set
+ * to mind[f], which gives the same minimum.  The bounds, with
+ * E = 1e-10 (|z_f|^2 + |z_c|^2 + |z_o|^2), far above the rounding of the
+ * computed squared distances and norms (both from sums of at most zdim <=
+ * 256 products: below 1e-13 times the squared norms):
+ * |z_f - z_c| >= | |z_f| - |z_c| |, and the triangle inequality through
+ * o = owner[f] (when owner is not NULL), the centre whose distance gave mind[f]:
+ * |z_f - z_c| >= |z_c - z_o| - |z_f - z_o|, so that |z_c - z_o|^2 - E >=
+ * 4 (mind[f] + E) implies |z_f - z_c|^2 >= mind[f] + E (Elkan 2003).  The
+ * distances |z_c - z_o| to the centres come first (a few rows); the
+ * frames left are measured by the same kernel (dots_avx512: each row's
+ * sums are its own), so every entry the caller reads from a measured frame
+ * has the bits dcols gives it.  Measured at the Monkey size (2,653 frames,
+ * d = 150): two thirds of the frames are not measured in the greedy
+ * starts, half of them in the split/merge proposals (norm bound only: the
+ * pieces are not frames).  mind (n): the thresholds (not finite: the
+ * frame is measured); owner (n, or NULL): the centre row of each frame's
+ * mind (< N), or -1.  Only where dcols uses dots_avx512 (else it is
+ * dcols).  Returns 0 or -1 (allocation). */
+static int dcols_pruned(const struct replib_data *D, struct team *t, const int *g, int L, const double *mind,
+                        const int *owner, double *dist)
+{
+    int n = D->n, N = D->N, zd = D->zdim;
+    if (D->K || L > 8 || zd > REPLIB_TEAM_MAXK || !dots_avx512_ok()) return dcols(D, t, g, L, dist);
+    double *ZcT = candidates_t(D, g, L);
+    int *slot = malloc(sizeof(int) * N), *orow = malloc(sizeof(int) * N), *need = malloc(sizeof(int) * n);
+    double *dco = malloc(sizeof(double) * (size_t)8 * (N + 1)), *nf = malloc(sizeof(double) * 2 * n);
+    int *oi = malloc(sizeof(int) * n);
+    unsigned char *sk = malloc(n);
+    if (!ZcT || !slot || !orow || !need || !dco || !nf || !oi || !sk) {
+        free(ZcT); free(slot); free(orow); free(need); free(dco); free(nf); free(oi); free(sk);
+        return -1;
+    }
+    /* the candidates' squared distances to the centres that own a frame */
+    int no = 0;
+    for (int i = 0; i < N; i++) slot[i] = -1;
+    for (int f = 0; f < n && owner; f++)
+        if (owner[f] >= 0 && slot[owner[f]] < 0) { slot[owner[f]] = no; orow[no++] = owner[f]; }
+    /* dots_avx512 writes row o's products to dco[c (N + 1) + o] */
+    if (no > 0) dots_avx512(D->Z, zd, orow, 0, no, ZcT, L, N + 1, dco);
+    for (int c = 0; c < L; c++) {
+        for (int k = 0; k < no; k++) {
+            int o = orow[k];
+            double v = D->zz[o] + D->zz[g[c]] - 2 * dco[(size_t)c * (N + 1) + o];
+            dco[(size_t)c * (N + 1) + o] = v > 0 ? v : 0;
+        }
+        dco[(size_t)c * (N + 1) + N] = -INFINITY;
+    }
+    int nn = prune_frames(D, g, L, mind, owner, dco, need, dist, sk, oi, nf, nf + n);
+    struct dcols_job j = {D, g, L, NULL, ZcT, dist, need, nn};
+    if (t && nn >= REPLIB_TEAM_MINROWS)
+        team_run(t, REPLIB_TEAM_CHUNKS, dcols_block, &j);
+    else
+        dcols_block(&j, -1);
+    free(ZcT); free(slot); free(orow); free(need); free(dco); free(nf); free(oi); free(sk);
     return 0;
 }
 
@@ -1455,19 +1590,19 @@ static int d2_sample(struct rng *r, const double *wt, const unsigned char *skip,
  * scikit-learn): the first centre (when no piece is fixed) is a uniformly
  * random frame; every further one is the best of 2 + ln d D^2-sampled
  * frames, best meaning the lowest potential sum_f min(mind_f, |z_f - z_c|^2). */
-static int seed_greedy(const struct replib_data *D, struct team *t, int d, struct rng *r, struct lstate *s)
+static int seed_greedy(const struct replib_data *D, struct team *t, int d, int prune, struct rng *r, struct lstate *s)
 {
     int n = D->n, nfix = D->nfix, L = 2 + (int)log((double)d);
     s->nfree = 0; s->nnz = 0;
     double *mind = malloc(sizeof(double) * n), *kc = malloc(sizeof(double) * n);
     double *dcl = malloc(sizeof(double) * (size_t)n * L), *db = malloc(sizeof(double) * n);
-    int *cands = malloc(sizeof(int) * L);
+    int *cands = malloc(sizeof(int) * L), *owner = malloc(sizeof(int) * n);
     unsigned char *used = calloc(n, 1);
-    if (!mind || !kc || !dcl || !db || !used || !cands) {
-        free(mind); free(kc); free(dcl); free(db); free(used); free(cands);
+    if (!mind || !kc || !dcl || !db || !used || !cands || !owner) {
+        free(mind); free(kc); free(dcl); free(db); free(used); free(cands); free(owner);
         return cm_seterr("replib: out of memory");
     }
-    for (int f = 0; f < n; f++) mind[f] = INFINITY;
+    for (int f = 0; f < n; f++) { mind[f] = INFINITY; owner[f] = -1; }
     for (int a = 0; a < d; a++) {
         int g = -1;
         if (a < nfix) {
@@ -1485,8 +1620,8 @@ static int seed_greedy(const struct replib_data *D, struct team *t, int d, struc
                     if (c < 0) break;
                     cands[nc++] = c;
                 }
-                if (nc > 0 && dcols(D, t, cands, nc, dcl) < 0) {
-                    free(mind); free(kc); free(dcl); free(db); free(used); free(cands);
+                if (nc > 0 && (prune ? dcols_pruned(D, t, cands, nc, mind, owner, dcl) : dcols(D, t, cands, nc, dcl)) < 0) {
+                    free(mind); free(kc); free(dcl); free(db); free(used); free(cands); free(owner);
                     return cm_seterr("replib: out of memory");
                 }
                 for (int t = 0; t < nc; t++) {
@@ -1506,9 +1641,9 @@ static int seed_greedy(const struct replib_data *D, struct team *t, int d, struc
             used[g] = 1;
         }
         s->src[a] = g;
-        for (int f = 0; f < n; f++) if (db[f] < mind[f]) mind[f] = db[f];
+        for (int f = 0; f < n; f++) if (db[f] < mind[f]) { mind[f] = db[f]; owner[f] = g; }
     }
-    free(mind); free(kc); free(dcl); free(db); free(used); free(cands);
+    free(mind); free(kc); free(dcl); free(db); free(used); free(cands); free(owner);
     return 0;
 }
 
@@ -1755,7 +1890,8 @@ static int split_merge(const struct replib_data *D, const struct replib_opts *o,
         if (c < 0) break;
         cands[nc++] = c;
     }
-    if (nc > 0 && dcols(D, w->team, cands, nc, x->dcl) < 0) return -1;
+    if (nc > 0 && (o->no_prune ? dcols(D, w->team, cands, nc, x->dcl)
+                               : dcols_pruned(D, w->team, cands, nc, x->cur, NULL, x->dcl)) < 0) return -1;
     for (int t = 0; t < nc; t++) {
         const double *dct = x->dcl + (size_t)t * n;
         double gain = 0;
@@ -1790,7 +1926,7 @@ static void run_restart(const struct replib_data *D, const struct replib_opts *o
         memcpy(l, o->init_labels, sizeof(int) * n);
         E = INFINITY;
     } else {
-        int sr = o->start == REPLIB_START_PLUSPLUS ? seed_pieces(D, d, &r, s) : seed_greedy(D, w->team, d, &r, s);
+        int sr = o->start == REPLIB_START_PLUSPLUS ? seed_pieces(D, d, &r, s) : seed_greedy(D, w->team, d, !o->no_prune, &r, s);
         if (sr < 0 || compute_costs(D, s, mu, w) < 0) { out->rc = -1; return; }
         double tl = wall();
         E = label_step(w, o->method, l, 0);

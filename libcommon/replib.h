@@ -154,6 +154,10 @@ struct replib_opts {
                                    takes blocks of frames of the row-wise products (costs,
                                    distances, second-best scans) of those still running; the
                                    result does not depend on it */
+    int no_prune;               /* 1: the greedy start and the split/merge proposals measure every
+                                   frame's distance to their candidates (the method before the
+                                   bounds of replib.c's dcols_pruned, which skip frames that
+                                   provably cannot change the result: the same bytes; for tests) */
     void (*log)(void *ctx, const struct replib_iter *it);   /* or NULL */
     void *log_ctx;
 };

@@ -486,6 +486,21 @@ static void keep_chunk(struct replib_sketch *S, int f1, const double *kb)
     if (!kb && S->release) mapped_release((const void *)xs[0], (const void *)(xs[nb - 1] + m3));
 }
 
+/* The kept frames of the chunk starting at frame f0 (within the kept
+ * capacity) faulted in, so that keep_chunk finds them mapped: the pages
+ * are zeroed by the kernel either way (contents are not touched; an older
+ * kernel refuses and they fault as before).  On the helper thread right
+ * after it encodes the chunk before (that zeroing, 0.3-0.5 s at the Monkey
+ * size when the memory is cold, was on the reading thread, the read's
+ * critical path), else on the caller's. */
+static void populate_chunk(const struct replib_sketch *S, int f0)
+{
+    size_t m3 = (size_t)S->m3, a = (size_t)f0 * m3 * 4, e = (size_t)(f0 + REPLIB_KEEP_CHUNK) * m3 * 4;
+    if (e > (size_t)S->xcap * m3 * 4) e = (size_t)S->xcap * m3 * 4;
+    uintptr_t p0 = ((uintptr_t)S->Xk + a) & ~(uintptr_t)4095, p1 = ((uintptr_t)S->Xk + e) & ~(uintptr_t)4095;
+    if (S->Xk && p1 > p0) madvise((void *)p0, p1 - p0, MADV_POPULATE_WRITE);
+}
+
 /* The kept frames are encoded on a helper thread, one chunk at a time,
  * while the caller buffers the next chunk (S->kb holds two): the chunk's
  * arithmetic is that of keep_chunk on the caller's thread.  The caller
@@ -512,6 +527,7 @@ static void *keeper_main(void *arg)
         const double *kb = K->kb;
         pthread_mutex_unlock(&K->lock);
         keep_chunk(K->S, f1, kb);
+        populate_chunk(K->S, f1);   /* before K->f1 = 0: the caller may move Xk after that */
         pthread_mutex_lock(&K->lock);
         K->f1 = 0;
         pthread_cond_broadcast(&K->cond);
@@ -642,14 +658,7 @@ static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, 
                 }
                 if (f % REPLIB_KEEP_CHUNK == REPLIB_KEEP_CHUNK - 1) {
                     keeper_post(S, f + 1, kb);
-                    /* the next chunk's kept frames faulted in here, so
-                     * the helper finds them mapped (the pages are zeroed
-                     * by the kernel either way; contents are not touched;
-                     * an older kernel refuses and they fault as before) */
-                    size_t a = (size_t)(f + 1) * m3 * 4, e = (size_t)(f + 1 + REPLIB_KEEP_CHUNK) * m3 * 4;
-                    if (e > (size_t)S->xcap * m3 * 4) e = (size_t)S->xcap * m3 * 4;
-                    uintptr_t p0 = ((uintptr_t)S->Xk + a) & ~(uintptr_t)4095, p1 = ((uintptr_t)S->Xk + e) & ~(uintptr_t)4095;
-                    if (p1 > p0) madvise((void *)p0, p1 - p0, MADV_POPULATE_WRITE);
+                    if (!S->keeper) populate_chunk(S, f + 1);
                 }
             }
         }
