@@ -516,6 +516,21 @@ static double cone_quality_cut(const struct sub *p, int i, const double *q, doub
 
 
 
+/* edge e (corner e to corner e + 1) of the polygon meets the segment P-Q
+ * (corners i, j, or free if < 0; bounding box lo0..hi0 by lo1..hi1): the
+ * edges at i or j are the cone tests' business, and an edge whose bounding
+ * box misses the segment's cannot meet it */
+static inline int edge_meets(const struct sub *p, int e, int i, int j, const double *P, const double *Q,
+                             double lo0, double hi0, double lo1, double hi1)
+{
+    int f = (e + 1) % p->m;
+    if (e == i || f == i || e == j || f == j) return 0;
+    const double *a = V(p, e), *b = V(p, f);
+    if ((a[0] < lo0 && b[0] < lo0) || (a[0] > hi0 && b[0] > hi0) || (a[1] < lo1 && b[1] < lo1) ||
+        (a[1] > hi1 && b[1] > hi1)) return 0;
+    return segments_meet(P, Q, a, b);
+}
+
 /* segment from P (corner i, or a free interior point if i < 0) to Q (corner
  * j or free) lies in the open interior of the polygon */
 static int seg_inside(const struct sub *p, int i, const double *P, int j, const double *Q)
@@ -544,26 +559,14 @@ static int seg_inside(const struct sub *p, int i, const double *P, int j, const 
             grid_span(g, 0, xa, xb, &x0, &x1);
             for (int x = x0; x <= x1; x++) {
                 size_t c = (size_t)y * g->gx + x;
-                for (int k = g->start[c]; k < g->start[c + 1]; k++) {
-                    int e = g->edge[k], f = (e + 1) % m;
-                    if (e == i || f == i || e == j || f == j) continue;
-                    const double *a = V(p, e), *b = V(p, f);
-                    if ((a[0] < lo0 && b[0] < lo0) || (a[0] > hi0 && b[0] > hi0) || (a[1] < lo1 && b[1] < lo1) ||
-                        (a[1] > hi1 && b[1] > hi1)) continue;
-                    if (segments_meet(P, Q, a, b)) return 0;
-                }
+                for (int k = g->start[c]; k < g->start[c + 1]; k++)
+                    if (edge_meets(p, g->edge[k], i, j, P, Q, lo0, hi0, lo1, hi1)) return 0;
             }
         }
         return 1;
     }
-    for (int e = 0; e < m; e++) {
-        int f = (e + 1) % m;
-        if (e == i || f == i || e == j || f == j) continue;
-        const double *a = V(p, e), *b = V(p, f);
-        if ((a[0] < lo0 && b[0] < lo0) || (a[0] > hi0 && b[0] > hi0) || (a[1] < lo1 && b[1] < lo1) ||
-            (a[1] > hi1 && b[1] > hi1)) continue;
-        if (segments_meet(P, Q, a, b)) return 0;
-    }
+    for (int e = 0; e < m; e++)
+        if (edge_meets(p, e, i, j, P, Q, lo0, hi0, lo1, hi1)) return 0;
     /* corners i adjacent to edges we skipped: a corner other than i, j lying
      * on PQ was caught by the edges around it unless both its edges were
      * skipped, i.e. it sits between i and j: ruled out by the cone tests */

@@ -11,26 +11,10 @@
 #include "blas_tune.h"
 #include "rng.h"
 #include "tap.h"
+#include "anim_fixture.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* frames around `poses` poses, held with jitter, scaled by s (spread:
- * the poses' scale against the jitter's) */
-static double *make_anim(struct rng *r, int n, int nv, int poses, double spread, double noise)
-{
-    int m3 = 3 * nv;
-    double *P = malloc(sizeof(double) * (size_t)poses * m3), *X = malloc(sizeof(double) * (size_t)n * m3);
-    for (int k = 0; k < poses * m3; k++) P[k] = spread * rng_normal(r);
-    int cur = 0;
-    for (int f = 0; f < n; f++) {
-        if (rng_uniform(r) < 0.1) cur = rng_int(r, poses);
-        double s = 0.5 + rng_uniform(r);
-        for (int k = 0; k < m3; k++) X[(size_t)f * m3 + k] = 10 + s * P[(size_t)cur * m3 + k] + noise * rng_normal(r);
-    }
-    free(P);
-    return X;
-}
 
 int main(int argc, char **argv)
 {

@@ -7,26 +7,10 @@
 #include "replib.h"
 #include "rng.h"
 #include "tap.h"
+#include "anim_fixture.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* clustered frames: a few poses, each held with jitter and linked by fast
- * transitions (the structure of a performance) */
-static double *make_anim(struct rng *r, int n, int nv, int poses, double noise)
-{
-    int m3 = 3 * nv;
-    double *P = malloc(sizeof(double) * (size_t)poses * m3), *X = malloc(sizeof(double) * (size_t)n * m3);
-    for (int k = 0; k < poses * m3; k++) P[k] = rng_normal(r);
-    int cur = 0;
-    for (int f = 0; f < n; f++) {
-        if (rng_uniform(r) < 0.1) cur = rng_int(r, poses);
-        double s = 0.5 + rng_uniform(r);
-        for (int k = 0; k < m3; k++) X[(size_t)f * m3 + k] = 10 + s * P[(size_t)cur * m3 + k] + noise * rng_normal(r);
-    }
-    free(P);
-    return X;
-}
 
 int main(void)
 {
@@ -35,13 +19,13 @@ int main(void)
     int never_worse = 1, better = 0, cases = 0, ev_ok = 1, det_ok = 1;
     for (int t = 0; t < 24; t++) {
         int n = 80 + rng_int(&r, 150), nv = 4 + rng_int(&r, 12), d = 3 + rng_int(&r, 25);
-        double *X = make_anim(&r, n, nv, 5 + rng_int(&r, 40), 0.3);
+        double *X = make_anim(&r, n, nv, 5 + rng_int(&r, 40), 1, 0.3);
         unsigned char *cut = calloc(n, 1);
         for (int f = 1; f < n; f++) cut[f] = t % 3 == 2 && rng_uniform(&r) < 0.03;
         double *w = malloc(sizeof(double) * nv);
         for (int i = 0; i < nv; i++) w[i] = t % 4 == 1 ? 0.2 + rng_uniform(&r) : 1;
         int nfix = t % 6 == 5 ? 2 : 0;
-        double *Rf = nfix ? make_anim(&r, nfix, nv, 2, 0.5) : NULL;
+        double *Rf = nfix ? make_anim(&r, nfix, nv, 2, 1, 0.5) : NULL;
         double lambda = t % 2 ? 0 : 2 * rng_uniform(&r) + 0.5;
         struct replib_data D = {0};
         D.n = n; D.nv = nv; D.X = X; D.cut = cut; D.w = w; D.gram = (t / 2) % 2; D.nfix = nfix; D.Rfix = Rf;
