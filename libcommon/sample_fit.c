@@ -176,12 +176,11 @@ int sample_fit(double *P, const int *F, int nv, int nf, const double *VT, const 
         }
         for (size_t s = 0; s < ns; s++) {
             const double *n = NFT + 3 * I[s];
-            double pl = p->plane;
             if (dot3(n, NS + 3 * s) < p->min_dot) continue;   /* the other side of a thin part */
             double off[3], g[3];
             sub3(XS + 3 * s, C + 3 * s, off);
             double on = dot3(off, n);
-            for (int d = 0; d < 3; d++) g[d] = C[3 * s + d] + pl * (off[d] - on * n[d]);
+            for (int d = 0; d < 3; d++) g[d] = C[3 * s + d] + p->plane * (off[d] - on * n[d]);
             double w = ws * irls(D[s], H, US + s, p);
             int nk = SB[3 * s + 1] == 0 ? 1 : SB[3 * s + 2] == 0 ? 2 : 3;
             for (int a = 0; a < nk; a++) {
