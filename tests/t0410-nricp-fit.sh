@@ -26,10 +26,10 @@ test_expect_success 'camel 01 -> 02: Hausdorff below 0.5%, no flipped face' '
 	test "$(awk "{ print \$5 }" m.txt)" = 0
 '
 test_expect_success 'not untangled, the rest shape unsmoothed or no search for the agreeing side: flipped faces' '
-	nricp --untangle 0 --unflip 0 --fit-release stay --fit-smooth 0 --init-deform -l "$EX/landmarks-01-02.txt" c1.mesh c2.mesh >rs.mesh &&
+	nricp --refine 0 --untangle 0 --unflip 0 --fit-release stay --fit-smooth 0 --init-deform -l "$EX/landmarks-01-02.txt" c1.mesh c2.mesh >rs.mesh &&
 	mesh-metrics --no-header -r c2.mesh rs.mesh >ms.txt && cat ms.txt &&
 	test_le 1 "$(awk "{ print \$5 }" ms.txt)" &&
-	nricp --untangle 0 --unflip 0 --fit-release stay --search 0 --init-deform -l "$EX/landmarks-01-02.txt" c1.mesh c2.mesh >rn.mesh &&
+	nricp --refine 0 --untangle 0 --unflip 0 --fit-release stay --search 0 --init-deform -l "$EX/landmarks-01-02.txt" c1.mesh c2.mesh >rn.mesh &&
 	mesh-metrics --no-header -r c2.mesh rn.mesh >mn.txt && cat mn.txt &&
 	test_le 1 "$(awk "{ print \$5 }" mn.txt)" &&
 	test_le "$(awk "{ print \$3 }" m.txt)" "$(awk "{ print \$3 }" mn.txt)"
@@ -37,7 +37,7 @@ test_expect_success 'not untangled, the rest shape unsmoothed or no search for t
 # one pass: the default's second pass (--passes auto) would start from the
 # unfitted result and hide what the fit does
 test_expect_success 'without the ARAP fit: farther, and more flipped faces' '
-	nricp --passes 1 --fit 0 --unflip 0 --init-deform -l "$EX/landmarks-01-02.txt" c1.mesh c2.mesh >r0.mesh &&
+	nricp --refine 0 --passes 1 --fit 0 --unflip 0 --init-deform -l "$EX/landmarks-01-02.txt" c1.mesh c2.mesh >r0.mesh &&
 	mesh-metrics --no-header -r c2.mesh r0.mesh >m0.txt && cat m0.txt &&
 	test_le 5 "$(awk "{ print \$5 }" m0.txt)" &&
 	test_le "$(awk "{ print \$3 + 0.002 }" m.txt)" "$(awk "{ print \$3 }" m0.txt)"

@@ -17,7 +17,7 @@ test_expect_success 'one registration: no more flipped faces, no farther; same b
 	mesh-metrics --no-header -r g.mesh u.mesh >mu.txt && cat mu.txt &&
 	mesh-metrics --no-header -r g.mesh o.mesh >mo.txt && cat mo.txt &&
 	test_le "$(awk "{ print \$5 }" mu.txt)" "$(awk "{ print \$5 }" mo.txt)" &&
-	test_le "$(awk "{ print \$3 }" mu.txt)" "$(awk "{ print \$3 + 1e-9 }" mo.txt)" &&
+	test_le "$(awk "{ print \$3 }" mu.txt)" "$(awk "{ printf \"%.12g\", \$3 + 1e-9 }" mo.txt)" &&
 	if test "$(awk "{ print \$5 }" mo.txt)" = 0; then cmp u.mesh o.mesh; fi
 '
 test_expect_success 'usage: --unflip out of range or not a number' '

@@ -13,6 +13,7 @@
 #include "mesh.h"
 #include "mesh_distance.h"
 #include "nricp.h"
+#include "sample_fit.h"
 #include "procrustes.h"
 #include "columns.h"
 #include "topology.h"
@@ -84,6 +85,10 @@ static const char help[] =
 "      --unflip R        last, lay the patches still flipped against the target\n"
 "                        (R rings around them) flat on it by a foldover-free solve,\n"
 "                        each kept where it flips fewer faces (default 2; 0: off)\n"
+"      --refine N        last, N iterations pulling every sample of the kept key\n"
+"                        (vertices, centroids, edge midpoints) onto TARGET and TARGET's\n"
+"                        onto it, the largest distances first, no face newly flipped,\n"
+"                        kept where the Hausdorff distance drops (default 12; 0: off)\n"
 "      --fit-release R   the ARAP fit's vertices released at folds keep their place\n"
 "                        (stay), take their neighbours' mean (mean: irons flaps of\n"
 "                        surplus skin flat), or both (default): the mean too where\n"
@@ -152,6 +157,7 @@ struct options {
     int paper;             /* --paper: the thesis' method */
     int fit_release;       /* 0 stay, 1 mean, 2 both (nricp_params.fit_release per run) */
     int fit_smooth_retry;  /* > fit_smooth: the kept key's second fit with this rest smoothing */
+    int refine;            /* iterations of the kept key's last refinement (sample_fit.h) */
     int passes_given;      /* --passes on the command line */
     int passes;            /* 2: each key registered again from its result, the better kept;
                               0 (auto): only where the first ends farther than
@@ -164,14 +170,14 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES, O_UNFLIP };
+           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES, O_UNFLIP, O_REFINE };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
-        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"unflip", 1, 0, O_UNFLIP}, {"fit-release", 1, 0, O_FITREL},
+        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"unflip", 1, 0, O_UNFLIP}, {"refine", 1, 0, O_REFINE}, {"fit-release", 1, 0, O_FITREL},
         {"fit-smooth-retry", 1, 0, O_FITSR}, {"coarse", 1, 0, O_COARSE}, {"fine-steps", 1, 0, O_FINESTEPS}, {"rigid-const", 0, 0, O_RIGIDC}, {"passes", 1, 0, O_PASSES},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
@@ -184,6 +190,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->fit_release = 2;
     o->fit_smooth_retry = 3;
     o->passes = 0;          /* auto */
+    o->refine = 12;
     int c;
     while ((c = getopt_long(argc, argv, "l:k:o:vh", lo, NULL)) != -1) {
         switch (c) {
@@ -213,6 +220,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_RIGID: o->p.rigid = arg_double(optarg, "--rigid"); break;
         case O_UNTANGLE: o->p.untangle = arg_int(optarg, "--untangle"); break;
         case O_UNFLIP: o->p.unflip = arg_int(optarg, "--unflip"); break;
+        case O_REFINE: o->refine = arg_int(optarg, "--refine"); break;
         case O_FITREL:
             if (!strcmp(optarg, "stay")) o->fit_release = 0;
             else if (!strcmp(optarg, "mean")) o->fit_release = 1;
@@ -297,6 +305,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         o->p.rigid = 0;
         o->p.untangle = 0;
         o->p.unflip = 0;
+        o->refine = 0;
         o->p.backward = 0;
         o->p.search = 0;
         o->p.max_inner = 10;
@@ -311,6 +320,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->p.rigid >= 0 && o->p.rigid <= 1e6)) usage_error("--rigid must be in [0, 1e6]");
     if (o->p.untangle < 0 || o->p.untangle > 20) usage_error("--untangle must be in 0..20");
     if (o->p.unflip < 0 || o->p.unflip > 20) usage_error("--unflip must be in 0..20");
+    if (o->refine < 0 || o->refine > 1000) usage_error("--refine must be in 0..1000");
     if (o->p.rigid_iters < 1 || o->p.rigid_iters > 100) usage_error("--rigid-iters must be in 1..100");
     if (!(o->p.coarse >= 0 && o->p.coarse <= 0.5)) usage_error("--coarse must be in [0, 0.5]");
     if (o->p.fine_steps < 0 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 0..1000");
@@ -538,6 +548,28 @@ static void key_register(const struct options *o, const struct mesh *S, const do
                        &o->p, X, on_step, st) < 0)
         die("%s", cm_errmsg());
     progress_end(&st->pr);
+}
+
+/* the kept key X (#V by 3, in and out) refined last (sample_fit.h): every
+ * sample mesh-metrics measures pulled onto T and T's pulling X, the largest
+ * distances first; kept only where the Hausdorff distance drops and no face
+ * newly flips */
+static void key_refine(const struct options *o, const struct mesh *S, const struct mesh *T,
+                       const char *name, double *X)
+{
+    double t0 = now_seconds(), diag = bbox_diagonal(T->V, T->nv), st[4];
+    struct sample_fit_params sp;
+    sample_fit_defaults(&sp);
+    sp.iters = o->refine;
+    sp.tol = FLIP_THIN_TOL * diag;
+    struct closest_point_tree *TT = closest_point_tree_new(T->V, T->nv, T->F, T->nf);
+    if (!TT || sample_fit(X, S->F, S->nv, S->nf, T->V, T->F, T->nv, T->nf, TT, &sp, st) < 0)
+        die("cannot refine the registration: %s", cm_errmsg());
+    closest_point_tree_free(TT);
+    info(1, "%s%srefined: Hausdorff %.3f%% -> %.3f%% of the diagonal, %d -> %d flipped faces, "
+         "edge stretch %.3f, %.2f s", name ? name : "", name ? ": " : "", 100 * st[0] / diag,
+         100 * st[1] / diag, (int)st[2], (int)st[3], nricp_stretch(S->V, X, S->F, S->nf),
+         now_seconds() - t0);
 }
 
 int main(int argc, char **argv)
@@ -771,6 +803,8 @@ int main(int argc, char **argv)
             L = (struct landmarks){0};
         }
       }
+      if (o.refine > 0)
+          key_refine(&o, &S, &T[k], o.chain ? o.targets[k] : NULL, K + (size_t)(k + 1) * S.nv * 3);
     }
     free(Xp);
     free(X2);
