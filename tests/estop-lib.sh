@@ -8,6 +8,16 @@ camel_scans() {
 	done
 }
 
+# egg_spheres: s3.mesh and s4.mesh, unit icospheres of subdivision levels 3
+# and 4: the connectivities of the generated source and target eggs below
+egg_spheres() {
+	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh
+}
+
+# nricp options of one registration on the generated eggs: no choice of
+# start, pass, release or rest (t0429, t0431)
+NRICP_ONE="-k 4 --fit 6 --passes 1 --start none --fit-release stay --fit-smooth-retry 0"
+
 # nosed_egg MESH A: MESH (a unit icosphere) made an egg with a nose, its
 # upper part turned by A radians about y (t0416, t0425)
 nosed_egg() {

@@ -4,7 +4,7 @@ test_description='nricp --chain and --rest on generated shapes; bad input'
 . "$TEST_DIRECTORY/estop-lib.sh"
 
 test_expect_success 'setup: a source and two poses remeshed finer' '
-	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh &&
+	egg_spheres &&
 	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.15 >g1.mesh && nosed_egg s4.mesh 0.3 >g2.mesh
 '
 test_expect_success 'nricp --chain writes SOURCE and one key per target; key 1 is the single run' '

@@ -4,7 +4,7 @@ test_description='nricp --fit-smooth-retry: a key left far or folded is fitted o
 . "$TEST_DIRECTORY/estop-lib.sh"
 
 test_expect_success 'setup: a source and a pose remeshed finer' '
-	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh &&
+	egg_spheres &&
 	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.15 >g1.mesh
 '
 test_expect_success 'a key that ends close and unfolded is not fitted again: the same bytes as without' '

@@ -4,7 +4,7 @@ test_description='nricp --coarse: the stiff steps on a coarser remeshing of SOUR
 . "$TEST_DIRECTORY/estop-lib.sh"
 
 test_expect_success 'setup: a source, a pose remeshed finer, the pose in the source connectivity (truth)' '
-	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh &&
+	egg_spheres &&
 	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.6 >g.mesh && nosed_egg s3.mesh 0.6 >truth.mesh &&
 	echo "543 0.16886181253629701 0 0.62540417412539229" >nose.txt
 '

@@ -4,7 +4,7 @@ test_description='nricp --passes 2: each key registered once more from its resul
 . "$TEST_DIRECTORY/estop-lib.sh"
 
 test_expect_success 'setup: a source, a pose remeshed finer, the rest pose remeshed finer' '
-	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh &&
+	egg_spheres &&
 	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.9 >g.mesh && nosed_egg s4.mesh 0 >near.mesh
 '
 # the score the passes are compared by: Hausdorff over the diagonal + 1e-4

@@ -4,13 +4,13 @@ test_description='nricp --unflip: the patches left flipped against the target la
 . "$TEST_DIRECTORY/estop-lib.sh"
 
 test_expect_success 'setup: a source and a pose remeshed finer' '
-	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh &&
+	egg_spheres &&
 	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.9 >g.mesh
 '
 # one registration (no choice of start, pass, release or rest): the
 # unflipping can only lower the flipped faces and cannot lengthen the
 # Hausdorff distance, and where nothing is flipped it changes no byte
-O="-k 4 --fit 6 --passes 1 --start none --fit-release stay --fit-smooth-retry 0"
+O=$NRICP_ONE
 test_expect_success 'one registration: no more flipped faces, no farther; same bytes when none flipped' '
 	nricp $O src.mesh g.mesh >u.mesh &&
 	nricp $O --unflip 0 src.mesh g.mesh >o.mesh &&

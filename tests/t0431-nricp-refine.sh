@@ -4,13 +4,13 @@ test_description='nricp --refine: the kept key refined on every sample mesh-metr
 . "$TEST_DIRECTORY/estop-lib.sh"
 
 test_expect_success 'setup: a source and a pose remeshed finer' '
-	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh &&
+	egg_spheres &&
 	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.9 >g.mesh
 '
 # one registration (no choice of start, pass, release or rest); the
 # refinement is kept only where the Hausdorff distance drops, with no more
 # flipped faces
-O="-k 4 --fit 6 --passes 1 --start none --fit-release stay --fit-smooth-retry 0"
+O=$NRICP_ONE
 test_expect_success 'refined: closer by the Hausdorff distance, no more flipped faces' '
 	nricp -v $O src.mesh g.mesh >r.mesh 2>err && cat err &&
 	grep "refined: Hausdorff" err &&
