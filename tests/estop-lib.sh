@@ -14,6 +14,12 @@ egg_spheres() {
 	mesh-gen -s 3 icosphere >s3.mesh && mesh-gen -s 4 icosphere >s4.mesh
 }
 
+# egg_pair A: src.mesh, the nosed egg on s3.mesh, and g.mesh, the egg on
+# the finer s4.mesh with its upper part turned by A (egg_spheres first)
+egg_pair() {
+	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh "$1" >g.mesh
+}
+
 # nricp options of one registration on the generated eggs: no choice of
 # start, pass, release or rest (t0429, t0431)
 NRICP_ONE="-k 4 --fit 6 --passes 1 --start none --fit-release stay --fit-smooth-retry 0"

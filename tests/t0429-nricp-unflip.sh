@@ -4,11 +4,9 @@ test_description='nricp --unflip: the patches left flipped against the target la
 . "$TEST_DIRECTORY/estop-lib.sh"
 
 test_expect_success 'setup: a source and a pose remeshed finer' '
-	egg_spheres &&
-	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.9 >g.mesh
+	egg_spheres && egg_pair 0.9
 '
-# one registration (no choice of start, pass, release or rest): the
-# unflipping can only lower the flipped faces and cannot lengthen the
+# the unflipping can only lower the flipped faces and cannot lengthen the
 # Hausdorff distance, and where nothing is flipped it changes no byte
 O=$NRICP_ONE
 test_expect_success 'one registration: no more flipped faces, no farther; same bytes when none flipped' '

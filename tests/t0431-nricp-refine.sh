@@ -4,12 +4,10 @@ test_description='nricp --refine: the kept key refined on every sample mesh-metr
 . "$TEST_DIRECTORY/estop-lib.sh"
 
 test_expect_success 'setup: a source and a pose remeshed finer' '
-	egg_spheres &&
-	nosed_egg s3.mesh 0 >src.mesh && nosed_egg s4.mesh 0.9 >g.mesh
+	egg_spheres && egg_pair 0.9
 '
-# one registration (no choice of start, pass, release or rest); the
-# refinement is kept only where the Hausdorff distance drops, with no more
-# flipped faces
+# the refinement is kept only where the Hausdorff distance drops, with no
+# more flipped faces
 O=$NRICP_ONE
 test_expect_success 'refined: closer by the Hausdorff distance, no more flipped faces' '
 	nricp -v $O src.mesh g.mesh >r.mesh 2>err && cat err &&
