@@ -33,11 +33,11 @@ ALL_CFLAGS   = $(CFLAGS) $(STOPMO_CFLAGS) $(EXTRA_CFLAGS)
 ALL_CXXFLAGS = $(CXXFLAGS) $(STOPMO_CXXFLAGS) $(EXTRA_CXXFLAGS)
 ALL_LDFLAGS  = $(LDFLAGS) $(STOPMO_LDFLAGS) $(EXTRA_LDFLAGS)
 LDLIBS   += -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow \
-            -lOpenMeshCore -lassimp -lpng -lz -lgmp -lmpfr -lstdc++ -lm
+            -lOpenMeshCore -lassimp -lpng -lz -lgmp -lmpfr -lfmt -lstdc++ -lm
 
 DEBS = build-essential pkg-config libsuitesparse-dev libopenblas-dev liblapack-dev \
        libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libopenmesh-dev libassimp-dev \
-       libmaxflow-dev libpng-dev zlib1g-dev xz-utils perl
+       libmaxflow-dev libpng-dev zlib1g-dev libfmt-dev xz-utils perl
 
 LIB_C   := $(wildcard libcommon/*.c)
 LIB_CXX := $(wildcard libcommon/*.cpp)

@@ -54,7 +54,7 @@ build_rev() { # rev [more libcommon files of that rev] -> path of the binary, or
         ${CC:-cc} -O2 -std=c11 -pthread -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -I"$T/src-$r" -I"$ROOT/libcommon" \
             -o "$b" $(ls "$T/src-$r"/*.c) "$ROOT/build/libcommon.a" \
             -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow -lOpenMeshCore -lassimp -lpng -lz \
-            -lgmp -lmpfr -lstdc++ -lm >&2 || { echo "b-dict: cannot build release $r" >&2; b=; }
+            -lgmp -lmpfr -lfmt -lstdc++ -lm >&2 || { echo "b-dict: cannot build release $r" >&2; b=; }
     fi
     [ -x "$b" ] && echo "$b"
 }

@@ -52,7 +52,7 @@ if git -C "$ROOT" cat-file -e "$BASE^{commit}" 2>/dev/null && [ -e "$ROOT/build/
            -o "$T/old/cp.o" "$T/old/libcommon/closest_point.cpp" &&
        ${CC:-cc} -pthread -o "$T/mesh-metrics-old" "$T/old/mm.o" "$T/old/md.o" "$T/old/cp.o" \
            "$ROOT/build/libcommon.a" -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow \
-           -lOpenMeshCore -lassimp -lpng -lz -lgmp -lmpfr -lstdc++ -lm; then
+           -lOpenMeshCore -lassimp -lpng -lz -lgmp -lmpfr -lfmt -lstdc++ -lm; then
         OLD="$T/mesh-metrics-old"
     fi
 fi

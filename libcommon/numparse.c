@@ -1,5 +1,6 @@
 /* numparse.c -- see numparse.h */
 #include "numparse.h"
+#include "shortest.h"
 #include <errno.h>
 #include <float.h>
 #include <limits.h>
@@ -8,6 +9,11 @@
 #include <stdlib.h>
 #include <math.h>
 #include <string.h>
+
+static const uint64_t p10u[18] = {
+    1ULL, 10ULL, 100ULL, 1000ULL, 10000ULL, 100000ULL, 1000000ULL, 10000000ULL, 100000000ULL,
+    1000000000ULL, 10000000000ULL, 100000000000ULL, 1000000000000ULL, 10000000000000ULL,
+    100000000000000ULL, 1000000000000000ULL, 10000000000000000ULL, 100000000000000000ULL};
 
 static const double pow10tab[23] = {
     1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
@@ -301,7 +307,6 @@ const char *parse_long(const char *s, long *out)
     return p;
 }
 
-#if LDBL_MANT_DIG == 64
 /* Lay out the decimal N * 10^(e - P + 1) (N has exactly P digits) the way
  * printf's %.Pg does: trailing zeros dropped, scientific notation when
  * e < -4 or e >= P.  Returns the length. */
@@ -349,94 +354,15 @@ static int layout_g(char *buf, int neg, uint64_t N, int P, int e)
     return (int)(o - buf);
 }
 
-/* Shortest of the 15, 16, 17 digit decimals of x that reads back to x,
- * without printf: |x| is scaled by 10^(P-1-e) in extended precision and
- * rounded to a P-digit integer, and every candidate is verified with
- * parse_double.  Returns 0 when no candidate verified (near-ties of the
- * scaling; the caller then asks snprintf). */
-/* a * 10^s in extended precision: one rounding for |s| <= 27, two up to
- * 54, powl beyond (all candidates are verified by reading them back) */
-static long double scale10(long double a, int s)
-{
-    if (s >= 0 && s <= 27) return a * pow10tabl[s];
-    if (s < 0 && s >= -27) return a / pow10tabl[-s];
-    if (s > 27 && s <= 54) return a * pow10tabl[27] * pow10tabl[s - 27];
-    if (s < -27 && s >= -54) return a / pow10tabl[27] / pow10tabl[-s - 27];
-    return a * powl(10.0L, (long double)s);
-}
-
-static int format_fast(char *buf, double x)
-{
-    long double a = fabs(x);
-    uint64_t bits;
-    memcpy(&bits, &x, sizeof bits);
-    int e2 = (int)((bits >> 52) & 0x7ff) - 1022;            /* frexp's exponent */
-    int e = ((e2 - 1) * 78913) >> 18;                     /* ~floor(log10 |x|) */
-    if (e < -280 || e > 280)
-        return 0;
-    /* y = |x| scaled to 17 integer digits, once */
-    long double y = scale10(a, 16 - e);
-    if (y >= pow10tabl[17]) { e++; y = scale10(a, 16 - e); }
-    else if (y < pow10tabl[16]) { e--; y = scale10(a, 16 - e); }
-    if (y >= pow10tabl[17] || y < pow10tabl[16])
-        return 0;
-    /* a padded scratch buffer, so the check reads with parse_double_padded */
-    char tmp[64] = {0};
-    uint64_t N17 = (uint64_t)llrintl(y);
-    /* Which candidates read back to x, decided without converting them:
-     * a decimal reads back to x iff it lies within half an ulp of x (a
-     * tie goes to the even significand).  In the units of y that half ulp
-     * is h = 2^(e2-54) 10^(16-e), and candidate N 10^(ee-P+1) is the
-     * integer c = N 10^(17-P+ee-e); y and h carry at most two roundings
-     * of extended precision (|16 - e| <= 54), so |c - y| is within 2^-6 of
-     * exact (y < 2^57), and |c - y| more than 1/16 away from h decides
-     * exactly.  Powers of two (a nearer neighbour below) and the band
-     * around h are decided as before, by converting the candidate. */
-    int sure = (bits & 0x000fffffffffffffULL) != 0 && e >= -38 && e <= 70;
-    long double h = 0;
-    if (sure) {     /* 2^(e2-54) in the x87 layout (normal: e2 - 54 >= -1075), then scaled */
-        unsigned char hb[sizeof(long double)] = {0};
-        uint64_t sig = 1ULL << 63;
-        uint16_t ex = (uint16_t)(16383 + e2 - 54);
-        memcpy(hb, &sig, 8);
-        memcpy(hb + 8, &ex, 2);
-        memcpy(&h, hb, sizeof h);
-        h = scale10(h, 16 - e);
-    }
-    for (int P = 15; P <= 17; P++) {
-        /* the shorter candidates round the 17-digit integer (a rare
-         * double rounding only costs the verification below) */
-        uint64_t N = P == 17 ? N17 : P == 16 ? (N17 + 5) / 10 : (N17 + 50) / 100;
-        int ee = e;
-        if ((long double)N >= pow10tabl[P]) { N /= 10; ee++; }
-        if (sure) {
-            long double c = (long double)N * pow10tabl[17 - P + ee - e], dist = fabsl(c - y);
-            if (dist > h + 0.0625L)
-                continue;                   /* reads back to another double */
-            if (dist < h - 0.0625L) {       /* reads back to x */
-                int n = layout_g(tmp, x < 0, N, P, ee);
-                memcpy(buf, tmp, (size_t)n + 1);
-                return n;
-            }
-        }
-        /* the decimal N 10^(ee-P+1) read back without its text: the same
-         * correctly rounded conversion parse_double makes of it; the text
-         * is laid out only for the candidate that verifies (or when the
-         * conversion needs strtod) */
-        double back;
-        if (decimal_to_double(N, P, ee - P + 1, x < 0, &back) && back != x)
-            continue;
-        int n = layout_g(tmp, x < 0, N, P, ee);
-        const char *end = parse_double_padded(tmp, &back);
-        if (end && *end == 0 && back == x) {
-            memcpy(buf, tmp, (size_t)n + 1);
-            return n;
-        }
-    }
-    return 0;
-}
-#endif
-
+/* The shortest decimal that reads back to x (shortest_decimal: Dragonbox),
+ * laid out as %.Pg with P = max(15, its digits).  For a normal double
+ * that is what the shortest of %.15g, %.16g, %.17g that reads back
+ * prints: a decimal of 15 or fewer digits that reads back is within half
+ * an ulp (< 1.2e-16 relative) of x, nearer than half the 15-digit spacing
+ * (>= 5e-16 relative), so %.15g prints it; with 16 or 17 digits both are
+ * the nearest decimal of that length.  Subnormals print in the same %e
+ * form as %.Pg with their own (shorter) P.  Infinities and NaNs as printf
+ * prints them. */
 int format_double(char *buf, double x)
 {
     if (x == 0) {                      /* keep the sign of -0 bit-exact */
@@ -444,22 +370,13 @@ int format_double(char *buf, double x)
         if (signbit(x)) { buf[0] = '-'; buf[1] = '0'; buf[2] = 0; return 2; }
         return 1;
     }
-    /* for normal doubles a shorter round-trip decimal is also what %.15g
-     * prints (it is the nearest 15-digit decimal); subnormals have fewer
-     * significant bits, so search them from 1 digit */
-    int first = fabs(x) < DBL_MIN ? 1 : 15;
-#if LDBL_MANT_DIG == 64
-    if (first == 15 && isfinite(x)) {
-        int n = format_fast(buf, x);
-        if (n > 0)
-            return n;
-    }
-#endif
-    for (int prec = first; prec <= 17; prec++) {
-        int n = snprintf(buf, 32, "%.*g", prec, x);
-        double y;
-        if (prec == 17 || (parse_double(buf, &y) && y == x))
-            return n;
-    }
-    return 0;
+    if (!isfinite(x))
+        return snprintf(buf, 32, "%g", x);
+    uint64_t s;
+    int E;
+    shortest_decimal(x, &s, &E);
+    int k = 1;
+    while (k < 17 && s >= p10u[k]) k++;
+    int P = k < 15 ? 15 : k;
+    return layout_g(buf, x < 0, s * p10u[P - k], P, E + k - 1);
 }

@@ -5,8 +5,10 @@
  * correctly rounded) and falls back to strtod() for everything else, so the
  * result is always the correctly rounded double.  About 5-10x strtod.
  *
- * format_double() writes the shortest of %.15g, %.16g, %.17g that reads back
- * to the same double, so plain -> raw -> plain is bit-exact.
+ * format_double() writes what the first of %.15g, %.16g, %.17g that reads
+ * back to the same double prints (so plain -> raw -> plain is bit-exact),
+ * from the shortest decimal of x (shortest.h: Dragonbox, via {fmt}) laid
+ * out in %g style, without printf.
  */
 #ifndef CM_NUMPARSE_H
 #define CM_NUMPARSE_H

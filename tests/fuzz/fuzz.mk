@@ -16,7 +16,7 @@ SAN := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-fr
 CPPFLAGS := -Ilibcommon -I/usr/include/eigen3 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -D_GNU_SOURCE
 CFLAGS   := -O1 -g -std=c11 -pthread $(SAN) -fsanitize=fuzzer-no-link
 CXXFLAGS := -O1 -g -std=c++17 -pthread -frounding-math $(SAN) -fsanitize=fuzzer-no-link
-LDLIBS   := -lOpenMeshCore -lassimp -lz -lgmp -lmpfr -lstdc++ -lm
+LDLIBS   := -lOpenMeshCore -lassimp -lz -lgmp -lmpfr -lfmt -lstdc++ -lm
 # the readers and what they call (the closure over their #includes)
 SRC := $(shell sh tests/fuzz/deps.sh mesh columns landmarks rings compat_tri meshio anim_import)
 OBJ := $(SRC:%=$(FB)/%.o)
