@@ -489,14 +489,19 @@ struct kept_job {
 };
 
 /* o[t] (+)= v ((b[t] - ref[t]) + x[t] q) for t in [0, len), x int32
- * (xi) or float (xf); add = 0: o = ref + (...) instead (a row copy) */
+ * (xi), the same integer read from the frame where it lies (xm:
+ * replib_kept_int of it, iq = 1 / q), or float (xf; then without q); add
+ * = 0: o = ref + (...) instead (a row copy) */
 __attribute__((optimize("O3"), target_clones("avx512f", "avx2", "default")))
 static void kept_axpy(double *restrict o, double v, const double *restrict b, const double *restrict ref,
-                      const int32_t *restrict xi, const float *restrict xf, double q, size_t len, int add)
+                      const int32_t *restrict xi, const mapped_double *restrict xm, const float *restrict xf,
+                      double q, double iq, size_t len, int add)
 {
     if (!add && xi) for (size_t t = 0; t < len; t++) o[t] = ref[t] + ((b[t] - ref[t]) + xi[t] * q);
+    else if (!add && xm) for (size_t t = 0; t < len; t++) o[t] = ref[t] + ((b[t] - ref[t]) + replib_kept_int(xm[t], b[t], iq) * q);
     else if (!add) for (size_t t = 0; t < len; t++) o[t] = ref[t] + ((b[t] - ref[t]) + xf[t]);
     else if (xi) for (size_t t = 0; t < len; t++) o[t] += v * ((b[t] - ref[t]) + xi[t] * q);
+    else if (xm) for (size_t t = 0; t < len; t++) o[t] += v * ((b[t] - ref[t]) + replib_kept_int(xm[t], b[t], iq) * q);
     else for (size_t t = 0; t < len; t++) o[t] += v * ((b[t] - ref[t]) + xf[t]);
 }
 
@@ -507,20 +512,87 @@ static void kept_block(void *ctx, int i)
     const struct lstate *s = j->s;
     size_t m3 = D->m3, t0 = (size_t)i * KEPT_COLS, len = t0 + KEPT_COLS < m3 ? KEPT_COLS : m3 - t0;
     const double *ref = D->ref + t0;
+    double q = D->xstep, iq = q > 0 ? 1 / q : 0;
 #define BASE(g) ((D->xbase ? D->xbase + (size_t)((g) / REPLIB_KEEP_CHUNK) * m3 : D->ref) + t0)
 #define XI(g) (D->Xi ? D->Xi + (size_t)(g) * m3 + t0 : NULL)
-#define XF(g) (D->Xi ? NULL : D->Xf + (size_t)(g) * m3 + t0)
+#define XM(g) (!D->Xi && D->Xm ? D->Xm[g] + t0 : NULL)
+#define XF(g) (D->Xi || D->Xm ? NULL : D->Xf + (size_t)(g) * m3 + t0)
     for (int a = 0; a < s->d; a++) {
         int g = s->src[a];
-        if (g >= 0) kept_axpy(j->R + (size_t)a * m3 + t0, 0, BASE(g), ref, XI(g), XF(g), D->xstep, len, 0);
+        if (g >= 0) kept_axpy(j->R + (size_t)a * m3 + t0, 0, BASE(g), ref, XI(g), XM(g), XF(g), q, iq, len, 0);
     }
     for (int k = 0; k < s->nnz; k++) {
         int g = s->ci[k];
-        kept_axpy(j->tmp + (size_t)s->ri[k] * m3 + t0, s->v[k], BASE(g), ref, XI(g), XF(g), D->xstep, len, 1);
+        kept_axpy(j->tmp + (size_t)s->ri[k] * m3 + t0, s->v[k], BASE(g), ref, XI(g), XM(g), XF(g), q, iq, len, 1);
     }
 #undef BASE
 #undef XI
+#undef XM
 #undef XF
+}
+
+/* The library from frames read where they lie (D->Xm), one piece per job:
+ * a copied frame, or a free row's nonzeros in k order, so every value is
+ * the sum kept_block forms, term by term in the same order (the same
+ * bytes).  Each frame is read whole, and its pages are released after the
+ * job that reads it last (jobs start in piece order), so the resident set
+ * stays a window of the file instead of all of it. */
+struct kept_rows {
+    const struct replib_data *D;
+    const struct lstate *s;
+    double *R, *tmp;
+    const int *row, *start, *ent, *last;    /* row[a]: free row of piece a or -1; CSR of the nonzeros by row
+                                               (k order); last[g]: the last piece that reads frame g */
+};
+
+static void kept_row(void *ctx, int a)
+{
+    const struct kept_rows *j = ctx;
+    const struct replib_data *D = j->D;
+    const struct lstate *s = j->s;
+    size_t m3 = D->m3;
+    double q = D->xstep, iq = q > 0 ? 1 / q : 0;
+#define BASE(g) (D->xbase ? D->xbase + (size_t)((g) / REPLIB_KEEP_CHUNK) * m3 : D->ref)
+#define DONE(g) do { if (j->last[g] == a) mapped_release((const void *)D->Xm[g], (const void *)(D->Xm[g] + m3)); } while (0)
+    int g = s->src[a], p = j->row[a];
+    if (g >= 0) {
+        kept_axpy(j->R + (size_t)a * m3, 0, BASE(g), D->ref, NULL, D->Xm[g], NULL, q, iq, m3, 0);
+        DONE(g);
+    }
+    if (p < 0) return;
+    for (int e = j->start[p]; e < j->start[p + 1]; e++) {
+        int k = j->ent[e];
+        g = s->ci[k];
+        kept_axpy(j->tmp + (size_t)p * m3, s->v[k], BASE(g), D->ref, NULL, D->Xm[g], NULL, q, iq, m3, 1);
+    }
+    for (int e = j->start[p]; e < j->start[p + 1]; e++) DONE(s->ci[j->ent[e]]);
+#undef BASE
+#undef DONE
+}
+
+/* kept_row's jobs over every piece; tmp: nf by 3#V zeros.  Returns 0 or -1
+ * (allocation). */
+static int library_rows(const struct replib_data *D, const struct lstate *s, double *R, double *tmp, int threads)
+{
+    int d = s->d, nf = s->nfree, n = D->n;
+    int *row = malloc(sizeof(int) * d), *start = calloc(nf + 2, sizeof(int));
+    int *ent = malloc(sizeof(int) * (s->nnz + 1)), *last = malloc(sizeof(int) * n);
+    if (!row || !start || !ent || !last) { free(row); free(start); free(ent); free(last); return cm_seterr("replib: out of memory"); }
+    for (int a = 0; a < d; a++) row[a] = -1;
+    for (int p = 0; p < nf; p++) row[s->fidx[p]] = p;
+    for (int k = 0; k < s->nnz; k++) start[s->ri[k] + 2]++;
+    for (int p = 0; p < nf; p++) start[p + 2] += start[p + 1];
+    for (int k = 0; k < s->nnz; k++) ent[start[s->ri[k] + 1]++] = k;     /* start[p + 1] ends row p */
+    for (int f = 0; f < n; f++) last[f] = -1;
+    for (int a = 0; a < d; a++) if (s->src[a] >= 0 && s->src[a] < n && a > last[s->src[a]]) last[s->src[a]] = a;
+    for (int k = 0; k < s->nnz; k++) {
+        int a = s->fidx[s->ri[k]], g = s->ci[k];
+        if (a > last[g]) last[g] = a;
+    }
+    struct kept_rows job = {D, s, R, tmp, row, start, ent, last};
+    parallel_run(d, threads, kept_row, &job);
+    free(row); free(start); free(ent); free(last);
+    return 0;
 }
 
 /* The library in model coordinates (d by 3#V): from the frames (double or
@@ -529,13 +601,17 @@ static int library_out(const struct replib_data *D, const struct lstate *s, doub
 {
     int n = D->n, m3 = D->m3, d = s->d;
     if (D->X) return lstate_apply(s, D->X, n, D->Rfix, m3, R);
-    if (D->Xf || D->Xi) {
+    if (D->Xf || D->Xi || D->Xm) {
         /* rows are frames only (no fixed pieces with the sketch) */
         int nf = s->nfree;
         double *tmp = nf ? big_calloc(sizeof(double) * (size_t)nf * m3) : NULL;
         if (nf && !tmp) return cm_seterr("replib: out of memory");
-        struct kept_job job = {D, s, R, tmp};
-        parallel_run((m3 + KEPT_COLS - 1) / KEPT_COLS, threads, kept_block, &job);
+        if (D->Xm && !D->Xi) {
+            if (library_rows(D, s, R, tmp, threads) < 0) { free(tmp); return -1; }
+        } else {
+            struct kept_job job = {D, s, R, tmp};
+            parallel_run((m3 + KEPT_COLS - 1) / KEPT_COLS, threads, kept_block, &job);
+        }
         if (nf) lsolve(s, m3, tmp);
         for (int p = 0; p < nf; p++) {
             double *o = R + (size_t)s->fidx[p] * m3;
@@ -2267,6 +2343,7 @@ struct eval_job {
     const double *X, *xbase, *ref, *R, *w;
     const float *Xf;
     const int32_t *Xi;
+    const mapped_double *const *Xm;
     double q;
     int n, nv, oom;
     const int *l;
@@ -2278,12 +2355,15 @@ struct eval_job {
 };
 
 /* frame f of the kept 32-bit frames in double (b + kept q, or b + kept;
- * element-wise, vectorized) */
+ * element-wise, vectorized); xm: the integers read where the frame lies
+ * (as kept_axpy) */
 __attribute__((optimize("O3"), target_clones("avx512f", "avx2", "default")))
-static void kept_frame(const double *restrict b, const int32_t *restrict xi, const float *restrict xf, double q,
-                       size_t m3, double *restrict out)
+static void kept_frame(const double *restrict b, const int32_t *restrict xi, const mapped_double *restrict xm,
+                       const float *restrict xf, double q, size_t m3, double *restrict out)
 {
+    double iq = q > 0 ? 1 / q : 0;
     if (xi) for (size_t k = 0; k < m3; k++) out[k] = b[k] + xi[k] * q;
+    else if (xm) for (size_t k = 0; k < m3; k++) out[k] = b[k] + replib_kept_int(xm[k], b[k], iq) * q;
     else for (size_t k = 0; k < m3; k++) out[k] = b[k] + xf[k];
 }
 
@@ -2293,6 +2373,7 @@ static void eval_half(void *ctx, int job)
     const double *X = j->X, *xbase = j->xbase, *ref = j->ref, *R = j->R, *w = j->w;
     const float *Xf = j->Xf;
     const int32_t *Xi = j->Xi;
+    const mapped_double *const *Xm = j->Xm;
     double q = j->q;
     int n = j->n, nv = j->nv;
     const int *l = j->l;
@@ -2306,8 +2387,10 @@ static void eval_half(void *ctx, int job)
         xb = malloc(sizeof(double) * 2 * m3);
         if (!xb) { j->oom = 1; return; }
 #define KEPT(f, out) kept_frame(xbase ? xbase + (size_t)((f) / REPLIB_KEEP_CHUNK) * m3 : ref, \
-                                Xi ? Xi + (size_t)(f) * m3 : NULL, Xi ? NULL : Xf + (size_t)(f) * m3, q, m3, out)
+                                Xi ? Xi + (size_t)(f) * m3 : NULL, Xm ? Xm[f] : NULL, \
+                                Xi || Xm ? NULL : Xf + (size_t)(f) * m3, q, m3, out)
         KEPT(0, job == 0 ? xb : xb + m3);
+        if (Xm && job == 1) mapped_release((const void *)Xm[0], (const void *)(Xm[0] + m3));
         xcur = xb; xnext = xb + m3;
     }
     for (int f = 0; f < n; f++) {
@@ -2324,6 +2407,7 @@ static void eval_half(void *ctx, int job)
             }
             if (j->frame_err) j->frame_err[f] = fm;
             if (fm > me) { me = fm; worst = f; }
+            if (Xm) mapped_release((const void *)Xm[f], (const void *)(Xm[f] + m3));     /* read where it lies */
             continue;
         }
         if (xb) {
@@ -2331,6 +2415,7 @@ static void eval_half(void *ctx, int job)
              * two swap roles instead of a copy (3#V doubles per frame) */
             double *t = xcur; xcur = xnext; xnext = t;
             if (f + 1 < n) KEPT(f + 1, xnext);
+            if (Xm && f + 1 < n) mapped_release((const void *)Xm[f + 1], (const void *)(Xm[f + 1] + m3));
 #undef KEPT
         }
         const double *x = xb ? xcur : X + f * m3, *r = R + l[f] * m3;
@@ -2355,13 +2440,13 @@ static void eval_half(void *ctx, int job)
     free(xb);
 }
 
-static void evaluate(const double *X, const float *Xf, const int32_t *Xi, double q, const double *xbase,
-                     const double *ref, int n, int nv, const double *R,
+static void evaluate(const double *X, const float *Xf, const int32_t *Xi, const mapped_double *const *Xm, double q,
+                     const double *xbase, const double *ref, int n, int nv, const double *R,
                      const int *l, const double *w, const unsigned char *cut, double lambda,
                      struct replib_report *rep, double *frame_err)
 {
     struct eval_job j = {0};
-    j.X = X; j.xbase = xbase; j.ref = ref; j.R = R; j.w = w; j.Xf = Xf; j.Xi = Xi; j.q = q;
+    j.X = X; j.xbase = xbase; j.ref = ref; j.R = R; j.w = w; j.Xf = Xf; j.Xi = Xi; j.Xm = Xm; j.q = q;
     j.n = n; j.nv = nv; j.l = l; j.cut = cut; j.frame_err = frame_err;
     parallel_run(2, 2, eval_half, &j);
     if (j.oom) { memset(rep, 0, sizeof *rep); rep->energy = NAN; return; }
@@ -2380,7 +2465,7 @@ void replib_evaluate(const double *X, int n, int nv, const double *R, int d, con
                      struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(X, NULL, NULL, 0, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(X, NULL, NULL, NULL, 0, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }
 
 void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
@@ -2388,7 +2473,7 @@ void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, 
                        struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(NULL, Xf, NULL, 0, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(NULL, Xf, NULL, NULL, 0, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }
 
 void replib_evaluate_i(const int32_t *Xi, double q, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
@@ -2396,5 +2481,13 @@ void replib_evaluate_i(const int32_t *Xi, double q, const double *xbase, const d
                        struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(NULL, NULL, Xi, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(NULL, NULL, Xi, NULL, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+}
+
+void replib_evaluate_m(const mapped_double *const *Xm, double q, const double *xbase, const double *ref, int n, int nv,
+                       const double *R, int d, const int *l, const double *w, const unsigned char *cut, double lambda,
+                       struct replib_report *rep, double *frame_err)
+{
+    (void)d;
+    evaluate(NULL, NULL, NULL, Xm, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }

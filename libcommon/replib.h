@@ -31,6 +31,7 @@
  */
 #ifndef CM_REPLIB_H
 #define CM_REPLIB_H
+#include "mapped_frames.h"
 #include <stddef.h>
 #include <stdint.h>
 #ifdef __cplusplus
@@ -38,6 +39,16 @@ extern "C" {
 #endif
 
 #define REPLIB_KEEP_CHUNK 64      /* frames per base of the kept 32-bit frames */
+
+/* The kept integer of coordinate x about its base b on the input's grid
+ * (iq = 1 / step): (x - b) / step rounded to nearest, ties to even, by the
+ * 1.5 2^52 trick (|(x - b) iq| < 2^31 is checked first).  The one formula
+ * of the kept frames (replib_sketch.c) and of the frames read where they
+ * lie (replib_data.Xm), so the two give the same numbers. */
+static inline double replib_kept_int(double x, double b, double iq)
+{
+    return ((x - b) * iq + 6755399441055744.0) - 6755399441055744.0;
+}
 #define REPLIB_SAMPLE_BLOCK 64    /* consecutive frames per block of a sample (replib_opts.sample) */
 
 enum replib_method { REPLIB_DP = 0, REPLIB_EXPANSION = 1, REPLIB_SWAP = 2 };
@@ -72,6 +83,9 @@ struct replib_data {
     double xstep;               /* the step of Xi */
     const double *xbase;        /* ceil(n / REPLIB_KEEP_CHUNK) by 3#V: frame f of Xi or Xf is
                                    x_f = xbase[f / REPLIB_KEEP_CHUNK] + kept (NULL: ref + kept) */
+    const mapped_double *const *Xm;   /* n frames where they lie in a file mapping, read as the
+                                   integers Xi would hold: x_f = b + round((x - b) / xstep) xstep
+                                   (every value checked on that grid), or NULL: */
     const float *Xf;            /* n by 3#V: x_f - ref in single precision, or NULL: */
     const double *V;            /* 3#V by zdim orthonormal basis, z ~ Zr V^T */
     const double *ref;          /* 3#V reference frame */
@@ -225,6 +239,11 @@ void replib_evaluate_i(const int32_t *Xi, double q, const double *xbase, const d
  * bases or NULL for ref, ref: 3#V). */
 void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
                        const int *l, const double *w, const unsigned char *cut, double lambda,
+                       struct replib_report *rep, double *frame_err);
+/* The same with the frames where they lie (Xm: n frame pointers), read as
+ * replib_data.Xm says (q: their step, xbase: the bases, ref: 3#V). */
+void replib_evaluate_m(const mapped_double *const *Xm, double q, const double *xbase, const double *ref, int n, int nv,
+                       const double *R, int d, const int *l, const double *w, const unsigned char *cut, double lambda,
                        struct replib_report *rep, double *frame_err);
 
 #ifdef __cplusplus

@@ -402,19 +402,19 @@ SKETCH_SIMD
 static int chunk_ints(struct replib_sketch *S, const mapped_double *const *xs, int f0, int nb, const double *restrict o,
                       double q, double iq, double *e)
 {
-    int m3 = S->m3, bad = 0;
+    int m3 = S->m3, bad = 0, store = !S->decode;
     double tol = 1e-3 * q;
     int64_t em;
     memcpy(&em, e, sizeof em);
     for (int g = 0; g < nb; g++) {
         const mapped_double *restrict x = xs[g];
-        int32_t *restrict xi = (int32_t *)S->Xk + (size_t)(f0 + g) * m3;
+        int32_t *restrict xi = store ? (int32_t *)S->Xk + (size_t)(f0 + g) * m3 : NULL;
         for (int t = 0; t < m3; t++) {
             double v = x[t] - o[t], u = v * iq;
-            double k = (u + 6755399441055744.0) - 6755399441055744.0, ek = fabs(k * q - v);
+            double k = replib_kept_int(x[t], o[t], iq), ek = fabs(k * q - v);
             bad |= !(fabs(u) <= 2147483647.0) | (ek > tol);
             double kc = k < -2147483647.0 ? -2147483647.0 : k > 2147483647.0 ? 2147483647.0 : k;
-            xi[t] = (int32_t)kc;
+            if (store) xi[t] = (int32_t)kc;     /* decode: only checked */
             int64_t eb;
             memcpy(&eb, &ek, sizeof eb);
             em = eb > em ? eb : em;
@@ -444,6 +444,14 @@ static void keep_chunk(struct replib_sketch *S, int f1, const double *kb)
     chunk_range(xs, nb, m3, lo, hi);
     for (int t = 0; t < m3; t++)
         o[t] = q > 0 ? nearbyint(0.5 * (lo[t] + hi[t]) / q) * q : 0.5 * (lo[t] + hi[t]);
+    if (S->decode) {
+        /* frames read where they lie later: only the check (the first
+         * value off the grid ends the checks; finish encodes them all) */
+        if (!S->offgrid && !(S->fixed && chunk_ints(S, xs, f0, nb, o, q, iq, &e) == 0)) S->offgrid = 1;
+        if (e > S->float_err) S->float_err = e;
+        if (S->release) mapped_release((const void *)xs[0], (const void *)(xs[nb - 1] + m3));
+        return;
+    }
     int done = S->fixed && chunk_ints(S, xs, f0, nb, o, q, iq, &e) == 0;    /* every value on the grid */
     for (int g = 0; g < nb && S->fixed && !done; g++) {
         const mapped_double *x = xs[g];
@@ -628,6 +636,7 @@ static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, 
         memcpy(S->ref, (const void *)x, sizeof(double) * m3);
         S->xstep = replib_input_step(S->ref, m3);
         S->fixed = S->xstep > 0;
+        if (!S->fixed || !byref) S->decode = 0;     /* no grid to read the integers on */
     }
     if (S->keeping) {
         size_t need = (size_t)(f + 1) * m3 * 4;
@@ -637,7 +646,8 @@ static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, 
         } else {
             /* grow the kept frames geometrically, within the budget */
             void *nx = S->Xk;
-            if (f == S->xcap) {
+            if (S->decode) nx = S;          /* none to grow: read where they lie */
+            else if (f == S->xcap) {
                 size_t nc = S->xcap ? 2 * (size_t)S->xcap : 256, lim = S->keep_bytes / ((size_t)m3 * 4);
                 if (!S->xcap && S->expect > 0) nc = (size_t)S->expect;
                 if (nc > lim) nc = lim;
@@ -689,6 +699,20 @@ int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
     keeper_stop(S);                 /* the chunks handed over are encoded */
     if (S->keeping && S->n % REPLIB_KEEP_CHUNK)
         keep_chunk(S, S->n, S->xref ? NULL : S->kb + (size_t)((S->n - 1) / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * S->m3);
+    if (S->keeping && S->decode && S->offgrid) {
+        /* a value off the grid: keep the frames after all, every chunk
+         * encoded in order from where it lies, as it would have been on
+         * the way (the same floats and rounding report) */
+        S->decode = 0;
+        S->Xk = big_alloc((size_t)S->n * S->m3 * 4);
+        if (!S->Xk) { S->keeping = 0; }
+        else {
+            S->xcap = S->n;
+            S->fixed = S->xstep > 0; S->floated = 0; S->float_err = 0;
+            for (int f1 = REPLIB_KEEP_CHUNK; f1 - REPLIB_KEEP_CHUNK < S->n; f1 += REPLIB_KEEP_CHUNK)
+                keep_chunk(S, f1 < S->n ? f1 : S->n, NULL);
+        }
+    }
     int n = S->n, k = S->k, s = S->s, m3 = S->m3, info = 0;
     if (n < 1) return cm_seterr("replib_sketch: no frames");
     if (!S->keeping && S->sw)
@@ -831,8 +855,9 @@ int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
     /* fill D as replib_prepare would */
     memset(D, 0, sizeof *D);
     D->n = D->N = n; D->nv = S->nv; D->m3 = m3; D->X = NULL;
-    D->Xf = S->keeping && !S->fixed ? (const float *)S->Xk : NULL;
-    D->Xi = S->keeping && S->fixed ? (const int32_t *)S->Xk : NULL;
+    D->Xm = S->keeping && S->decode ? S->xp : NULL;
+    D->Xf = S->keeping && !S->decode && !S->fixed ? (const float *)S->Xk : NULL;
+    D->Xi = S->keeping && !S->decode && S->fixed ? (const int32_t *)S->Xk : NULL;
     D->xstep = S->xstep; D->step = S->xstep; D->xbase = S->keeping ? S->xbase : NULL;
     D->ref = S->ref; D->V = S->V; D->sw = S->sw;
     D->link = calloc(n, 1);

@@ -75,6 +75,14 @@ struct replib_sketch {
     int release;                /* 1 (set by the caller): the referenced frames lie in a read-only
                                    private file mapping; their pages are released once read
                                    (mapped_release) and fault in again when a pass needs them */
+    int decode;                 /* 1 (set by the caller, with replib_sketch_add_ref):
+                                   the referenced frames stay mapped until the pieces are built, so
+                                   they are not copied into Xk: the helper only computes the bases
+                                   and checks that every value is on the grid, and finish points
+                                   D->Xm at the frames (the same numbers as Xi; no page of Xk to
+                                   zero and fill).  A value off the grid: finish keeps the frames
+                                   in Xk after all, encoded from where they lie (the same result) */
+    int offgrid;                /* decode: a value was found off the grid or out of range */
     uint64_t seed;
     double zn;                  /* |Z|_F^2 */
     double float_err;           /* max |kept(x - x_0) - (x - x_0)| over kept frames (model units) */

@@ -1,5 +1,5 @@
 #!/bin/sh
-test_description='dict-learn maps a raw stream in a regular file (frames sketched where they lie): same bytes as from a pipe, errors as the reader gives them'
+test_description='dict-learn maps a raw stream in a regular file (frames sketched, and read again for the pieces, where they lie): same bytes as from a pipe, errors as the reader gives them'
 . "$(dirname "$0")/test-lib.sh"
 . "$TEST_DIRECTORY/dict-lib.sh"
 
@@ -9,23 +9,31 @@ test_expect_success 'setup: a 300-frame head, a full-rank copy on the 6-decimal 
 	head -1 noisy.raw | grep "^MESH 1 raw$" &&
 	mesh-info head.mesh | awk "/^vertices /{ for (i = 0; i < \$2; i++) print 1 + i % 3 }" >w.txt
 '
-# same library, labels and report: file (mapped), stdin redirected from the
-# file (mapped too), pipe (read and copied)
+# same library, labels and report: file (mapped; frames read again where
+# they lie), stdin redirected from the file (mapped too), the file mapped
+# with its frames kept in 32 bits (as a file above half the memory is),
+# pipe (read and copied)
 same3() { # tag file options...
 	t=$1 f=$2; shift 2
 	dict-learn -v "$@" --report $t.f.rep --labels-out $t.f.lab $f >$t.f.lib 2>$t.f.log &&
 	dict-learn -v "$@" --report $t.r.rep --labels-out $t.r.lab <$f >$t.r.lib 2>$t.r.log &&
+	STOPMO_DICT_KEEP_MAPPED=1 dict-learn -v "$@" --report $t.k.rep --labels-out $t.k.lab $f >$t.k.lib 2>$t.k.log &&
 	cat $f | dict-learn -v "$@" --report $t.p.rep --labels-out $t.p.lab >$t.p.lib 2>$t.p.log &&
 	grep "mapped: raw frames sketched where they lie" $t.f.log &&
 	grep "mapped: raw frames sketched where they lie" $t.r.log &&
+	grep "mapped: raw frames sketched where they lie" $t.k.log &&
+	! grep "frames read" $t.k.log &&
 	! grep "mapped" $t.p.log &&
-	for v in r p; do
+	for v in r k p; do
 		test_cmp $t.f.lib $t.$v.lib && test_cmp $t.f.lab $t.$v.lab && test_cmp $t.f.rep $t.$v.rep || return 1
 	done
 }
-test_expect_success 'on the decimal grid (frames kept as integers): file = pipe, lambda 0 and 2, weights' '
+test_expect_success 'on the decimal grid (frames read again where they lie as the integers a pipe keeps): file = pipe, lambda 0 and 2, weights' '
 	same3 a noisy.raw -d 9 -l 2 --stream on &&
-	grep "frames kept exactly as integers" a.f.log &&
+	grep "frames read exactly as integers" a.f.log &&
+	grep "frames read exactly as integers" a.r.log &&
+	grep "frames kept exactly as integers" a.p.log &&
+	grep "frames kept exactly as integers" a.k.log &&
 	same3 b noisy.raw -d 12 -l 0 --stream on &&
 	same3 c noisy.raw -d 9 -l 2 --stream on -w w.txt
 '

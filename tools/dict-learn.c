@@ -23,6 +23,7 @@
 #include <string.h>
 #include <time.h>
 #include <sys/mman.h>
+#include <unistd.h>
 
 #define DEFAULT_SAMPLE 16384    /* --sample */
 #define STR_(x) #x
@@ -223,6 +224,9 @@ static void learn(const struct replib_data *D, const struct options *o, int d,
     else if (D->Xi)
         replib_evaluate_i(D->Xi, D->xstep, D->xbase, D->ref, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
                           o->lambda, &run->rep, NULL);
+    else if (D->Xm)
+        replib_evaluate_m(D->Xm, D->xstep, D->xbase, D->ref, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
+                          o->lambda, &run->rep, NULL);
     else if (D->Xf)
         replib_evaluate_f(D->Xf, D->xbase, D->ref, m->nframes, m->nv, run->res.R, d, run->res.labels, w, m->cut,
                           o->lambda, &run->rep, NULL);
@@ -314,6 +318,16 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
         if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
             die("%s", cm_errmsg());
         S->expect = r.nframes > 0 ? r.nframes : 0;
+        /* the file stays mapped until the pieces are built, and its frames
+         * are read there again (as the integers of the input's step they
+         * would be kept as: the same numbers) instead of copied into
+         * 32-bit frames: no memory to zero and fill.  Pages are released
+         * once read, each pass: the resident set stays a window of the
+         * file.  A file larger than half the memory is kept as before
+         * (the page cache would not hold it between the passes). */
+        double phys = (double)sysconf(_SC_PHYS_PAGES) * (double)sysconf(_SC_PAGESIZE);
+        const char *km = getenv("STOPMO_DICT_KEEP_MAPPED");
+        S->decode = keep > 0 && r.nframes > 0 && (double)r.nframes * fb <= 0.5 * phys && !(km && strcmp(km, "0"));
         S->release = 1;
         info(1, "read: '%s' mapped: raw frames sketched where they lie in the file", r.name);
         /* a second thread finds the frames (headers, checks, page tables)
@@ -421,12 +435,14 @@ int main(int argc, char **argv)
     if (streamed) {
         if (replib_sketch_finish(&S, &D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
         D.w = o.weights ? wc.x : NULL;
-        if (map) munmap((void *)map, maplen);      /* the frames are read */
+        if (map && !D.Xm) { munmap((void *)map, maplen); map = NULL; }     /* the frames are read */
         info(1, "sketch: rank %d captures %.8f of |Z|^2; frames %s", D.zdim, S.captured,
-             D.Xi ? "kept in 32-bit integers of the input's step" : D.Xf ? "kept in single precision" :
-             "not kept (pieces from the sketch)");
-        if (D.Xi) info(1, "sketch: frames kept exactly as integers of the input's step %g (largest rounding %.3g model units)",
-                       D.xstep, S.float_err);
+             D.Xi ? "kept in 32-bit integers of the input's step" :
+             D.Xm ? "read where they lie in the file, as integers of the input's step" :
+             D.Xf ? "kept in single precision" : "not kept (pieces from the sketch)");
+        if (D.Xi || D.Xm)
+            info(1, "sketch: frames %s exactly as integers of the input's step %g (largest rounding %.3g model units)",
+                 D.Xi ? "kept" : "read", D.xstep, S.float_err);
         else if (D.Xf) info(1, "sketch: single-precision frames: largest rounding %.3g model units%s", S.float_err,
                             S.xstep > 0 ? " (a frame left the input's decimal grid or its range)" : " (no decimal step)");
     } else {
@@ -466,7 +482,7 @@ int main(int argc, char **argv)
 
     struct run best;
     int d = o.d;
-    if (o.max_error >= 0 && streamed && !D.Xf && !D.Xi)
+    if (o.max_error >= 0 && streamed && !D.Xf && !D.Xi && !D.Xm)
         die("--max-error needs the frames: they exceed --memory %g MB (raise it)", o.memory);
     if (o.max_error >= 0) {
         /* doubling then bisection on d (max error is nearly monotone in d) */
@@ -568,7 +584,7 @@ int main(int argc, char **argv)
     }
     FILE *out = out_open(o.output);
     struct mesh lib = {m.nv, m.nf, d, m.F, best.res.R, NULL};
-    if (streamed && !D.Xf && !D.Xi) info(1, "pieces reconstructed from the rank-%d sketch", D.zdim);
+    if (streamed && !D.Xf && !D.Xi && !D.Xm) info(1, "pieces reconstructed from the rank-%d sketch", D.zdim);
     unsigned char *cut = calloc(d, 1);
     lib.cut = cut;
     if (mesh_write(out, &lib, want_raw(o.raw)) < 0) die("cannot write output: %s", cm_errmsg());
@@ -578,6 +594,7 @@ int main(int argc, char **argv)
     replib_result_free(&best.res);
     replib_data_free(&D);
     replib_sketch_free(&S);
+    if (map) munmap((void *)map, maplen);
     free(init);
     columns_free(&wc);
     if (o.fixed) mesh_free(&fx);
