@@ -6,7 +6,9 @@
 # performances repeated back and forth with 0.1% noise, 6 decimals), lambda
 # = 2.  The whole tool is timed (read, sketch or Gram matrix, learn, write),
 # wall and CPU seconds and peak memory (/usr/bin/time; the machine may be
-# shared: CPU is the honest number).  Baselines in the same run: the
+# shared: CPU is the honest number); the current build and the release
+# before are run BENCH_DICT_REPS times (default 3), alternated, and the run
+# of the median wall of each is printed, with every wall.  Baselines in the same run: the
 # paper's reported time (Xeon 2.4 GHz, "labeling and update steps": compare
 # it with "learning alone", replib_learn's wall time), the release before
 # the current speed work (dict-learn at $PREREV, same options) and the one
@@ -68,27 +70,45 @@ timed() { # prints "wall cpu peak_MB energy learn_wall" of dict-learn-like comma
     l=$(sed -n 's/.*best restart [0-9]*, \([0-9.]*\) s$/\1/p' "$T/err" | tail -1)
     awk -v e="$e" -v l="${l:--}" '{ printf "%s %.2f %.0f %s %s", $1, $2 + $3, $4 / 1024, e, l }' "$T/time"
 }
+median() { # "wall ..." lines on stdin -> the line of the median wall, then the walls
+    sort -n | awk '{ l[NR] = $0; w[NR] = $1 } END { if (!NR) exit 1; printf "%s", l[int((NR + 1) / 2)]; printf " walls"; for (i = 1; i <= NR; i++) printf " %s", w[i]; printf "\n" }'
+}
+REPS=${BENCH_DICT_REPS:-3}
 line() { # name V F d paper_s old(0/1) file
     name=$1 V=$2 F=$3 d=$4 paper=$5 runold=$6 f=$7
     for opts in "" "-r 1 --search 0"; do
-        new=$(timed dict-learn -d $d -l 2 $opts "$f") || { echo "table1 $name: dict-learn failed"; continue; }
+        # the current and the release before, alternated $REPS times: the
+        # run of the median wall of each (a 2-s run on a shared machine
+        # varies by 20%)
+        : >"$T/new.runs"; : >"$T/pre.runs"
+        for i in $(seq $REPS); do
+            timed dict-learn -d $d -l 2 $opts "$f" >>"$T/new.runs" && echo >>"$T/new.runs" || break
+            [ $i = 1 ] && cp "$T/err" "$T/err1"
+            [ -n "$PRE" ] && { timed "$PRE" -d $d -l 2 $opts "$f" >>"$T/pre.runs" && echo >>"$T/pre.runs"; }
+        done
+        new=$(median <"$T/new.runs") || { echo "table1 $name: dict-learn failed"; continue; }
+        newwalls=${new#* walls }; new=${new% walls *}
+        cp "$T/err1" "$T/err"
         # the frames kept beside the sketch: their largest rounding against
         # half the input's decimal step (what the input can represent)
-        [ -z "$opts" ] && sed -n 's/.*frames kept exactly as integers of the input.s step \([^ ]*\) (largest rounding \([^ ]*\) .*/\1 \2/p; s/.*single-precision frames: largest rounding \([^ ]*\) .*/0 \1 float/p' "$T/err" |
+        [ -z "$opts" ] && sed -n 's/.*frames [kepread]* exactly as integers of the input.s step \([^ ]*\) (largest rounding \([^ ]*\) .*/\1 \2/p; s/.*single-precision frames: largest rounding \([^ ]*\) .*/0 \1 float/p' "$T/err" |
             awk -v n="$name" '{ kind = NF == 3 ? "floats" : "int32 of the input step " $1;
                 printf "kept frames %s (stream): largest rounding %.3g model units (%s) | baseline half the input step %s | ratio %.3g\n",
                     n, $2, kind, ($1 > 0 ? $1 / 2 : "-"), ($1 > 0 ? ($1 / 2) / ($2 > 0 ? $2 : 1e-300) : 0) }'
-        pre="- - - - -"
-        [ -n "$PRE" ] && { pre=$(timed "$PRE" -d $d -l 2 $opts "$f") || pre="- - - - -"; }
+        pre="- - - - -" prewalls=-
+        if [ -s "$T/pre.runs" ]; then
+            pre=$(median <"$T/pre.runs") && prewalls=${pre#* walls } && pre=${pre% walls *} || pre="- - - - -"
+        fi
         old="- - - - -"
         if [ -n "$OLD" ] && [ "$runold" = 1 ]; then
             old=$(timed "$OLD" -d $d -l 2 ${opts%--search 0} "$f") || old="- - - - -"
         fi
-        echo "$new $pre $old" | awk -v n="$name" -v V=$V -v F=$F -v d=$d -v p=$paper -v o="${opts:-defaults}" -v rev=$OLDREV -v prev=$PREREV '
+        echo "$new $pre $old" | awk -v n="$name" -v V=$V -v F=$F -v d=$d -v p=$paper -v o="${opts:-defaults}" -v rev=$OLDREV -v prev=$PREREV \
+            -v nw="$newwalls" -v pw="$prewalls" -v reps=$REPS '
             function r(a, b) { return (a == "-" || b == "-" || b == 0) ? "-" : sprintf("%.2f", a / b) }
             {
-            printf "table1 %s (%s v x %s f x %d pieces, lambda 2, %s): %.2f s wall (%.2f s cpu, %d MB, energy %.6g; learning alone %s s wall) | baseline paper %s s (learning alone); release %s %s s wall (%s s cpu, %s MB, energy %s; learning %s s); release %s %s s wall (%s s cpu, %s MB, energy %s) | ratio paper %.1f (cpu-based %.1f; learning alone %s), release %s %s (cpu %s), release %s %s (cpu %s), energy vs %s %s\n",
-                n, V, F, d, o, $1, $2, $3, $4, $5, p, prev, $6, $7, $8, $9, $10, rev, $11, $12, $13, $14,
+            printf "table1 %s (%s v x %s f x %d pieces, lambda 2, %s; median wall of %d runs: %s against %s): %.2f s wall (%.2f s cpu, %d MB, energy %.6g; learning alone %s s wall) | baseline paper %s s (learning alone); release %s %s s wall (%s s cpu, %s MB, energy %s; learning %s s); release %s %s s wall (%s s cpu, %s MB, energy %s) | ratio paper %.1f (cpu-based %.1f; learning alone %s), release %s %s (cpu %s), release %s %s (cpu %s), energy vs %s %s\n",
+                n, V, F, d, o, reps, nw, pw, $1, $2, $3, $4, $5, p, prev, $6, $7, $8, $9, $10, rev, $11, $12, $13, $14,
                 p / $1, p / ($2 / 2), r(p, $5), prev, r($6, $1), r($7, $2), rev, r($11, $1), r($12, $2),
                 prev, ($9 == "-" ? "-" : sprintf("%.4f", $4 / $9)) }'
     done
