@@ -37,7 +37,7 @@ LDLIBS   += -lcholmod -lsuitesparseconfig -lopenblas -llapack -lmaxflow \
 
 DEBS = build-essential pkg-config libsuitesparse-dev libopenblas-dev liblapack-dev \
        libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libopenmesh-dev libassimp-dev \
-       libmaxflow-dev libpng-dev zlib1g-dev libfmt-dev xz-utils perl
+       libmaxflow-dev libpng-dev zlib1g-dev libfmt-dev xz-utils perl time
 
 LIB_C   := $(wildcard libcommon/*.c)
 LIB_CXX := $(wildcard libcommon/*.cpp)
