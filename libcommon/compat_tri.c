@@ -952,14 +952,17 @@ static void stage1_row(void *ctx, int i)
     const struct sub *sp = ps->sp;
     int N = ps->N, m = ps->m, mode = ps->c->split_mode, rj = -1;
     double rowbest = -1;
+    int *ord = ps->row_ord + (size_t)N * i;
+    for (int s = 0; s < N; s++) ord[s] = s;
     for (int j = i + 2; j < m; j++) {
         if (i == 0 && j == m - 1) continue;
         double best = search_bound(ps, rowbest);
         double q = INFINITY;
-        int all = 1;
+        int all = 1, o;
         /* cheapest test first: the cone angles at both ends; stop at
          * the first shape where the pair does not see itself */
-        for (int s = 0; s < N && all; s++) {
+        for (o = 0; o < N; o++) {
+            int s = ord[o];
             if (!incone(&sp[s], i, V(&sp[s], j)) || !incone(&sp[s], j, V(&sp[s], i))) { all = 0; break; }
             /* a cone angle that cannot beat the best score needs no
              * atan2 (cone_quality_cut gives 0: rejected below) */
@@ -975,13 +978,22 @@ static void stage1_row(void *ctx, int i)
              * (score <= best), then the edge tests */
             double cut = best > 0 ? best / (1 + 0.25 * balance(i, j, m)) : 0;
             if (cut >= M_PI / 3) cut = 0;
-            double cl = clearance_cut(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j), cut);
+            /* below CLEARANCE_MIN the pair is out too: the loop over the
+             * corners may stop there (a value it returns early is below
+             * the cut it was given, the full value is too) */
+            double ccut = mode != COMPAT_LINKPATH && cut < CLEARANCE_MIN ? CLEARANCE_MIN : cut;
+            double cl = clearance_cut(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j), ccut);
             if (cut > 0 && cl <= cut) { all = 0; break; }
             /* a diagonal grazing another corner makes a sliver piece */
             if (cl < CLEARANCE_MIN && mode != COMPAT_LINKPATH) { all = 0; break; }
             if (seg_inside(&sp[s], i, V(&sp[s], i), j, V(&sp[s], j))) q = fmin(q, fmin(qq, cl));
-            else all = 0;
+            else { all = 0; break; }
         }
+        /* the shape that ruled the pair out is tried first next time, as
+         * in stage II (the order changes the work, not the result: a pair
+         * is kept only if every shape passes, its score is the smallest
+         * over all of them, and the cut-offs depend on best alone) */
+        if (!all && o > 0) { int s = ord[o]; memmove(ord + 1, ord, o * sizeof *ord); ord[0] = s; }
         if (all) {
             double sc = pair_score(q, i, j, m);
             if (sc > best) { rowbest = sc; rj = j; search_publish(ps, sc); }
@@ -1101,12 +1113,19 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     struct pair_search ps = {.c = c, .sp = sp, .N = N, .m = m};
     ps.row_score = malloc(m * sizeof *ps.row_score);
     ps.row_j = malloc(m * sizeof *ps.row_j);
+    ps.row_ord = malloc((size_t)N * m * sizeof *ps.row_ord);
+    if (!ps.row_score || !ps.row_j || !ps.row_ord) {
+        free(ps.row_score); free(ps.row_j); free(ps.row_ord);
+        for (int s = 0; s < N; s++) if (sp[s].grid) grid_free(&grid[s]);
+        free(grid); free(sp);
+        return cm_seterr("out of memory");
+    }
     /* stage I */
     double best;
     int bi = pair_search_run(&ps, stage1_row, &best), bj = bi >= 0 ? ps.row_j[bi] : -1;
     if (bi >= 0) {
         out->i = bi; out->j = bj; out->k = 0; out->path = NULL; out->stage = 0;
-        free(ps.row_score); free(ps.row_j);
+        free(ps.row_score); free(ps.row_j); free(ps.row_ord);
         for (int s = 0; s < N; s++) if (sp[s].grid) grid_free(&grid[s]);
         free(grid); free(sp);
         return 0;
@@ -1141,8 +1160,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     ps.vc = &vc; ps.cones = &cones; ps.C = C; ps.nc = nc; ps.nohug = nohug;
     ps.row_path = malloc(2 * (size_t)N * m * sizeof *ps.row_path);
     ps.row_tmp = malloc(2 * (size_t)N * m * sizeof *ps.row_tmp);
-    ps.row_ord = malloc((size_t)N * m * sizeof *ps.row_ord);
-    oom |= !ps.row_path || !ps.row_tmp || !ps.row_ord;
+    oom |= !ps.row_path || !ps.row_tmp;
     bi = oom ? -1 : pair_search_run(&ps, stage2_row, &best);
     bj = bi >= 0 ? ps.row_j[bi] : -1;
     double *bestpath = malloc(2 * (size_t)N * sizeof *bestpath);
