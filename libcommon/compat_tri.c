@@ -10,6 +10,7 @@
 #include <string.h>
 #include <stdatomic.h>
 #include <stdint.h>
+#include <stdio.h>
 #include "parallel.h"
 
 /* ------------------------------------------------------------------ */
@@ -1493,9 +1494,15 @@ static int overlay_repair(int N, double *const *Y, int m, int nvl, int *F, int *
 static int overlay_piece(struct compat *c, const int *poly, int m)
 {
     int N = c->N;
-    double **X = malloc(N * sizeof *X);
+    double **X = calloc(N, sizeof *X);
+    for (int s = 0; s < N && X; s++)
+        if (!(X[s] = malloc(2 * (size_t)m * sizeof **X))) {
+            for (int t = 0; t < s; t++) free(X[t]);
+            free(X);
+            X = NULL;
+        }
+    if (!X) return cm_seterr("out of memory");
     for (int s = 0; s < N; s++) {
-        X[s] = malloc(2 * (size_t)m * sizeof **X);
         for (int i = 0; i < m; i++) {
             X[s][2 * i] = c->X[s][2 * poly[i]];
             X[s][2 * i + 1] = c->X[s][2 * poly[i] + 1];
@@ -1542,17 +1549,180 @@ static int overlay_piece(struct compat *c, const int *poly, int m)
     return rc;
 }
 
-static int triangulate_rec(struct compat *c, int *poly, int m, int depth)
+/* The pieces the recursion leaves for later on several threads: those too
+ * small for the pair search's threads (fewer than PAIR_SEARCH_PARALLEL
+ * corners) and the overlays.  Each is triangulated on its own (struct
+ * compat holding only its corners), in parallel, and then spliced in at
+ * the place where the recursion left it: its new vertices and faces come
+ * where they would have come in the order of the one-thread recursion, so
+ * the mesh is the same bit for bit (a piece's triangulation depends only
+ * on its corners' positions, in its own numbering).  On one thread the
+ * recursion does every piece itself. */
+struct tri_leaf {
+    int *poly, m, depth;  /* its corners (vertex ids), depth in the recursion */
+    int overlay;          /* 1: choose_split found no split (overlay_piece) */
+    int nv, nf;           /* c->nv, c->nf when it was left: its place in the order */
+    struct compat loc;    /* the piece alone: its corners 0..m-1, then its new vertices */
+    int base;             /* the final id of its first new vertex */
+    char err[256];        /* "" if it was triangulated */
+};
+
+struct tri_defer {
+    const struct compat *c;
+    int n, cap;
+    struct tri_leaf *leaf;
+};
+
+static int defer_leaf(struct compat *c, struct tri_defer *df, const int *poly, int m, int depth, int overlay)
+{
+    if (df->n == df->cap) {
+        int cap = df->cap ? 2 * df->cap : 32;
+        struct tri_leaf *l = realloc(df->leaf, cap * sizeof *l);
+        if (!l) return cm_seterr("out of memory");
+        df->leaf = l; df->cap = cap;
+    }
+    struct tri_leaf *L = df->leaf + df->n;
+    memset(L, 0, sizeof *L);
+    if (!(L->poly = malloc(m * sizeof *L->poly))) return cm_seterr("out of memory");
+    memcpy(L->poly, poly, m * sizeof *poly);
+    L->m = m; L->depth = depth; L->overlay = overlay;
+    L->nv = c->nv; L->nf = c->nf;
+    df->n++;
+    return 0;
+}
+
+static int triangulate_rec(struct compat *c, int *poly, int m, int depth, struct tri_defer *df);
+
+/* triangulates leaf i of the struct tri_defer ctx on its own */
+static void leaf_job(void *ctx, int i)
+{
+    struct tri_defer *df = ctx;
+    const struct compat *c = df->c;
+    struct tri_leaf *L = df->leaf + i;
+    struct compat *lc = &L->loc;
+    int N = c->N, m = L->m, rc = -1;
+    lc->N = N; lc->split_mode = c->split_mode; lc->exhaustive = c->exhaustive; lc->threads = 1;
+    lc->nb = m;
+    int *lp = malloc(m * sizeof *lp);
+    if (lp && (lc->X = calloc(N, sizeof *lc->X)) && compat_reserve_vertices(lc, m) == 0) {
+        for (int s = 0; s < N; s++)
+            for (int v = 0; v < m; v++) {
+                lc->X[s][2 * v] = c->X[s][2 * L->poly[v]];
+                lc->X[s][2 * v + 1] = c->X[s][2 * L->poly[v] + 1];
+            }
+        lc->nv = m;
+        for (int v = 0; v < m; v++) lp[v] = v;
+        rc = L->overlay ? overlay_piece(lc, lp, m) : triangulate_rec(lc, lp, m, L->depth, NULL);
+    } else cm_seterr("out of memory");
+    if (rc < 0) snprintf(L->err, sizeof L->err, "%s", cm_errmsg()[0] ? cm_errmsg() : "out of memory");
+    free(lp);
+}
+
+/* the leaves' vertices and faces spliced into c in the recursion's order
+ * (c->nv, c->nf: the vertices and faces the recursion made itself, from
+ * nv0 on; ids below nv0 stay) */
+static int splice_leaves(struct compat *c, struct tri_defer *df, int nv0)
+{
+    if (!df->n) return 0;
+    int N = c->N, nv = c->nv, nf = c->nf, nv1 = nv, nf1 = nf;
+    for (int l = 0; l < df->n; l++) {
+        nv1 += df->leaf[l].loc.nv - df->leaf[l].m;
+        nf1 += df->leaf[l].loc.nf;
+    }
+    int *map = malloc(((size_t)nv + 1) * sizeof *map), *F = malloc(3 * ((size_t)nf1 + 1) * sizeof *F);
+    double **X = calloc(N, sizeof *X);
+    int rc = map && F && X ? 0 : -1;
+    for (int s = 0; s < N && rc == 0; s++)
+        if (!(X[s] = malloc(2 * ((size_t)nv1 + 1) * sizeof **X))) rc = -1;
+    if (rc < 0) {
+        free(map); free(F);
+        if (X) for (int s = 0; s < N; s++) free(X[s]);
+        free(X);
+        return cm_seterr("out of memory");
+    }
+    /* vertices: the recursion's up to each leaf's place, then the leaf's */
+    int out = nv0, pos = nv0;
+    for (int v = 0; v < nv0; v++) map[v] = v;
+    for (int l = 0; l <= df->n; l++) {
+        int upto = l < df->n ? df->leaf[l].nv : nv;
+        for (; pos < upto; pos++) map[pos] = out++;
+        if (l < df->n) { df->leaf[l].base = out; out += df->leaf[l].loc.nv - df->leaf[l].m; }
+    }
+    for (int s = 0; s < N; s++) {
+        memcpy(X[s], c->X[s], 2 * (size_t)nv0 * sizeof **X);
+        for (int v = nv0; v < nv; v++) memcpy(X[s] + 2 * (size_t)map[v], c->X[s] + 2 * (size_t)v, 2 * sizeof **X);
+        for (int l = 0; l < df->n; l++) {
+            const struct tri_leaf *L = df->leaf + l;
+            memcpy(X[s] + 2 * (size_t)L->base, L->loc.X[s] + 2 * (size_t)L->m,
+                   2 * (size_t)(L->loc.nv - L->m) * sizeof **X);
+        }
+    }
+    /* faces likewise (the faces before the recursion's first are kept) */
+    int of = 0, fpos = 0;
+    for (int l = 0; l <= df->n; l++) {
+        int upto = l < df->n ? df->leaf[l].nf : nf;
+        for (; fpos < upto; fpos++, of++)
+            for (int k = 0; k < 3; k++) F[3 * of + k] = map[c->F[3 * fpos + k]];
+        if (l == df->n) break;
+        const struct tri_leaf *L = df->leaf + l;
+        for (int f = 0; f < L->loc.nf; f++, of++)
+            for (int k = 0; k < 3; k++) {
+                int u = L->loc.F[3 * f + k];
+                F[3 * of + k] = u < L->m ? map[L->poly[u]] : L->base + u - L->m;
+            }
+    }
+    for (int l = 0; l < df->n; l++) {
+        c->nsteiner += df->leaf[l].loc.nsteiner;
+        for (int k = 0; k < 3; k++) c->stage_count[k] += df->leaf[l].loc.stage_count[k];
+    }
+    for (int s = 0; s < N; s++) { free(c->X[s]); c->X[s] = X[s]; }
+    free(X);
+    free(c->F);
+    c->F = F;
+    c->fcap = nf1 + 1;
+    c->cap = nv1 + 1;
+    c->nv = nv1;
+    c->nf = nf1;
+    free(map);
+    return 0;
+}
+
+/* the recursion from poly on; with several threads the small pieces and
+ * the overlays are left for leaf_job (struct tri_defer) */
+static int triangulate_top(struct compat *c, int *poly, int m)
+{
+    if (parallel_threads(c->threads) < 2) return triangulate_rec(c, poly, m, 0, NULL);
+    struct tri_defer df = {c, 0, 0, NULL};
+    int nv0 = c->nv;
+    int rc = triangulate_rec(c, poly, m, 0, &df);
+    parallel_run(df.n, c->threads, leaf_job, &df);
+    /* the first failure in the recursion's order: a leaf's, or else
+     * the recursion's own (which came after every leaf it left) */
+    int failed = -1;
+    for (int l = 0; l < df.n && failed < 0; l++)
+        if (df.leaf[l].err[0]) failed = l;
+    if (failed >= 0) rc = cm_seterr("%s", df.leaf[failed].err);
+    else if (rc == 0) rc = splice_leaves(c, &df, nv0);
+    for (int l = 0; l < df.n; l++) {
+        free(df.leaf[l].poly);
+        compat_free(&df.leaf[l].loc);
+    }
+    free(df.leaf);
+    return rc;
+}
+
+static int triangulate_rec(struct compat *c, int *poly, int m, int depth, struct tri_defer *df)
 {
     if (m < 3) return cm_seterr("internal: degenerate sub-polygon");
     if (m == 3) return add_face(c, poly[0], poly[1], poly[2]);
     if (depth > 100000) return cm_seterr("compatible triangulation failed: recursion too deep");
+    if (df && m < PAIR_SEARCH_PARALLEL) return defer_leaf(c, df, poly, m, depth, 0);
     struct split sp = {0};
     int rc0 = choose_split(c, poly, m, &sp);
     if (rc0 < 0) return -1;
     if (rc0 > 0) {
         c->stage_count[2]++;
-        return overlay_piece(c, poly, m);
+        return df ? defer_leaf(c, df, poly, m, depth, 1) : overlay_piece(c, poly, m);
     }
     c->stage_count[sp.stage]++;
     int k = sp.k, base = c->nv;
@@ -1573,15 +1743,15 @@ static int triangulate_rec(struct compat *c, int *poly, int m, int depth)
     t = 0;
     for (int a = j; a != (i + 1) % m; a = (a + 1) % m) p2[t++] = poly[a];
     for (int q = 0; q < k; q++) p2[t++] = base + q;
-    int rc = triangulate_rec(c, p1, m1, depth + 1);
-    if (rc == 0) rc = triangulate_rec(c, p2, m2, depth + 1);
+    int rc = triangulate_rec(c, p1, m1, depth + 1, df);
+    if (rc == 0) rc = triangulate_rec(c, p2, m2, depth + 1, df);
     free(p1); free(p2);
     return rc;
 }
 
 int compat_triangulate_poly(struct compat *c, int *poly, int m)
 {
-    return triangulate_rec(c, poly, m, 0);
+    return triangulate_top(c, poly, m);
 }
 
 int compat_triangulate(struct compat *c)
@@ -1590,7 +1760,7 @@ int compat_triangulate(struct compat *c)
     int *poly = malloc(m * sizeof *poly);
     for (int i = 0; i < m; i++) poly[i] = i;
     c->nf = 0;
-    int rc = triangulate_rec(c, poly, m, 0);
+    int rc = triangulate_top(c, poly, m);
     free(poly);
     return rc;
 }
