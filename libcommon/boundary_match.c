@@ -118,7 +118,10 @@ static const int STEPS[9][2] = {{1, 1}, {1, 0}, {0, 1}, {1, 2}, {2, 1}, {1, 3}, 
 
 /* Dynamic program from (0,0) to (mA, mB).  thA: mA + 1, thB: mB + 1 angles;
  * hA, hB: step lengths as fractions of the perimeters.  path (may be NULL):
- * out, up to mA + mB + 1 pairs, *plen of them.  Returns the cost. */
+ * out, up to mA + mB + 1 pairs, *plen of them.  Returns the cost.  D and
+ * from: (mA + 1) by (mB + 1) scratch; without a path (and mA >= 3) D needs
+ * only 4 by (mB + 1): the last four rows are kept (a step goes back at most
+ * three rows), which stay in the cache, and from is not used (may be NULL). */
 static double dp_align(const double *thA, int mA, double hA, const double *thB, int mB, double hB, double R,
                        const double *dA, const double *dB, double wf,
                        int *path, int *plen, double *D, unsigned char *from)
@@ -129,9 +132,14 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
         stretch[k] = fabs(STEPS[k][0] * hA - STEPS[k][1] * hB);
         half[k] = STEPS[k][0] * hA + STEPS[k][1] * hB;
     }
-    for (int i = 0; i <= mA; i++)
+    int rows = path || mA < 3 ? mA + 1 : 4;
+    for (int i = 0; i <= mA; i++) {
+        /* Dr[d]: row i - d */
+        double *Dr[4];
+        for (int d = 0; d < 4; d++) Dr[d] = D + (size_t)((i - d + 4 * rows) % rows) * W;
+        unsigned char *Fr = path ? from + (size_t)i * W : NULL;
         for (int j = 0; j <= mB; j++) {
-            if (!i && !j) { D[0] = 0; from[0] = 255; continue; }
+            if (!i && !j) { D[0] = 0; if (Fr) Fr[0] = 255; continue; }
             double best = INFINITY;
             int bs = 255;
             double f = dA ? wf * desc_dist(dA + (size_t)i * BMATCH_SCALES, dB + (size_t)j * BMATCH_SCALES) : 0;
@@ -143,7 +151,7 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
                 double tAi = thA[i], tBj = thB[j], f5 = f * 0.5;
                 for (int k = 0; k < 9; k++) {
                     int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
-                    double c = D[(size_t)pi * W + pj] + stretch[k] + R * fabs((tAi - thA[pi]) - (tBj - thB[pj])) +
+                    double c = Dr[STEPS[k][0]][pj] + stretch[k] + R * fabs((tAi - thA[pi]) - (tBj - thB[pj])) +
                                f5 * half[k];
                     int lt = c < best;
                     best = lt ? c : best;
@@ -153,17 +161,18 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
             for (int k = 0; k < 9; k++) {
                 int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
                 if (pi < 0 || pj < 0) continue;
-                double prev = D[(size_t)pi * W + pj];
+                double prev = Dr[STEPS[k][0]][pj];
                 if (!(prev < best)) continue;
                 double c = prev + stretch[k] +
                            (R > 0 ? R * fabs((thA[i] - thA[pi]) - (thB[j] - thB[pj])) : 0) +
                            f * 0.5 * half[k];
                 if (c < best) { best = c; bs = k; }
             }
-            D[(size_t)i * W + j] = best;
-            from[(size_t)i * W + j] = (unsigned char)bs;
+            Dr[0][j] = best;
+            if (Fr) Fr[j] = (unsigned char)bs;
         }
-    double cost = D[(size_t)mA * W + mB];
+    }
+    double cost = D[(size_t)(mA % rows) * W + mB];
     if (path) {
         int i = mA, j = mB, n = 0;
         while (1) {
@@ -272,18 +281,17 @@ struct start_jobs {
 static void start_job(void *ctx, int i)
 {
     struct start_jobs *j = ctx;
-    int M = j->M;
-    double *D = malloc((size_t)(M + 1) * (M + 1) * sizeof *D);
-    unsigned char *from = malloc((size_t)(M + 1) * (M + 1));
+    int M = j->M;   /* >= 16: four rows of D (dp_align without a path) */
+    double *D = malloc(4 * (size_t)(M + 1) * sizeof *D);
     if (!j->s) {
-        j->cost[i] = dp_run(j->a, j->Mc, 1.0 / j->Mc, j->b, i, j->Mc, 1.0 / j->Mc, j->ds, NULL, NULL, D, from);
+        j->cost[i] = dp_run(j->a, j->Mc, 1.0 / j->Mc, j->b, i, j->Mc, 1.0 / j->Mc, j->ds, NULL, NULL, D, NULL);
     } else {
         struct dpside b;
         dpside_fill(&b, j->B, j->s[i], j->B->L, M, j->ds);
-        j->cost[i] = dp_run(j->a, M, 1.0 / M, &b, 0, M, 1.0 / M, j->ds, NULL, NULL, D, from);
+        j->cost[i] = dp_run(j->a, M, 1.0 / M, &b, 0, M, 1.0 / M, j->ds, NULL, NULL, D, NULL);
         dpside_free(&b);
     }
-    free(D); free(from);
+    free(D);
 }
 
 /* cost of the closed alignment from A's sA with B's start at every coarse
