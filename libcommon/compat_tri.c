@@ -1571,6 +1571,7 @@ struct tri_defer {
     const struct compat *c;
     int n, cap;
     struct tri_leaf *leaf;
+    int *order;           /* n: the leaves in the order the threads take them */
 };
 
 static int defer_leaf(struct compat *c, struct tri_defer *df, const int *poly, int m, int depth, int overlay)
@@ -1593,12 +1594,12 @@ static int defer_leaf(struct compat *c, struct tri_defer *df, const int *poly, i
 
 static int triangulate_rec(struct compat *c, int *poly, int m, int depth, struct tri_defer *df);
 
-/* triangulates leaf i of the struct tri_defer ctx on its own */
+/* triangulates leaf order[i] of the struct tri_defer ctx on its own */
 static void leaf_job(void *ctx, int i)
 {
     struct tri_defer *df = ctx;
     const struct compat *c = df->c;
-    struct tri_leaf *L = df->leaf + i;
+    struct tri_leaf *L = df->leaf + df->order[i];
     struct compat *lc = &L->loc;
     int N = c->N, m = L->m, rc = -1;
     lc->N = N; lc->split_mode = c->split_mode; lc->exhaustive = c->exhaustive; lc->threads = 1;
@@ -1692,22 +1693,39 @@ static int splice_leaves(struct compat *c, struct tri_defer *df, int nv0)
 static int triangulate_top(struct compat *c, int *poly, int m)
 {
     if (parallel_threads(c->threads) < 2) return triangulate_rec(c, poly, m, 0, NULL);
-    struct tri_defer df = {c, 0, 0, NULL};
+    struct tri_defer df = {c, 0, 0, NULL, NULL};
     int nv0 = c->nv;
     int rc = triangulate_rec(c, poly, m, 0, &df);
-    parallel_run(df.n, c->threads, leaf_job, &df);
+    /* the costliest first, so that no long one is left for the end: the
+     * overlays (CGAL's exact arithmetic; on the 600-px walk an 18-corner
+     * one took 0.06 s, the 246 small pieces 0.04 s together), larger
+     * pieces before smaller ones (insertion sort: few leaves) */
+    int oom = !(df.order = malloc((df.n + 1) * sizeof *df.order));
+    for (int l = 0; !oom && l < df.n; l++) {
+        int k = l;
+        const struct tri_leaf *L = df.leaf + l;
+        for (; k > 0; k--) {
+            const struct tri_leaf *P = df.leaf + df.order[k - 1];
+            if (P->overlay > L->overlay || (P->overlay == L->overlay && P->m >= L->m)) break;
+            df.order[k] = df.order[k - 1];
+        }
+        df.order[k] = l;
+    }
+    if (!oom) parallel_run(df.n, c->threads, leaf_job, &df);
     /* the first failure in the recursion's order: a leaf's, or else
      * the recursion's own (which came after every leaf it left) */
     int failed = -1;
-    for (int l = 0; l < df.n && failed < 0; l++)
+    for (int l = 0; !oom && l < df.n && failed < 0; l++)
         if (df.leaf[l].err[0]) failed = l;
-    if (failed >= 0) rc = cm_seterr("%s", df.leaf[failed].err);
+    if (oom) rc = cm_seterr("out of memory");
+    else if (failed >= 0) rc = cm_seterr("%s", df.leaf[failed].err);
     else if (rc == 0) rc = splice_leaves(c, &df, nv0);
     for (int l = 0; l < df.n; l++) {
         free(df.leaf[l].poly);
         compat_free(&df.leaf[l].loc);
     }
     free(df.leaf);
+    free(df.order);
     return rc;
 }
 
