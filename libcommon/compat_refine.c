@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <limits.h>
 #include <string.h>
+#include <time.h>
 
 /* ------------------------------------------------------------------ */
 /* per-triangle measures */
@@ -105,6 +106,9 @@ struct work {
                              outline edge, the outline vertices at the ends
                              of the input segment it lies on (it may slide
                              along it, shape by shape); -1 -1 otherwise */
+    double *pose_cost;    /* 3 by N: CPU seconds of each pose's last smoothing job of each
+                             kind (run_poses): a round's MIPS and smoothing, its polish,
+                             the final smoothing and polish */
     int *id;              /* cap: a number that stays with the vertex
                              (vertex indices change when collapses compact) */
     unsigned long long *sig; /* cap: signature of the vertex's star at the
@@ -579,20 +583,53 @@ struct pose_jobs {
     int threads;          /* compat_refine_params.threads */
     int *moves;           /* N: moves made in each pose */
     unsigned char *dirty; /* N by #V scratch flags */
+    double *cost;         /* N: CPU seconds of each pose's last job (in: the order; out: measured) */
+    int *order;           /* N: the poses in the order the threads take them */
 };
 
-/* run job over the N poses (in parallel: the poses' positions are
- * independent); returns the sum of moves[], -1 if out of memory */
-static int run_poses(struct pose_jobs *pj, void (*job)(void *ctx, int s))
+static void pose_job(void *ctx, int s);
+
+static double thread_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+/* pose_job of the i-th pose in pj->order, timed */
+static void pose_job_timed(void *ctx, int i)
+{
+    struct pose_jobs *pj = ctx;
+    int s = pj->order[i];
+    double t0 = thread_seconds();
+    pose_job(ctx, s);
+    pj->cost[s] = thread_seconds() - t0;
+}
+
+/* pose_job over the N poses (in parallel: the poses' positions are
+ * independent), the costliest in the last call first so that no long one
+ * is left for the end (the time decides only which thread smooths which
+ * pose, not the result); returns the sum of moves[], -1 if out of memory */
+static int run_poses(struct pose_jobs *pj)
 {
     struct compat *c = pj->c;
-    pj->moves = calloc(c->N, sizeof *pj->moves);
-    pj->dirty = malloc((size_t)c->N * c->nv + 1);
-    if (!pj->moves || !pj->dirty) { free(pj->moves); free(pj->dirty); return cm_seterr("out of memory"); }
-    parallel_run(c->N, pj->threads, job, pj);
+    int N = c->N;
+    pj->moves = calloc(N, sizeof *pj->moves);
+    pj->dirty = malloc((size_t)N * c->nv + 1);
+    pj->order = malloc(N * sizeof *pj->order);
+    if (!pj->moves || !pj->dirty || !pj->order) {
+        free(pj->moves); free(pj->dirty); free(pj->order);
+        return cm_seterr("out of memory");
+    }
+    for (int s = 0; s < N; s++) {   /* insertion sort by cost, descending (ties: index) */
+        int k = s;
+        for (; k > 0 && pj->cost[pj->order[k - 1]] < pj->cost[s]; k--) pj->order[k] = pj->order[k - 1];
+        pj->order[k] = s;
+    }
+    parallel_run(N, pj->threads, pose_job_timed, pj);
     int m = 0;
-    for (int s = 0; s < c->N; s++) m += pj->moves[s];
-    free(pj->moves); free(pj->dirty);
+    for (int s = 0; s < N; s++) m += pj->moves[s];
+    free(pj->moves); free(pj->dirty); free(pj->order);
     return m;
 }
 
@@ -849,16 +886,16 @@ static void pose_job(void *ctx, int s)
 /* pose_job on every pose (mips, smooth, polish: sweeps of each part; seed:
  * #V flags of the vertices whose neighbourhood changed since the last
  * smoothing, NULL: all; the MIPS and candidate smoothing visit only them
- * and whatever their moves disturb).  Returns the number of moves, -1 on
- * error. */
+ * and whatever their moves disturb; cost: N, each pose's CPU seconds in
+ * the last call, updated).  Returns the number of moves, -1 on error. */
 static int smooth_poses(struct compat *c, const unsigned char *bnd, const int *seg, const unsigned char *seed,
-                        double goal, int mips, int smooth, int polish, int threads)
+                        double goal, int mips, int smooth, int polish, int threads, double *cost)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
     struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seed = seed, .seg = seg, .mips = mips, .smooth = smooth,
-                           .polish = polish, .goal = goal, .threads = threads};
-    int moves = run_poses(&pj, pose_job);
+                           .polish = polish, .goal = goal, .threads = threads, .cost = cost};
+    int moves = run_poses(&pj);
     topology_free(&t);
     return moves;
 }
@@ -1269,7 +1306,7 @@ static void refiner_free(struct compat_refiner *r)
     struct work *w = &r->w;
     snap_free(r->c->N, &r->snap);
     best_free(r->c->N, &r->best);
-    free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->id); free(w->sig);
+    free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->pose_cost); free(w->id); free(w->sig);
     free(r->sig); free(r->seed);
     free(r);
 }
@@ -1284,12 +1321,13 @@ struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat
     r->st = st ? st : &r->own;
     memset(r->st, 0, sizeof *r->st);
     r->q0 = compat_min_angle(c, NULL);
-    r->w = (struct work){c, NULL, NULL, NULL, NULL, NULL, NULL, 0, 0};
+    r->w = (struct work){.c = c};
     r->nb0 = c->nb;
     r->nv0 = c->nv;
     struct work *w = &r->w;
     w->diag = malloc(c->N * sizeof *w->diag);
-    if (!w->diag) { cm_seterr("out of memory"); goto fail; }
+    w->pose_cost = calloc(3 * (size_t)c->N, sizeof *w->pose_cost);
+    if (!w->diag || !w->pose_cost) { cm_seterr("out of memory"); goto fail; }
     for (int s = 0; s < c->N; s++) {
         double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
         for (int v = 0; v < c->nb; v++)
@@ -1360,12 +1398,12 @@ int compat_refine_step(struct compat_refiner *r)
         star_sigs(w, r->sig);
         for (int v = 0; v < c->nv; v++) r->seed[v] = r->sig[v] != w->sig[v];
     }
-    int m = smooth_poses(c, w->bnd, w->seg, r->seed, goal, pa->mips > 0 ? pa->mips : 0, 8, 0, pa->threads);
+    int m = smooth_poses(c, w->bnd, w->seg, r->seed, goal, pa->mips > 0 ? pa->mips : 0, 8, 0, pa->threads, w->pose_cost);
     if (m < 0) return -1;
     st->moves += m;
     if (pa->mips > 0) {
         if (flips_until_done(c, &st->flips) < 0) return -1;
-        m = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 0, 4, pa->threads);
+        m = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 0, 4, pa->threads, w->pose_cost + c->N);
         if (m < 0) return -1;
         st->moves += m;
     }
@@ -1374,7 +1412,7 @@ int compat_refine_step(struct compat_refiner *r)
     int tc = pa->mips > 0 ? 0 : transfer(c, w->bnd, goal, &st->moves);
     if (tc < 0) return -1;
     if (tc > 0) {   /* whole shapes moved */
-        m = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, 0, pa->threads);
+        m = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, 0, pa->threads, w->pose_cost + 2 * c->N);
         if (m < 0) return -1;
         st->moves += m;
     }
@@ -1464,7 +1502,7 @@ int compat_refine_finish(struct compat_refiner *r)
             st->coarsened += m;
         }
         /* the candidate smoothing, then (with MIPS) the polish */
-        int m1 = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, pa->mips > 0 ? 4 : 0, pa->threads);
+        int m1 = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, pa->mips > 0 ? 4 : 0, pa->threads, w->pose_cost + 2 * c->N);
         if (m1 < 0) goto out;
         st->moves += m1;
         m += m1;
