@@ -1089,6 +1089,38 @@ static void stage2_row(void *ctx, int i)
     ps->row_j[i] = rj;
 }
 
+/* stage II's preparation of shape s: its candidate points, the ones that
+ * hug an edge, and the cone and clearance caches (empty) */
+struct stage2_prep {
+    const struct sub *sp;
+    double **C;                 /* N: out, candidate points */
+    int *nc;                    /* N: out, their numbers */
+    uint64_t **nohug;           /* N: out, a bit per candidate that does not hug an edge */
+    struct cone_cache *cones;   /* v, from, to: out */
+    atomic_int oom;
+};
+
+static void stage2_prep_job(void *ctx, int s)
+{
+    struct stage2_prep *pp = ctx;
+    struct cone_cache *cc = pp->cones;
+    const struct sub *p = &pp->sp[s];
+    int m = p->m, n = pp->nc[s] = candidates(p, &pp->C[s]);
+    uint64_t *nh = pp->nohug[s] = calloc((size_t)(n + 63) / 64 + 1, sizeof *nh);
+    cc->v[s] = malloc(((size_t)n * m + 1) * sizeof **cc->v);
+    cc->from[s] = malloc(((size_t)n * m + 1) * sizeof **cc->from);
+    cc->to[s] = malloc(((size_t)n * m + 1) * sizeof **cc->to);
+    if (!pp->C[s] || !nh || !cc->v[s] || !cc->from[s] || !cc->to[s]) { atomic_store(&pp->oom, 1); return; }
+    for (int a = 0; a < n; a++)
+        if (!hugs_edge(p, pp->C[s] + 2 * a)) nh[a >> 6] |= (uint64_t)1 << (a & 63);
+    for (size_t k = 0; k < (size_t)n * m; k++) {
+        atomic_init(&cc->from[s][k], NAN);
+        atomic_init(&cc->to[s][k], NAN);
+        atomic_init(&cc->v[s][k].an, NAN);
+        atomic_init(&cc->v[s][k].pm, 0);
+    }
+}
+
 /* the rows of the search on the threads (small pieces: this thread); the
  * first row of the highest score, -1 if no row has a pair */
 static int pair_search_run(struct pair_search *ps, void (*row)(void *, int), double *best)
@@ -1134,30 +1166,19 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     /* stage II: candidates per shape; visibility between corners and from
      * candidates to corners is tested when first needed (vis_cache) */
     atomic_uchar *vis = calloc((size_t)N * m * m, sizeof *vis);
-    double **C = malloc(N * sizeof *C);
-    int *nc = malloc(N * sizeof *nc);
-    uint64_t **nohug = malloc(N * sizeof *nohug);
-    for (int s = 0; s < N; s++) {
-        nc[s] = candidates(&sp[s], &C[s]);
-        nohug[s] = calloc((size_t)(nc[s] + 63) / 64 + 1, sizeof **nohug);
-        for (int a = 0; a < nc[s]; a++)
-            if (!hugs_edge(&sp[s], C[s] + 2 * a)) nohug[s][a >> 6] |= (uint64_t)1 << (a & 63);
-    }
+    double **C = calloc(N, sizeof *C);
+    int *nc = calloc(N, sizeof *nc);
+    uint64_t **nohug = calloc(N, sizeof *nohug);
+    struct cone_cache cones = {sp, C, m, nc, calloc(N, sizeof *cones.v), calloc(N, sizeof *cones.from),
+                               calloc(N, sizeof *cones.to)};
+    int oom = !vis || !C || !nc || !nohug || !cones.v || !cones.from || !cones.to;
+    /* each shape's candidates, the ones that hug an edge and the empty
+     * caches: one job per shape */
+    struct stage2_prep prep = {sp, C, nc, nohug, &cones, 0};
+    if (!oom) parallel_run(N, m >= PAIR_SEARCH_PARALLEL ? c->threads : 1, stage2_prep_job, &prep);
+    oom |= prep.oom;
     struct vis_cache vc = {sp, m, vis, C, nc, malloc(N * sizeof *vc.words), calloc(N, sizeof *vc.bits)};
-    int oom = vis_bits_build(&vc, N, c->threads) < 0;
-    struct cone_cache cones = {sp, C, m, nc, malloc(N * sizeof *cones.v), malloc(N * sizeof *cones.from),
-                               malloc(N * sizeof *cones.to)};
-    for (int s = 0; s < N; s++) {
-        cones.v[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.v);
-        cones.from[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.from);
-        cones.to[s] = malloc(((size_t)nc[s] * m + 1) * sizeof **cones.to);
-        for (size_t k = 0; k < (size_t)nc[s] * m; k++) {
-            atomic_init(&cones.from[s][k], NAN);
-            atomic_init(&cones.to[s][k], NAN);
-            atomic_init(&cones.v[s][k].an, NAN);
-            atomic_init(&cones.v[s][k].pm, 0);
-        }
-    }
+    if (!oom) oom = !vc.words || !vc.bits || vis_bits_build(&vc, N, c->threads) < 0;
     ps.vc = &vc; ps.cones = &cones; ps.C = C; ps.nc = nc; ps.nohug = nohug;
     ps.row_path = malloc(2 * (size_t)N * m * sizeof *ps.row_path);
     ps.row_tmp = malloc(2 * (size_t)N * m * sizeof *ps.row_tmp);
@@ -1168,7 +1189,9 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
     if (bi >= 0) memcpy(bestpath, ps.row_path + 2 * (size_t)N * bi, 2 * (size_t)N * sizeof *bestpath);
     free(ps.row_path); free(ps.row_tmp); free(ps.row_ord); free(ps.row_score); free(ps.row_j);
     for (int s = 0; s < N; s++) {
-        free(cones.v[s]); free(cones.from[s]); free(cones.to[s]);
+        if (cones.v) free(cones.v[s]);
+        if (cones.from) free(cones.from[s]);
+        if (cones.to) free(cones.to[s]);
     }
     free(cones.v); free(cones.from); free(cones.to);
     int rc = 0;
@@ -1308,7 +1331,11 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         free(dist); free(cc);
     }
 done:
-    for (int s = 0; s < N; s++) { free(C[s]); free(vc.bits[s]); free(nohug[s]); }
+    for (int s = 0; s < N; s++) {
+        if (C) free(C[s]);
+        if (vc.bits) free(vc.bits[s]);
+        if (nohug) free(nohug[s]);
+    }
     free(C); free(nc); free(vc.bits); free(vc.words); free(nohug); free(vis);
     for (int s = 0; s < N; s++) if (sp[s].grid) grid_free(&grid[s]);
     free(grid); free(sp);
