@@ -1878,12 +1878,55 @@ static int oriented_edge(const int *F, int f, int a, int b)
     return 0;
 }
 
+/* what flip_pass does with interior edge e of t while its two triangles
+ * are as they were at the start of the pass: FLIP_NONE, FLIP_DO, or
+ * FLIP_AGAIN (not flipped because the other diagonal is an edge elsewhere) */
+enum { FLIP_NONE, FLIP_DO, FLIP_AGAIN };
+
+static int flip_decision(const struct compat *c, const struct topology *t, int e)
+{
+    int f1 = t->EF[2 * e], f2 = t->EF[2 * e + 1];
+    int a = t->E[2 * e], b = t->E[2 * e + 1];
+    if (!oriented_edge(c->F, f1, a, b)) { int x = f1; f1 = f2; f2 = x; }
+    /* f1 = (a, b, p), f2 = (b, a, q) */
+    int p = opposite(c->F, f1, a, b), q = opposite(c->F, f2, a, b);
+    if (p == q) return FLIP_NONE;
+    if (topology_edge(t, p, q) >= 0) return FLIP_AGAIN;
+    double old = fmin(face_quality(c, a, b, p), face_quality(c, b, a, q));
+    /* the second new face is looked at only if the first beats old */
+    double n1 = face_quality(c, a, q, p);
+    if (!(n1 > old + 1e-9)) return FLIP_NONE;
+    double n2 = face_quality(c, b, p, q);
+    return n2 > old + 1e-9 ? FLIP_DO : FLIP_NONE;
+}
+
+/* flip_decision of every interior edge, FLIP_BLOCK edges a job */
+#define FLIP_BLOCK 256
+struct flip_jobs {
+    const struct compat *c;
+    const struct topology *t;
+    unsigned char *dec;   /* ne: out */
+};
+
+static void flip_job(void *ctx, int k)
+{
+    struct flip_jobs *j = ctx;
+    int e1 = (k + 1) * FLIP_BLOCK < j->t->ne ? (k + 1) * FLIP_BLOCK : j->t->ne;
+    for (int e = k * FLIP_BLOCK; e < e1; e++)
+        j->dec[e] = j->t->EFn[e] == 2 ? (unsigned char)flip_decision(j->c, j->t, e) : FLIP_NONE;
+}
+
 /* compat_flip_pass; with seen != NULL only the edges with a triangle
  * flagged in seen (#F) are looked at (the others were looked at before with
  * the same two triangles and not flipped), changed (#F, may be NULL) flags
  * the triangles this pass rewrote and again (#F, with changed) those of
  * edges not flipped because the other diagonal is an edge elsewhere (that
- * edge may be gone by the next pass) */
+ * edge may be gone by the next pass).  The edges are taken in order; one
+ * whose triangle an earlier flip rewrote waits for the next pass, so an
+ * edge that is looked at has the triangles, positions and (stale) topology
+ * of the pass's start: on a full pass (seen NULL) with several threads
+ * (c->threads) every edge's decision is worked out first on the threads,
+ * the same decisions. */
 static int flip_pass(struct compat *c, const unsigned char *seen, unsigned char *changed, unsigned char *again)
 {
     struct topology t;
@@ -1892,34 +1935,33 @@ static int flip_pass(struct compat *c, const unsigned char *seen, unsigned char 
     if (!touched) { topology_free(&t); return cm_seterr("out of memory"); }
     memset(touched, 0, c->nf);
     if (again) memset(again, 0, c->nf);
+    unsigned char *dec = NULL;
+    if (!seen && t.ne > FLIP_BLOCK && parallel_threads(c->threads) > 1 && (dec = malloc(t.ne))) {
+        struct flip_jobs fj = {c, &t, dec};
+        parallel_run((t.ne + FLIP_BLOCK - 1) / FLIP_BLOCK, c->threads, flip_job, &fj);
+    }
     int flips = 0;
     for (int e = 0; e < t.ne; e++) {
         if (t.EFn[e] != 2) continue;
         int f1 = t.EF[2 * e], f2 = t.EF[2 * e + 1];
         if (touched[f1] || touched[f2]) continue;
         if (seen && !seen[f1] && !seen[f2]) continue;
-        int a = t.E[2 * e], b = t.E[2 * e + 1];
-        if (!oriented_edge(c->F, f1, a, b)) { int x = f1; f1 = f2; f2 = x; }
-        /* f1 = (a, b, p), f2 = (b, a, q) */
-        int p = opposite(c->F, f1, a, b), q = opposite(c->F, f2, a, b);
-        if (p == q) continue;
-        if (topology_edge(&t, p, q) >= 0) {
+        int d = dec ? dec[e] : flip_decision(c, &t, e);
+        if (d == FLIP_AGAIN) {
             if (again) again[f1] = again[f2] = 1;
             continue;
         }
-        double old = fmin(face_quality(c, a, b, p), face_quality(c, b, a, q));
-        /* the second new face is looked at only if the first beats old */
-        double n1 = face_quality(c, a, q, p);
-        if (!(n1 > old + 1e-9)) continue;
-        double n2 = face_quality(c, b, p, q);
-        if (n2 > old + 1e-9) {
-            int *F1 = c->F + 3 * f1, *F2 = c->F + 3 * f2;
-            F1[0] = a; F1[1] = q; F1[2] = p;
-            F2[0] = b; F2[1] = p; F2[2] = q;
-            touched[f1] = touched[f2] = 1;
-            flips++;
-        }
+        if (d != FLIP_DO) continue;
+        int a = t.E[2 * e], b = t.E[2 * e + 1];
+        if (!oriented_edge(c->F, f1, a, b)) { int x = f1; f1 = f2; f2 = x; }
+        int p = opposite(c->F, f1, a, b), q = opposite(c->F, f2, a, b);
+        int *F1 = c->F + 3 * f1, *F2 = c->F + 3 * f2;
+        F1[0] = a; F1[1] = q; F1[2] = p;
+        F2[0] = b; F2[1] = p; F2[2] = q;
+        touched[f1] = touched[f2] = 1;
+        flips++;
     }
+    free(dec);
     if (!changed) free(touched);
     topology_free(&t);
     return flips;
