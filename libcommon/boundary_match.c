@@ -118,7 +118,10 @@ static const int STEPS[9][2] = {{1, 1}, {1, 0}, {0, 1}, {1, 2}, {2, 1}, {1, 3}, 
 
 /* Dynamic program from (0,0) to (mA, mB).  thA: mA + 1, thB: mB + 1 angles;
  * hA, hB: step lengths as fractions of the perimeters.  path (may be NULL):
- * out, up to mA + mB + 1 pairs, *plen of them.  Returns the cost. */
+ * out, up to mA + mB + 1 pairs, *plen of them.  Returns the cost.  D and
+ * from: (mA + 1) by (mB + 1) scratch; without a path (and mA >= 3) D needs
+ * only 4 by (mB + 1): the last four rows are kept (a step goes back at most
+ * three rows), which stay in the cache, and from is not used (may be NULL). */
 static double dp_align(const double *thA, int mA, double hA, const double *thB, int mB, double hB, double R,
                        const double *dA, const double *dB, double wf,
                        int *path, int *plen, double *D, unsigned char *from)
@@ -129,9 +132,14 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
         stretch[k] = fabs(STEPS[k][0] * hA - STEPS[k][1] * hB);
         half[k] = STEPS[k][0] * hA + STEPS[k][1] * hB;
     }
-    for (int i = 0; i <= mA; i++)
+    int rows = path || mA < 3 ? mA + 1 : 4;
+    for (int i = 0; i <= mA; i++) {
+        /* Dr[d]: row i - d */
+        double *Dr[4];
+        for (int d = 0; d < 4; d++) Dr[d] = D + (size_t)((i - d + 4 * rows) % rows) * W;
+        unsigned char *Fr = path ? from + (size_t)i * W : NULL;
         for (int j = 0; j <= mB; j++) {
-            if (!i && !j) { D[0] = 0; from[0] = 255; continue; }
+            if (!i && !j) { D[0] = 0; if (Fr) Fr[0] = 255; continue; }
             double best = INFINITY;
             int bs = 255;
             double f = dA ? wf * desc_dist(dA + (size_t)i * BMATCH_SCALES, dB + (size_t)j * BMATCH_SCALES) : 0;
@@ -143,7 +151,7 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
                 double tAi = thA[i], tBj = thB[j], f5 = f * 0.5;
                 for (int k = 0; k < 9; k++) {
                     int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
-                    double c = D[(size_t)pi * W + pj] + stretch[k] + R * fabs((tAi - thA[pi]) - (tBj - thB[pj])) +
+                    double c = Dr[STEPS[k][0]][pj] + stretch[k] + R * fabs((tAi - thA[pi]) - (tBj - thB[pj])) +
                                f5 * half[k];
                     int lt = c < best;
                     best = lt ? c : best;
@@ -153,17 +161,18 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
             for (int k = 0; k < 9; k++) {
                 int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
                 if (pi < 0 || pj < 0) continue;
-                double prev = D[(size_t)pi * W + pj];
+                double prev = Dr[STEPS[k][0]][pj];
                 if (!(prev < best)) continue;
                 double c = prev + stretch[k] +
                            (R > 0 ? R * fabs((thA[i] - thA[pi]) - (thB[j] - thB[pj])) : 0) +
                            f * 0.5 * half[k];
                 if (c < best) { best = c; bs = k; }
             }
-            D[(size_t)i * W + j] = best;
-            from[(size_t)i * W + j] = (unsigned char)bs;
+            Dr[0][j] = best;
+            if (Fr) Fr[j] = (unsigned char)bs;
         }
-    double cost = D[(size_t)mA * W + mB];
+    }
+    double cost = D[(size_t)(mA % rows) * W + mB];
     if (path) {
         int i = mA, j = mB, n = 0;
         while (1) {
@@ -259,84 +268,101 @@ static double align_segment(const struct outline *A, double sA, double lenA, con
 }
 
 /* the start search's closed alignments, one job each (parallel_run): the
- * coarse shifts t of one doubled side b, or the fine starts s[i] */
+ * coarse shifts of the doubled sides b, or the fine starts s[i] */
 struct start_jobs {
-    const struct outline *A, *B;
-    const struct dpside *a, *b;   /* coarse: A's side and B's doubled side */
+    const struct outline *const *B;   /* the outlines searched */
+    const struct dpside *a, *b;   /* coarse: A's side and each B's doubled side */
     const struct dpset *ds;
     int M, Mc;                    /* samples of a job's alignment (coarse: M = Mc) */
-    const double *s;              /* fine: start arcs on B (NULL: coarse) */
+    const double *s;              /* fine: start arcs (NULL: coarse, job i = shift i % Mc of B[i / Mc]) */
+    const int *who;               /* fine: the B of each start */
     double *cost;                 /* out, one per job */
 };
 
 static void start_job(void *ctx, int i)
 {
     struct start_jobs *j = ctx;
-    int M = j->M;
-    double *D = malloc((size_t)(M + 1) * (M + 1) * sizeof *D);
-    unsigned char *from = malloc((size_t)(M + 1) * (M + 1));
+    int M = j->M;   /* >= 16: four rows of D (dp_align without a path) */
+    double *D = malloc(4 * (size_t)(M + 1) * sizeof *D);
     if (!j->s) {
-        j->cost[i] = dp_run(j->a, j->Mc, 1.0 / j->Mc, j->b, i, j->Mc, 1.0 / j->Mc, j->ds, NULL, NULL, D, from);
+        j->cost[i] = dp_run(j->a, j->Mc, 1.0 / j->Mc, &j->b[i / j->Mc], i % j->Mc, j->Mc, 1.0 / j->Mc, j->ds, NULL,
+                            NULL, D, NULL);
     } else {
+        const struct outline *B = j->B[j->who[i]];
         struct dpside b;
-        dpside_fill(&b, j->B, j->s[i], j->B->L, M, j->ds);
-        j->cost[i] = dp_run(j->a, M, 1.0 / M, &b, 0, M, 1.0 / M, j->ds, NULL, NULL, D, from);
+        dpside_fill(&b, B, j->s[i], B->L, M, j->ds);
+        j->cost[i] = dp_run(j->a, M, 1.0 / M, &b, 0, M, 1.0 / M, j->ds, NULL, NULL, D, NULL);
         dpside_free(&b);
     }
-    free(D); free(from);
+    free(D);
 }
 
-/* cost of the closed alignment from A's sA with B's start at every coarse
- * shift; returns the best start arc on B after fine refinement (the
- * alignments run on `threads` threads; the choice is made in order after
- * all of them, so it does not depend on the threads) */
-static double search_start(const struct outline *A, double sA, const struct outline *B, int M, const struct dpset *ds,
-                           int threads)
+/* For each of the nb outlines B[q]: the cost of the closed alignment from
+ * A's sA with B[q]'s start at every coarse shift, then at the fine shifts
+ * around the three best; out[q] gets the best start arc on B[q].  The
+ * coarse alignments of every B are the jobs of one parallel_run on
+ * `threads` threads, the fine ones of another (so several maps keep both
+ * threads busy to the end); the choices are made in order after all of
+ * them, so they do not depend on the threads.  0 or -1 (out of memory). */
+static int search_starts(const struct outline *A, double sA, const struct outline *const *B, int nb, int M,
+                         const struct dpset *ds, int threads, double *out)
 {
-    int Mc = M / 4 < 16 ? 16 : M / 4;
-    struct dpside a, b;
-    dpside_fill(&a, A, sA, A->L, Mc, ds);
-    dpside_fill(&b, B, 0, 2 * B->L, 2 * Mc, ds);
-    double best[3] = {INFINITY, INFINITY, INFINITY};
-    int bi[3] = {0, 0, 0};
-    double *cost = malloc((Mc > 27 ? Mc : 27) * sizeof *cost);
-    struct start_jobs sj = {.A = A, .B = B, .a = &a, .b = &b, .ds = ds, .M = Mc, .Mc = Mc, .cost = cost};
-    parallel_run(Mc, threads, start_job, &sj);
-    for (int t = 0; t < Mc; t++) {
-        double c = cost[t];
-        for (int k = 0; k < 3; k++)
-            if (c < best[k]) {
-                for (int l = 2; l > k; l--) { best[l] = best[l - 1]; bi[l] = bi[l - 1]; }
-                best[k] = c; bi[k] = t;
-                break;
-            }
+    int Mc = M / 4 < 16 ? 16 : M / 4, r = M / Mc, per = 3 * (2 * r + 1);
+    struct dpside a, *b = malloc(nb * sizeof *b);
+    double *cost = malloc((size_t)nb * (Mc > per ? Mc : per) * sizeof *cost);
+    double *s = malloc((size_t)nb * per * sizeof *s);
+    int *who = malloc((size_t)nb * per * sizeof *who), *first = malloc((nb + 1) * sizeof *first);
+    if (!b || !cost || !s || !who || !first) {
+        free(b); free(cost); free(s); free(who); free(first);
+        return cm_seterr("out of memory");
     }
-    dpside_free(&a); dpside_free(&b);
+    dpside_fill(&a, A, sA, A->L, Mc, ds);
+    for (int q = 0; q < nb; q++) dpside_fill(&b[q], B[q], 0, 2 * B[q]->L, 2 * Mc, ds);
+    struct start_jobs sj = {.B = B, .a = &a, .b = b, .ds = ds, .M = Mc, .Mc = Mc, .cost = cost};
+    parallel_run(nb * Mc, threads, start_job, &sj);
     /* fine: M samples, shifts within one coarse step of the three best */
-    dpside_fill(&a, A, sA, A->L, M, ds);
-    int r = M / Mc, ns = 0;
-    double *s = malloc(3 * (2 * r + 1) * sizeof *s);
-    cost = realloc(cost, 3 * (2 * r + 1) * sizeof *cost);
-    for (int k = 0; k < 3; k++) {
-        if (!isfinite(best[k])) continue;
-        for (int d = -r; d <= r; d++) {
-            /* the three best are often neighbours: a start already in
-             * the list is aligned once (the first of equal costs wins
-             * either way) */
-            double t = wrap((bi[k] * r + d) * B->L / M, B->L);
-            int seen = 0;
-            for (int u = 0; u < ns && !seen; u++) seen = s[u] == t;
-            if (!seen) s[ns++] = t;
+    int ns = 0;
+    for (int q = 0; q < nb; q++) {
+        double best[3] = {INFINITY, INFINITY, INFINITY};
+        int bi[3] = {0, 0, 0};
+        for (int t = 0; t < Mc; t++) {
+            double c = cost[(size_t)q * Mc + t];
+            for (int k = 0; k < 3; k++)
+                if (c < best[k]) {
+                    for (int l = 2; l > k; l--) { best[l] = best[l - 1]; bi[l] = bi[l - 1]; }
+                    best[k] = c; bi[k] = t;
+                    break;
+                }
+        }
+        first[q] = ns;
+        for (int k = 0; k < 3; k++) {
+            if (!isfinite(best[k])) continue;
+            for (int d = -r; d <= r; d++) {
+                /* the three best are often neighbours: a start already in
+                 * the list is aligned once (the first of equal costs wins
+                 * either way) */
+                double t = wrap((bi[k] * r + d) * B[q]->L / M, B[q]->L);
+                int seen = 0;
+                for (int u = first[q]; u < ns && !seen; u++) seen = s[u] == t;
+                if (!seen) { s[ns] = t; who[ns] = q; ns++; }
+            }
         }
     }
-    struct start_jobs fj = {.A = A, .B = B, .a = &a, .ds = ds, .M = M, .Mc = Mc, .s = s, .cost = cost};
-    parallel_run(ns, threads, start_job, &fj);
-    double bestc = INFINITY, bests = 0;
-    for (int i = 0; i < ns; i++)
-        if (cost[i] < bestc) { bestc = cost[i]; bests = s[i]; }
+    first[nb] = ns;
     dpside_free(&a);
-    free(s); free(cost);
-    return bests;
+    for (int q = 0; q < nb; q++) dpside_free(&b[q]);
+    dpside_fill(&a, A, sA, A->L, M, ds);
+    struct start_jobs fj = {.B = B, .a = &a, .ds = ds, .M = M, .Mc = Mc, .s = s, .who = who, .cost = cost};
+    parallel_run(ns, threads, start_job, &fj);
+    for (int q = 0; q < nb; q++) {
+        double bestc = INFINITY, bests = 0;
+        for (int i = first[q]; i < first[q + 1]; i++)
+            if (cost[i] < bestc) { bestc = cost[i]; bests = s[i]; }
+        out[q] = bests;
+    }
+    dpside_free(&a);
+    free(b); free(cost); free(s); free(who); free(first);
+    return 0;
 }
 
 static int check_pairs(const int *pairs, int npairs, int na, int nb)
@@ -355,8 +381,8 @@ static int check_pairs(const int *pairs, int npairs, int na, int nb)
     return 0;
 }
 
-int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pairs, int npairs,
-               const struct bmatch_params *prm, double *tB, double *cost)
+/* the parameters of a map with npairs given pairs */
+static int params_check(const struct bmatch_params *prm, int npairs)
 {
     if (prm->samples < 16 || prm->samples > 4096) return cm_seterr("samples must be in 16..4096");
     if (!(prm->bend >= 0 && prm->bend < 1e6) || !(prm->start_bend >= 0 && prm->start_bend < 1e6))
@@ -364,6 +390,13 @@ int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pa
     if (!(prm->feature >= 0 && prm->feature < 1e6)) return cm_seterr("feature weight must be >= 0");
     if (prm->mode == BMATCH_ARCLENGTH && npairs < 1)
         return cm_seterr("arc-length matching needs a given correspondence point");
+    return 0;
+}
+
+int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pairs, int npairs,
+               const struct bmatch_params *prm, double *tB, double *cost)
+{
+    if (params_check(prm, npairs) < 0) return -1;
     if (check_pairs(pairs, npairs, na, nb) < 0) return -1;
     struct outline A, B;
     if (outline_init(&A, Ap, na) < 0) return -1;
@@ -374,7 +407,9 @@ int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pa
     if (npairs == 0) {
         struct dpset ss = ds;
         if (ss.mode == BMATCH_ELASTIC) ss.R = prm->start_bend;
-        double s = search_start(&A, 0, &B, M, &ss, prm->threads);
+        const struct outline *Bs = &B;
+        double s;
+        if (search_starts(&A, 0, &Bs, 1, M, &ss, prm->threads, &s) < 0) { free(A.cum); free(B.cum); return -1; }
         c = align_segment(&A, 0, A.L, &B, s, B.L, M, &ds, tB);
     } else {
         for (int k = 0; k < npairs; k++) {
@@ -428,6 +463,45 @@ static void map_job(void *ctx, int i)
     free(pairs);
 }
 
+/* bmatch_corr's maps of shape 0 (O[0]) onto shapes 1..N-1 (O[s]) when no
+ * point is given: bmatch_map's start search and alignment, with the start
+ * searches of all the maps on the threads at once (search_starts), then
+ * each map's alignment a job; the same maps as bmatch_map's, whose jobs
+ * (one per map) left a thread idle at the end (five maps on two threads) */
+struct align_jobs {
+    const struct outline *A, *const *B;   /* B[i]: shape i + 1 */
+    const double *start;                  /* the start arc on each B */
+    const struct dpset *ds;
+    int M, n0;
+    double *tB, *cost;                    /* rows / entries by shape */
+};
+
+static void align_job(void *ctx, int i)
+{
+    struct align_jobs *j = ctx;
+    j->cost[i + 1] = align_segment(j->A, 0, j->A->L, j->B[i], j->start[i], j->B[i]->L, j->M, j->ds,
+                                   j->tB + (size_t)(i + 1) * j->n0);
+}
+
+static int maps_unanchored(int N, const struct outline *O, const int *n, const struct bmatch_params *prm,
+                           double *tB, double *cost)
+{
+    if (params_check(prm, 0) < 0) return cm_seterr("shape 1: %s", cm_errmsg());
+    struct dpset ds = {prm->mode, prm->bend, prm->feature}, ss = ds;
+    if (ss.mode == BMATCH_ELASTIC) ss.R = prm->start_bend;
+    const struct outline **B = malloc((N - 1) * sizeof *B);
+    double *start = malloc((N - 1) * sizeof *start);
+    int rc = B && start ? 0 : cm_seterr("out of memory");
+    for (int s = 1; s < N && rc == 0; s++) B[s - 1] = &O[s];
+    if (rc == 0) rc = search_starts(&O[0], 0, B, N - 1, prm->samples, &ss, prm->threads, start);
+    if (rc == 0) {
+        struct align_jobs aj = {&O[0], B, start, &ds, prm->samples, n[0], tB, cost};
+        parallel_run(N - 1, prm->threads, align_job, &aj);
+    }
+    free(B); free(start);
+    return rc;
+}
+
 int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngiven, const int *want,
                 int nwant, int K, const struct bmatch_params *prm, int **corr_out, int *ncorr, double *cost)
 {
@@ -448,7 +522,8 @@ int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngi
         if (outline_init(&O[s], P[s], n[s]) < 0) rc = -1;
     int ninit = s - (rc < 0);
     /* the maps of shape 0 onto every shape: one job each where there are
-     * more maps than one, else the one map's start search takes the threads */
+     * more maps than one, else the one map's start search takes the threads;
+     * without a given point the start searches of all maps share them */
     if (cost) cost[0] = 0;
     if (rc == 0) {
         struct bmatch_params one = *prm;
@@ -456,7 +531,10 @@ int bmatch_corr(int N, double *const *P, const int *n, const int *given, int ngi
         struct map_jobs mj = {N, P, n, given, ngiven, N > 2 ? &one : prm, tB, malloc(N * sizeof *mj.cost),
                               calloc(N, sizeof *mj.err)};
         if (!mj.cost || !mj.err) rc = cm_seterr("out of memory");
-        else {
+        else if (ngiven == 0 && N > 2 && prm->mode != BMATCH_ARCLENGTH) {
+            rc = maps_unanchored(N, O, n, prm, tB, mj.cost);
+            for (s = 1; s < N && rc == 0; s++) if (cost) cost[s] = mj.cost[s];
+        } else {
             parallel_run(N - 1, N > 2 ? prm->threads : 1, map_job, &mj);
             for (s = 1; s < N && rc == 0; s++)
                 if (mj.err[s][0]) rc = cm_seterr("shape %d: %s", s, mj.err[s]);

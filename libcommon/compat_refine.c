@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <limits.h>
 #include <string.h>
+#include <time.h>
 
 /* ------------------------------------------------------------------ */
 /* per-triangle measures */
@@ -105,6 +106,9 @@ struct work {
                              outline edge, the outline vertices at the ends
                              of the input segment it lies on (it may slide
                              along it, shape by shape); -1 -1 otherwise */
+    double *pose_cost;    /* 3 by N: CPU seconds of each pose's last smoothing job of each
+                             kind (run_poses): a round's MIPS and smoothing, its polish,
+                             the final smoothing and polish */
     int *id;              /* cap: a number that stays with the vertex
                              (vertex indices change when collapses compact) */
     unsigned long long *sig; /* cap: signature of the vertex's star at the
@@ -574,25 +578,58 @@ struct pose_jobs {
     const struct topology *t;
     const unsigned char *bnd, *seed;
     const int *seg;
-    int sweeps;
+    int mips, smooth, polish; /* sweeps of each part of pose_job (0: none) */
     double goal;
     int threads;          /* compat_refine_params.threads */
     int *moves;           /* N: moves made in each pose */
     unsigned char *dirty; /* N by #V scratch flags */
+    double *cost;         /* N: CPU seconds of each pose's last job (in: the order; out: measured) */
+    int *order;           /* N: the poses in the order the threads take them */
 };
 
-/* run job over the N poses (in parallel: the poses' positions are
- * independent); returns the sum of moves[], -1 if out of memory */
-static int run_poses(struct pose_jobs *pj, void (*job)(void *ctx, int s))
+static void pose_job(void *ctx, int s);
+
+static double thread_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+/* pose_job of the i-th pose in pj->order, timed */
+static void pose_job_timed(void *ctx, int i)
+{
+    struct pose_jobs *pj = ctx;
+    int s = pj->order[i];
+    double t0 = thread_seconds();
+    pose_job(ctx, s);
+    pj->cost[s] = thread_seconds() - t0;
+}
+
+/* pose_job over the N poses (in parallel: the poses' positions are
+ * independent), the costliest in the last call first so that no long one
+ * is left for the end (the time decides only which thread smooths which
+ * pose, not the result); returns the sum of moves[], -1 if out of memory */
+static int run_poses(struct pose_jobs *pj)
 {
     struct compat *c = pj->c;
-    pj->moves = calloc(c->N, sizeof *pj->moves);
-    pj->dirty = malloc((size_t)c->N * c->nv + 1);
-    if (!pj->moves || !pj->dirty) { free(pj->moves); free(pj->dirty); return cm_seterr("out of memory"); }
-    parallel_run(c->N, pj->threads, job, pj);
+    int N = c->N;
+    pj->moves = calloc(N, sizeof *pj->moves);
+    pj->dirty = malloc((size_t)N * c->nv + 1);
+    pj->order = malloc(N * sizeof *pj->order);
+    if (!pj->moves || !pj->dirty || !pj->order) {
+        free(pj->moves); free(pj->dirty); free(pj->order);
+        return cm_seterr("out of memory");
+    }
+    for (int s = 0; s < N; s++) {   /* insertion sort by cost, descending (ties: index) */
+        int k = s;
+        for (; k > 0 && pj->cost[pj->order[k - 1]] < pj->cost[s]; k--) pj->order[k] = pj->order[k - 1];
+        pj->order[k] = s;
+    }
+    parallel_run(N, pj->threads, pose_job_timed, pj);
     int m = 0;
-    for (int s = 0; s < c->N; s++) m += pj->moves[s];
-    free(pj->moves); free(pj->dirty);
+    for (int s = 0; s < N; s++) m += pj->moves[s];
+    free(pj->moves); free(pj->dirty); free(pj->order);
     return m;
 }
 
@@ -604,25 +641,11 @@ static void smooth_job(void *ctx, int s)
     /* a pass without a move leaves no flag set: the later passes would
      * do nothing (so sweeping each pose on its own is what sweeping all
      * poses in turn did) */
-    for (int k = 0; k < pj->sweeps; k++) {
+    for (int k = 0; k < pj->smooth; k++) {
         int m = smooth_pass(pj->c, pj->t, pj->bnd, s, dy);
         pj->moves[s] += m;
         if (!m) break;
     }
-}
-
-/* seed: #V flags of the vertices whose neighbourhood changed since the last
- * smoothing (NULL: all); only they and whatever their moves disturb are
- * visited */
-static int smooth_sweeps(struct compat *c, const unsigned char *bnd, int sweeps, const unsigned char *seed,
-                         int threads)
-{
-    struct topology t;
-    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seed = seed, .sweeps = sweeps, .threads = threads};
-    int moves = run_poses(&pj, smooth_job);
-    topology_free(&t);
-    return moves;
 }
 
 /* MIPS-type energy of v's star in shape s with v at p: the sum over the
@@ -693,7 +716,7 @@ static double mips_below(struct star *st, const double *p, double ceiling)
  * positive (exact).  The energy is a barrier, so no triangle ever inverts;
  * it evens out the triangles of each shape as a whole, where the
  * smallest-angle smoothing only moves one vertex to a few candidates.
- * Returns the number of moves, -1 on error. */
+ * pj->mips sweeps of pose s; the moves go to pj->moves[s]. */
 static void mips_job(void *ctx, int s)
 {
     struct pose_jobs *pj = ctx;
@@ -705,7 +728,7 @@ static void mips_job(void *ctx, int s)
     {
         double *X = c->X[s];
         seed_dirty(t, c->nv, pj->seed, dy);
-        for (int k = 0; k < pj->sweeps; k++) {
+        for (int k = 0; k < pj->mips; k++) {
             int m = 0;
             for (int v = 0; v < c->nv; v++) {
                 if (!dy[v]) continue;
@@ -755,18 +778,6 @@ static void mips_job(void *ctx, int s)
             if (!m) break;
         }
     }
-}
-
-static int mips_sweeps(struct compat *c, const unsigned char *bnd, const int *seg, int sweeps,
-                       const unsigned char *seed, int threads)
-{
-    struct topology t;
-    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seed = seed, .seg = seg, .sweeps = sweeps,
-                           .threads = threads};
-    int moves = run_poses(&pj, mips_job);
-    topology_free(&t);
-    return moves;
 }
 
 /* Max-min polish of one vertex v in shape s: a pattern search (eight
@@ -827,10 +838,10 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
     return moved;
 }
 
-/* Polish every shape: the movable vertices of triangles whose smallest
- * angle in that shape is below goal (and their neighbours) get
- * polish_vertex, in sweeps while something moves.  Returns the number of
- * moves, -1 on error. */
+/* Polish of pose s: the movable vertices of triangles whose smallest
+ * angle in that pose is below goal (and their neighbours) get
+ * polish_vertex, in up to pj->polish sweeps while something moves; the
+ * moves go to pj->moves[s]. */
 static void polish_job(void *ctx, int s)
 {
     struct pose_jobs *pj = ctx;
@@ -839,7 +850,7 @@ static void polish_job(void *ctx, int s)
     unsigned char *dy = pj->dirty + (size_t)s * c->nv;
     const double *X = c->X[s];
     double sg = sin(pj->goal);
-    for (int k = 0; k < pj->sweeps; k++) {
+    for (int k = 0; k < pj->polish; k++) {
         memset(dy, 0, c->nv);
         int any = 0;
         for (int f = 0; f < c->nf; f++) {
@@ -858,13 +869,33 @@ static void polish_job(void *ctx, int s)
     }
 }
 
-static int polish(struct compat *c, const unsigned char *bnd, const int *seg, double goal, int sweeps, int threads)
+/* The smoothing of one pose: the MIPS sweeps, then the candidate
+ * smoothing, then the max-min polish (each with its number of sweeps in pj,
+ * 0: skipped).  A pose's parts follow each other without waiting for the
+ * other poses: each part reads only the topology and its own pose, so the
+ * mesh is the one of running each part over every pose in turn, and the
+ * threads wait for each other once instead of once per part. */
+static void pose_job(void *ctx, int s)
+{
+    struct pose_jobs *pj = ctx;
+    if (pj->mips) mips_job(ctx, s);
+    if (pj->smooth) smooth_job(ctx, s);
+    if (pj->polish) polish_job(ctx, s);
+}
+
+/* pose_job on every pose (mips, smooth, polish: sweeps of each part; seed:
+ * #V flags of the vertices whose neighbourhood changed since the last
+ * smoothing, NULL: all; the MIPS and candidate smoothing visit only them
+ * and whatever their moves disturb; cost: N, each pose's CPU seconds in
+ * the last call, updated).  Returns the number of moves, -1 on error. */
+static int smooth_poses(struct compat *c, const unsigned char *bnd, const int *seg, const unsigned char *seed,
+                        double goal, int mips, int smooth, int polish, int threads, double *cost)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seg = seg, .sweeps = sweeps, .goal = goal,
-                           .threads = threads};
-    int moves = run_poses(&pj, polish_job);
+    struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seed = seed, .seg = seg, .mips = mips, .smooth = smooth,
+                           .polish = polish, .goal = goal, .threads = threads, .cost = cost};
+    int moves = run_poses(&pj);
     topology_free(&t);
     return moves;
 }
@@ -1275,7 +1306,7 @@ static void refiner_free(struct compat_refiner *r)
     struct work *w = &r->w;
     snap_free(r->c->N, &r->snap);
     best_free(r->c->N, &r->best);
-    free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->id); free(w->sig);
+    free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->pose_cost); free(w->id); free(w->sig);
     free(r->sig); free(r->seed);
     free(r);
 }
@@ -1290,12 +1321,13 @@ struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat
     r->st = st ? st : &r->own;
     memset(r->st, 0, sizeof *r->st);
     r->q0 = compat_min_angle(c, NULL);
-    r->w = (struct work){c, NULL, NULL, NULL, NULL, NULL, NULL, 0, 0};
+    r->w = (struct work){.c = c};
     r->nb0 = c->nb;
     r->nv0 = c->nv;
     struct work *w = &r->w;
     w->diag = malloc(c->N * sizeof *w->diag);
-    if (!w->diag) { cm_seterr("out of memory"); goto fail; }
+    w->pose_cost = calloc(3 * (size_t)c->N, sizeof *w->pose_cost);
+    if (!w->diag || !w->pose_cost) { cm_seterr("out of memory"); goto fail; }
     for (int s = 0; s < c->N; s++) {
         double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
         for (int v = 0; v < c->nb; v++)
@@ -1366,15 +1398,12 @@ int compat_refine_step(struct compat_refiner *r)
         star_sigs(w, r->sig);
         for (int v = 0; v < c->nv; v++) r->seed[v] = r->sig[v] != w->sig[v];
     }
-    int m = pa->mips > 0 ? mips_sweeps(c, w->bnd, w->seg, pa->mips, r->seed, pa->threads) : 0;
-    if (m < 0) return -1;
-    st->moves += m;
-    m = smooth_sweeps(c, w->bnd, 8, r->seed, pa->threads);
+    int m = smooth_poses(c, w->bnd, w->seg, r->seed, goal, pa->mips > 0 ? pa->mips : 0, 8, 0, pa->threads, w->pose_cost);
     if (m < 0) return -1;
     st->moves += m;
     if (pa->mips > 0) {
         if (flips_until_done(c, &st->flips) < 0) return -1;
-        m = polish(c, w->bnd, w->seg, goal, 4, pa->threads);
+        m = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 0, 4, pa->threads, w->pose_cost + c->N);
         if (m < 0) return -1;
         st->moves += m;
     }
@@ -1383,7 +1412,7 @@ int compat_refine_step(struct compat_refiner *r)
     int tc = pa->mips > 0 ? 0 : transfer(c, w->bnd, goal, &st->moves);
     if (tc < 0) return -1;
     if (tc > 0) {   /* whole shapes moved */
-        m = smooth_sweeps(c, w->bnd, 8, NULL, pa->threads);
+        m = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, 0, pa->threads, w->pose_cost + 2 * c->N);
         if (m < 0) return -1;
         st->moves += m;
     }
@@ -1472,16 +1501,11 @@ int compat_refine_finish(struct compat_refiner *r)
             st->collapses += m;
             st->coarsened += m;
         }
-        int m1 = smooth_sweeps(c, w->bnd, 8, NULL, pa->threads);
+        /* the candidate smoothing, then (with MIPS) the polish */
+        int m1 = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, pa->mips > 0 ? 4 : 0, pa->threads, w->pose_cost + 2 * c->N);
         if (m1 < 0) goto out;
         st->moves += m1;
         m += m1;
-        if (pa->mips > 0) {
-            int m2 = polish(c, w->bnd, w->seg, goal, 4, pa->threads);
-            if (m2 < 0) goto out;
-            st->moves += m2;
-            m += m2;
-        }
         int f0 = st->flips;
         if (flips_until_done(c, &st->flips) < 0) goto out;
         if (st->flips == f0 && m == 0) break;

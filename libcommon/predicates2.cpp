@@ -1,4 +1,5 @@
 // predicates2.cpp -- see predicates2.h.
+#include <algorithm>
 #include "predicates2.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -20,6 +21,11 @@ extern "C" int orient2_sign(const double *a, const double *b, const double *c)
 
 extern "C" int segments_meet(const double *a, const double *b, const double *c, const double *d)
 {
+    /* closed segments that meet have overlapping bounding boxes: most
+     * pairs asked (an outline's chord against its other edges) are told
+     * apart by comparisons alone, exactly, without the kernel's call */
+    for (int k = 0; k < 2; k++)
+        if (std::max(a[k], b[k]) < std::min(c[k], d[k]) || std::max(c[k], d[k]) < std::min(a[k], b[k])) return 0;
     return CGAL::do_intersect(Segment(pt(a), pt(b)), Segment(pt(c), pt(d)));
 }
 

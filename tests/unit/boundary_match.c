@@ -1,8 +1,10 @@
 /* boundary_match.c -- bmatch_map and bmatch_corr give the same maps, the
  * same points and the same costs whatever the number of threads (the start
  * search's alignments and the maps onto each shape run as parallel jobs),
- * and the start search finds a rotated copy's start; a failing map names
- * its shape with any number of threads. */
+ * and the start search finds a rotated copy's start; without a given point
+ * bmatch_corr's maps (whose start searches share the threads) have the
+ * costs of bmatch_map's; a failing map names its shape with any number of
+ * threads. */
 #include "boundary_match.h"
 #include "cm_error.h"
 #include "tap.h"
@@ -67,6 +69,26 @@ int main(void)
     ok(ra == 0 && rb == 0, "corr: 1 thread and one per processor");
     ok(nA == nB && !memcmp(cA, cB, (size_t)nA * N * sizeof *cA), "corr: the same %d rows", nA);
     ok(!memcmp(costA, costB, sizeof costA), "corr: the same costs");
+    free(cA); free(cB);
+
+    /* no given point: the start searches of the three maps run on the
+     * threads together; the same rows and costs on 1 and 3 threads, and
+     * each cost is bmatch_map's */
+    for (int t = 1; t <= 3; t += 2) {
+        prm.threads = t;
+        int *cc = t == 1 ? &nA : &nB;
+        int rc = bmatch_corr(N, P, n, NULL, 0, NULL, 0, 8, &prm, t == 1 ? &cA : &cB, cc, t == 1 ? costA : costB);
+        ok(rc == 0, "corr without a given point: %d thread%s", t, t == 1 ? "" : "s");
+    }
+    ok(nA == nB && !memcmp(cA, cB, (size_t)nA * N * sizeof *cA), "corr without a given point: the same %d rows", nA);
+    ok(!memcmp(costA, costB, sizeof costA), "corr without a given point: the same costs");
+    int same = 1;
+    prm.threads = 1;
+    for (int s = 1; s < N; s++) {
+        double c;
+        same &= bmatch_map(P[0], n[0], P[s], n[s], NULL, 0, &prm, t1, &c) == 0 && c == costA[s];
+    }
+    ok(same, "corr without a given point: each cost is bmatch_map's");
     free(cA); free(cB);
 
     /* a bad given row fails in the shape it names, on any number of threads */
