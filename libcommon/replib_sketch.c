@@ -705,7 +705,10 @@ int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
          * the way (the same floats and rounding report) */
         S->decode = 0;
         S->Xk = big_alloc((size_t)S->n * S->m3 * 4);
-        if (!S->Xk) { S->keeping = 0; }
+        if (!S->Xk)     /* refused, not pieces from the sketch without a word */
+            return cm_seterr("replib_sketch: out of memory keeping %d frames in 32 bits (%.0f MB; a value "
+                             "is off the input's decimal grid, so they cannot be read where they lie)",
+                             S->n, (double)S->n * S->m3 * 4 / 1048576);
         else {
             S->xcap = S->n;
             S->fixed = S->xstep > 0; S->floated = 0; S->float_err = 0;
