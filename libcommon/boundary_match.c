@@ -116,6 +116,14 @@ static double desc_dist(const double *a, const double *b)
 
 static const int STEPS[9][2] = {{1, 1}, {1, 0}, {0, 1}, {1, 2}, {2, 1}, {1, 3}, {3, 1}, {2, 3}, {3, 2}};
 
+/* one step's cost in dp_align's loop (the same sum in the same order), or
+ * INFINITY where the loop would not take it (not below INFINITY) */
+static inline double dp_cost(double prev, double stretch, double R, double a, double b, double f5, double half)
+{
+    double c = prev + stretch + R * fabs(a - b) + f5 * half;
+    return c < INFINITY ? c : INFINITY;
+}
+
 /* Dynamic program from (0,0) to (mA, mB).  thA: mA + 1, thB: mB + 1 angles;
  * hA, hB: step lengths as fractions of the perimeters.  path (may be NULL):
  * out, up to mA + mB + 1 pairs, *plen of them.  Returns the cost.  D and
@@ -138,25 +146,49 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
         double *Dr[4];
         for (int d = 0; d < 4; d++) Dr[d] = D + (size_t)((i - d + 4 * rows) % rows) * W;
         unsigned char *Fr = path ? from + (size_t)i * W : NULL;
+        double last = 0;   /* Dr[0][j - 1], kept in a register */
         for (int j = 0; j <= mB; j++) {
             if (!i && !j) { D[0] = 0; if (Fr) Fr[0] = 255; continue; }
             double best = INFINITY;
             int bs = 255;
             double f = dA ? wf * desc_dist(dA + (size_t)i * BMATCH_SCALES, dB + (size_t)j * BMATCH_SCALES) : 0;
             if (i >= 3 && j >= 3 && R > 0) {
-                /* every step inside: all nine costs, the first smallest
-                 * kept without branches (a step from a cell at or above
-                 * the best so far costs at least as much, so the branches
-                 * below skip nothing that could win) */
+                /* every step inside: all nine costs (each summed in the
+                 * order of the loop below), then the first smallest below
+                 * INFINITY, as that loop finds it, by a tree of pairwise
+                 * choices (the earlier step wins ties): the costs do not
+                 * wait for each other, and the one step from this row's
+                 * previous cell (k = 2) joins last */
                 double tAi = thA[i], tBj = thB[j], f5 = f * 0.5;
-                for (int k = 0; k < 9; k++) {
-                    int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
-                    double c = Dr[STEPS[k][0]][pj] + stretch[k] + R * fabs((tAi - thA[pi]) - (tBj - thB[pj])) +
-                               f5 * half[k];
-                    int lt = c < best;
-                    best = lt ? c : best;
-                    bs = lt ? k : bs;
-                }
+                const double *D1 = Dr[1], *D2 = Dr[2], *D3 = Dr[3];
+                double a0 = tAi - thA[i], a1 = tAi - thA[i - 1], a2 = tAi - thA[i - 2], a3 = tAi - thA[i - 3];
+                double b0 = tBj - thB[j], b1 = tBj - thB[j - 1], b2 = tBj - thB[j - 2], b3 = tBj - thB[j - 3];
+                double c0 = dp_cost(D1[j - 1], stretch[0], R, a1, b1, f5, half[0]);
+                double c1 = dp_cost(D1[j], stretch[1], R, a1, b0, f5, half[1]);
+                double c3 = dp_cost(D1[j - 2], stretch[3], R, a1, b2, f5, half[3]);
+                double c4 = dp_cost(D2[j - 1], stretch[4], R, a2, b1, f5, half[4]);
+                double c5 = dp_cost(D1[j - 3], stretch[5], R, a1, b3, f5, half[5]);
+                double c6 = dp_cost(D3[j - 1], stretch[6], R, a3, b1, f5, half[6]);
+                double c7 = dp_cost(D2[j - 3], stretch[7], R, a2, b3, f5, half[7]);
+                double c8 = dp_cost(D3[j - 2], stretch[8], R, a3, b2, f5, half[8]);
+                double m01 = c1 < c0 ? c1 : c0;
+                int k01 = c1 < c0 ? 1 : 0;
+                double m34 = c4 < c3 ? c4 : c3;
+                int k34 = c4 < c3 ? 4 : 3;
+                double m56 = c6 < c5 ? c6 : c5;
+                int k56 = c6 < c5 ? 6 : 5;
+                double m78 = c8 < c7 ? c8 : c7;
+                int k78 = c8 < c7 ? 8 : 7;
+                double m36 = m56 < m34 ? m56 : m34;
+                int k36 = m56 < m34 ? k56 : k34;
+                double m38 = m78 < m36 ? m78 : m36;
+                int k38 = m78 < m36 ? k78 : k36;
+                double c2 = dp_cost(last, stretch[2], R, a0, b1, f5, half[2]);
+                double m02 = c2 < m01 ? c2 : m01;
+                int k02 = c2 < m01 ? 2 : k01;
+                best = m38 < m02 ? m38 : m02;
+                bs = m38 < m02 ? k38 : k02;
+                if (!(best < INFINITY)) bs = 255;
             } else
             for (int k = 0; k < 9; k++) {
                 int pi = i - STEPS[k][0], pj = j - STEPS[k][1];
@@ -168,7 +200,7 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
                            f * 0.5 * half[k];
                 if (c < best) { best = c; bs = k; }
             }
-            Dr[0][j] = best;
+            Dr[0][j] = last = best;
             if (Fr) Fr[j] = (unsigned char)bs;
         }
     }
