@@ -263,9 +263,28 @@ static int star_load(const struct compat *c, const struct topology *t, int s, in
 static double star_above(struct star *st, const double *p, double floor)
 {
     double q = INFINITY;
+    /* a triangle's sine area2 / sqrt(pp) is surely below a positive floor
+     * where area2^2 <= floor^2 (1 - 1e-9) pp (the roundings of either side
+     * are far below 1e-9; both sides normal and finite): then the square
+     * root and the division are not needed to say so.  A candidate
+     * position is mostly turned down by the triangle tried first. */
+    double fl2 = floor > 0 ? floor * floor * (1 - 1e-9) : -1;
     for (int i = 0, k = st->first; i < st->n; i++, k = k + 1 == st->n ? 0 : k + 1) {
         const double *const *Q = st->Q[k];
-        double x = sin_min_valid(Q[0] ? Q[0] : p, Q[1] ? Q[1] : p, Q[2] ? Q[2] : p);
+        const double *a = Q[0] ? Q[0] : p, *b = Q[1] ? Q[1] : p, *d = Q[2] ? Q[2] : p;
+        /* sin_min_valid(a, b, d), compat_sin_min_angle's terms */
+        double e0x = b[0] - a[0], e0y = b[1] - a[1], e1x = d[0] - b[0], e1y = d[1] - b[1];
+        double e2x = a[0] - d[0], e2y = a[1] - d[1];
+        double l0 = e0x * e0x + e0y * e0y, l1 = e1x * e1x + e1y * e1y, l2 = e2x * e2x + e2y * e2y;
+        double area2 = e0x * (d[1] - a[1]) - e0y * (d[0] - a[0]);
+        double x = -1;
+        if (area2 > 0) {
+            double pp = l0 <= l1 && l0 <= l2 ? l1 * l2 : l1 <= l2 ? l0 * l2 : l0 * l1;
+            double a2 = area2 * area2, rhs = fl2 * pp;
+            if (fl2 > 0 && a2 > 1e-290 && rhs > 1e-290 && rhs < 1e290 && a2 <= rhs) { st->first = k; return -1; }
+            x = area2 / sqrt(pp);
+            if (x <= 0 || (x < 1e-9 && orient2_sign(a, b, d) <= 0)) x = -1;
+        }
         if (x < q) q = x;
         if (q <= floor) { st->first = k; break; }
     }
@@ -682,26 +701,89 @@ static double star_mips(const struct compat *c, const struct topology *t, int s,
     return E;
 }
 
-/* star_mips without the gradient on a loaded star (struct star): the same
+/* v's star in one shape for the MIPS step (star_mips on many positions p
+ * of v): each triangle's two other corners a, b (in the triangle's order
+ * after v) and what does not depend on p: a - b and its squares.  The
+ * terms below are star_mips's, bit for bit: a - p = -(p - a) exactly (the
+ * rounding is symmetric), so the area (a - p) x (b - p) is (p - a) x (p - b)
+ * with the same products. */
+struct mstar {
+    int n, first;
+    const double *a[STAR_MAX], *b[STAR_MAX];
+    double ax[STAR_MAX], ay[STAR_MAX], bx[STAR_MAX], by[STAR_MAX];
+    double abx[STAR_MAX], aby[STAR_MAX], abx2[STAR_MAX], aby2[STAR_MAX];
+};
+
+/* loads v's star in shape s; 0 if it has more than STAR_MAX triangles */
+static int mstar_load(const struct compat *c, const struct topology *t, int s, int v, struct mstar *st)
+{
+    const double *X = c->X[s];
+    int n = t->VFs[v + 1] - t->VFs[v];
+    if (n > STAR_MAX) return 0;
+    st->n = n;
+    st->first = 0;
+    for (int i = 0; i < n; i++) {
+        const int *F = c->F + 3 * t->VF[t->VFs[v] + i];
+        int j = F[0] == v ? 0 : F[1] == v ? 1 : 2;
+        const double *a = X + 2 * F[(j + 1) % 3], *b = X + 2 * F[(j + 2) % 3];
+        st->a[i] = a; st->b[i] = b;
+        st->ax[i] = a[0]; st->ay[i] = a[1]; st->bx[i] = b[0]; st->by[i] = b[1];
+        st->abx[i] = a[0] - b[0]; st->aby[i] = a[1] - b[1];
+        st->abx2[i] = st->abx[i] * st->abx[i]; st->aby2[i] = st->aby[i] * st->aby[i];
+    }
+    return 1;
+}
+
+/* star_mips(c, t, s, v, p, g, INFINITY) on a loaded star: the same value
+ * and gradient */
+static double mstar_mips(const struct mstar *st, const double *p, double *g)
+{
+    double E = 0, gx = 0, gy = 0, k = 1 / (4 * sqrt(3.0));
+    for (int i = 0; i < st->n; i++) {
+        double pax = p[0] - st->ax[i], pay = p[1] - st->ay[i], pbx = p[0] - st->bx[i], pby = p[1] - st->by[i];
+        double S = pax * pax + pay * pay + pbx * pbx + pby * pby + st->abx2[i] + st->aby2[i];
+        double A = 0.5 * (pax * pby - pay * pbx);
+        if (!(A > 1e-12 * S) && (A <= 0 || orient2_sign(p, st->a[i], st->b[i]) <= 0)) return INFINITY;
+        double e = k * S / A;
+        E += e * e;
+        if (E >= INFINITY) return E;
+        /* (b_x - a_x) = -(a_x - b_x) exactly */
+        double dex = k * (2 * (pax + pbx) / A - S * 0.5 * st->aby[i] / (A * A));
+        double dey = k * (2 * (pay + pby) / A - S * 0.5 * -st->abx[i] / (A * A));
+        gx += 2 * e * dex; gy += 2 * e * dey;
+    }
+    g[0] = gx; g[1] = gy;
+    return E;
+}
+
+/* star_mips(c, t, s, v, p, NULL, ceiling) on a loaded star: the same
  * value where it is below ceiling, else a value >= ceiling.  A step that
  * overshoots is stopped by the triangle it squeezes; that triangle's term
  * alone, looked at first, mostly reaches the ceiling already (a term is at
  * most the sum, also in floating point: the rounding of a sum of
- * non-negative terms is monotone). */
-static double mips_below(struct star *st, const double *p, double ceiling)
+ * non-negative terms is monotone), and the triangle is remembered.  That
+ * term is surely at least ceiling where (k S)^2 >= ceiling A^2 (1 + 1e-9)
+ * (the roundings of either side are far below 1e-9; the squares stay
+ * normal and finite): then the division is not needed to say so. */
+static double mstar_below(struct mstar *st, const double *p, double ceiling)
 {
     double k = 1 / (4 * sqrt(3.0));
     for (int pass = 0; pass < 2; pass++) {
         double E = 0;
         for (int i = pass ? 0 : st->first; i < (pass ? st->n : st->first + 1); i++) {
-            int j = st->at[i];
-            const double *a = st->Q[i][(j + 1) % 3], *b = st->Q[i][(j + 2) % 3];
-            double pax = p[0] - a[0], pay = p[1] - a[1], pbx = p[0] - b[0], pby = p[1] - b[1];
-            double abx = a[0] - b[0], aby = a[1] - b[1];
-            double S = pax * pax + pay * pay + pbx * pbx + pby * pby + abx * abx + aby * aby;
-            double A = 0.5 * ((a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]));
-            if (!(A > 1e-12 * S) && (A <= 0 || orient2_sign(p, a, b) <= 0)) { st->first = i; return INFINITY; }
-            double e = k * S / A;
+            double pax = p[0] - st->ax[i], pay = p[1] - st->ay[i], pbx = p[0] - st->bx[i], pby = p[1] - st->by[i];
+            double S = pax * pax + pay * pay + pbx * pbx + pby * pby + st->abx2[i] + st->aby2[i];
+            double A = 0.5 * (pax * pby - pay * pbx);
+            if (!(A > 1e-12 * S) && (A <= 0 || orient2_sign(p, st->a[i], st->b[i]) <= 0)) {
+                st->first = i;
+                return INFINITY;
+            }
+            double kS = k * S;
+            if (!pass) {
+                double kS2 = kS * kS, A2 = A * A;
+                if (A2 > 1e-200 && kS2 < 1e200 && kS2 >= ceiling * A2 * (1 + 1e-9)) return INFINITY;
+            }
+            double e = kS / A;
             E += e * e;
             if (E >= ceiling) { st->first = i; return E; }
         }
@@ -735,8 +817,12 @@ static void mips_job(void *ctx, int s)
                 dy[v] = 0;
                 int sl = seg && seg[2 * v] >= 0;   /* slides along its outline segment */
                 if ((bnd[v] && !sl) || t->VFs[v + 1] == t->VFs[v]) continue;
-                double g[2], *x = X + 2 * v;
-                double E0 = star_mips(c, t, s, v, x, g, INFINITY), gn = hypot(g[0], g[1]);
+                double g[2] = {0, 0}, *x = X + 2 * v;
+                struct mstar st;
+                st.first = 0;
+                int big = !mstar_load(c, t, s, v, &st);
+                double E0 = big ? star_mips(c, t, s, v, x, g, INFINITY) : mstar_mips(&st, x, g);
+                double gn = hypot(g[0], g[1]);
                 if (!(gn > 0) || !isfinite(E0)) continue;
                 double L = 0;
                 int nn = t->VVs[v + 1] - t->VVs[v];
@@ -753,9 +839,6 @@ static void mips_job(void *ctx, int s)
                     gn = (g[0] * ux + g[1] * uy) / lab;
                     if (gn == 0) continue;
                 }
-                struct star st;
-                st.first = 0;
-                int big = !star_load(c, t, s, v, &st);
                 for (double h = 0.25 * L; h > 1e-4 * L; h *= 0.5) {
                     double p[2] = {x[0] - h * g[0] / gn, x[1] - h * g[1] / gn};
                     if (sl) {
@@ -764,7 +847,7 @@ static void mips_job(void *ctx, int s)
                         p[0] = A[0] + tn * ux; p[1] = A[1] + tn * uy;
                     }
                     double ceil = E0 * (1 - 1e-6);
-                    if ((big ? star_mips(c, t, s, v, p, NULL, ceil) : mips_below(&st, p, ceil)) < ceil) {
+                    if ((big ? star_mips(c, t, s, v, p, NULL, ceil) : mstar_below(&st, p, ceil)) < ceil) {
                         x[0] = p[0]; x[1] = p[1]; m++;
                         /* a step under 1% of the mean edge does not wake
                          * the neighbours (nor v): the sweeps stay where
