@@ -10,7 +10,7 @@ typedef K::Segment_2 Segment;
 
 static inline Point pt(const double *p) { return Point(p[0], p[1]); }
 
-extern "C" int orient2_sign(const double *a, const double *b, const double *c)
+extern "C" int orient2_sign_exact(const double *a, const double *b, const double *c)
 {
     switch (CGAL::orientation(pt(a), pt(b), pt(c))) {
     case CGAL::LEFT_TURN: return 1;
@@ -19,7 +19,7 @@ extern "C" int orient2_sign(const double *a, const double *b, const double *c)
     }
 }
 
-extern "C" int segments_meet(const double *a, const double *b, const double *c, const double *d)
+extern "C" int segments_meet_exact(const double *a, const double *b, const double *c, const double *d)
 {
     /* closed segments that meet have overlapping bounding boxes: most
      * pairs asked (an outline's chord against its other edges) are told
@@ -37,8 +37,8 @@ static bool between(const double *a, const double *b, const double *p)
 
 extern "C" int open_segment_meets(const double *a, const double *b, const double *c, const double *d)
 {
-    int o1 = orient2_sign(a, b, c), o2 = orient2_sign(a, b, d);
-    int o3 = orient2_sign(c, d, a), o4 = orient2_sign(c, d, b);
+    int o1 = orient2_sign_exact(a, b, c), o2 = orient2_sign_exact(a, b, d);
+    int o3 = orient2_sign_exact(c, d, a), o4 = orient2_sign_exact(c, d, b);
     if (o1 * o2 < 0 && o3 * o4 < 0) return 1;        // proper crossing
     auto eq = [](const double *p, const double *q) { return p[0] == q[0] && p[1] == q[1]; };
     // c or d on the open segment ab
