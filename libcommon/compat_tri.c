@@ -524,7 +524,7 @@ static double cone_quality_cut(const struct sub *p, int i, const double *q, doub
 static inline int edge_meets(const struct sub *p, int e, int i, int j, const double *P, const double *Q,
                              double lo0, double hi0, double lo1, double hi1)
 {
-    int f = (e + 1) % p->m;
+    int f = e + 1 == p->m ? 0 : e + 1;
     if (e == i || f == i || e == j || f == j) return 0;
     const double *a = V(p, e), *b = V(p, f);
     if ((a[0] < lo0 && b[0] < lo0) || (a[0] > hi0 && b[0] > hi0) || (a[1] < lo1 && b[1] < lo1) ||
@@ -578,6 +578,17 @@ static int seg_inside(const struct sub *p, int i, const double *P, int j, const 
 #define CLEARANCE_MIN (0.5 * M_PI / 180)
 #define STAGE1_MIN 1e-6
 
+/* the pseudo-angle 1 - x / d (d = |x| + |y|) is surely above the smallest
+ * so far, pmin, given t = 1 - pmin (-INFINITY: none yet): x <= (t - 1e-9)
+ * d puts x / d at least 1e-9 below t, far beyond the roundings of the
+ * division, the subtractions and the product (d normal: no underflow), so
+ * 1 - x / d > pmin in floating point too.  The clearance loops then skip
+ * the corner's divisions: they would change nothing. */
+static inline int pseudo_above(double x, double d, double t)
+{
+    return d > 1e-280 && d < 1e280 && x <= (t - 1e-9) * d;
+}
+
 /* how far the segment P-Q (corners i, j, or free if < 0) keeps from the
  * other corners, as an angle: the smallest over corners v of the smaller
  * of the angles v-P-Q and v-Q-P (a corner close to the segment makes a
@@ -591,7 +602,7 @@ static double clearance_cut(const struct sub *p, int i, const double *P, int j, 
     double ux = Q[0] - P[0], uy = Q[1] - P[1];
     /* the smallest angle by a pseudo-angle 1 - x / (|x| + y) (monotone in
      * atan2(y, x) for y >= 0): one atan2 per call instead of two per corner */
-    double pmin = INFINITY, my = 0, mx = -1;
+    double pmin = INFINITY, my = 0, mx = -1, t = -INFINITY;
     int m = p->m;
     for (int v = 0; v < m; v++) {
         if (v == i || v == j) continue;
@@ -603,9 +614,11 @@ static double clearance_cut(const struct sub *p, int i, const double *P, int j, 
         double y1 = fabs(ux * ay - uy * ax), x1 = ux * ax + uy * ay;
         double y2 = fabs(ux * by - uy * bx), x2 = -(ux * bx + uy * by);
         double d1 = fabs(x1) + y1, d2 = fabs(x2) + y2;
+        if (pseudo_above(x1, d1, t) && pseudo_above(x2, d2, t)) continue;
         double p1 = d1 > 0 ? 1 - x1 / d1 : 0, p2 = d2 > 0 ? 1 - x2 / d2 : 0;
         if (p1 < pmin) { pmin = p1; my = y1; mx = x1; }
         if (p2 < pmin) { pmin = p2; my = y2; mx = x2; }
+        t = 1 - pmin;
         if (pmin < pcut) break;
     }
     return pmin == INFINITY ? M_PI : atan2(my, mx);
@@ -620,7 +633,7 @@ static void clearance_pair(const struct sub *p, int i, const double *q, double *
 {
     const double *P = V(p, i);
     double ux = q[0] - P[0], uy = q[1] - P[1];
-    double pf = INFINITY, fy = 0, fx = -1, pt = INFINITY, ty = 0, tx = -1;
+    double pf = INFINITY, fy = 0, fx = -1, pt = INFINITY, ty = 0, tx = -1, t = -INFINITY;
     int m = p->m;
     for (int v = 0; v < m; v++) {
         if (v == i || v == (i + 1) % m || v == (i + m - 1) % m) continue;
@@ -629,11 +642,14 @@ static void clearance_pair(const struct sub *p, int i, const double *q, double *
         double y1 = fabs(ux * ay - uy * ax), x1 = ux * ax + uy * ay;
         double y2 = fabs(ux * by - uy * bx), x2 = -(ux * bx + uy * by);
         double d1 = fabs(x1) + y1, d2 = fabs(x2) + y2;
+        /* (pf and pt are the same value: the smallest of the same terms) */
+        if (pseudo_above(x1, d1, t) && pseudo_above(x2, d2, t)) continue;
         double p1 = d1 > 0 ? 1 - x1 / d1 : 0, p2 = d2 > 0 ? 1 - x2 / d2 : 0;
         if (p1 < pf) { pf = p1; fy = y1; fx = x1; }
         if (p2 < pf) { pf = p2; fy = y2; fx = x2; }
         if (p2 < pt) { pt = p2; ty = y2; tx = x2; }
         if (p1 < pt) { pt = p1; ty = y1; tx = x1; }
+        t = 1 - pf;
     }
     *from = pf == INFINITY ? M_PI : atan2(fy, fx);
     *to = pt == INFINITY ? M_PI : (pt == pf && ty == fy && tx == fx) ? *from : atan2(ty, tx);
