@@ -1859,6 +1859,21 @@ static double face_quality(const struct compat *c, int a, int b, int d)
     return q;
 }
 
+/* face_quality, or any value <= floor once the smallest so far is at or
+ * below it (the shapes after that can only lower it) */
+static double face_quality_above(const struct compat *c, int a, int b, int d, double floor)
+{
+    double q = INFINITY;
+    for (int s = 0; s < c->N; s++) {
+        const double *X = c->X[s];
+        double x = compat_sin_min_angle(X + 2 * a, X + 2 * b, X + 2 * d);
+        if (x < 1e-9 && orient2_sign(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
+        q = fmin(q, x);
+        if (q <= floor) break;
+    }
+    return q;
+}
+
 double compat_min_angle(const struct compat *c, double *minarea)
 {
     double q = INFINITY, ma = INFINITY;
@@ -1910,9 +1925,9 @@ static int flip_decision(const struct compat *c, const struct topology *t, int e
     if (topology_edge(t, p, q) >= 0) return FLIP_AGAIN;
     double old = fmin(face_quality(c, a, b, p), face_quality(c, b, a, q));
     /* the second new face is looked at only if the first beats old */
-    double n1 = face_quality(c, a, q, p);
+    double n1 = face_quality_above(c, a, q, p, old + 1e-9);
     if (!(n1 > old + 1e-9)) return FLIP_NONE;
-    double n2 = face_quality(c, b, p, q);
+    double n2 = face_quality_above(c, b, p, q, old + 1e-9);
     return n2 > old + 1e-9 ? FLIP_DO : FLIP_NONE;
 }
 
