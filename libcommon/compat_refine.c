@@ -310,7 +310,10 @@ static int smooth_pass(struct compat *c, const struct topology *t, const unsigne
             if (!dy[v]) continue;
             dy[v] = 0;
             if (bnd[v] || t->VFs[v + 1] == t->VFs[v]) continue;
-            double old = star_quality(c, t, s, v, X + 2 * v);
+            struct star st;
+            int big = !star_load(c, t, s, v, &st);
+            /* the whole star's smallest (no floor: star_quality's value) */
+            double old = big ? star_quality(c, t, s, v, X + 2 * v) : star_above(&st, X + 2 * v, -INFINITY);
             /* candidates: mean of the equilateral apexes, neighbour centroid */
             double cand[6][2], ix = 0, iy = 0, gx = 0, gy = 0;
             int nfv = t->VFs[v + 1] - t->VFs[v];
@@ -334,8 +337,6 @@ static int smooth_pass(struct compat *c, const struct topology *t, const unsigne
             cand[5][0] = 0.5 * (ix + gx); cand[5][1] = 0.5 * (iy + gy);
             int best = -1;
             double bq = old;
-            struct star st;
-            int big = !star_load(c, t, s, v, &st);
             for (int k = 0; k < 6; k++) {
                 double thr = bq * (1 + 1e-9) + 1e-15;
                 double q = big ? star_quality_above(c, t, s, v, cand[k], thr) : star_above(&st, cand[k], thr);
@@ -874,7 +875,9 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
 {
     double *X = c->X[s], *x = X + 2 * v;
     int sl = seg && seg[2 * v] >= 0;
-    double q = star_quality(c, t, s, v, x);
+    struct star st;
+    int big = !star_load(c, t, s, v, &st);
+    double q = big ? star_quality(c, t, s, v, x) : star_above(&st, x, -INFINITY);
     if (!(q > 0)) return 0;
     int nn = t->VVs[v + 1] - t->VVs[v];
     if (!nn) return 0;
@@ -895,8 +898,6 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
                                    {0.7071067811865476, -0.7071067811865476}};
     double p[2] = {x[0], x[1]};
     int moved = 0;
-    struct star st;
-    int big = !star_load(c, t, s, v, &st);
     for (double h = 0.2 * L; h > 1e-3 * L;) {
         double bq = q, bp[2] = {0, 0};
         int nd = sl ? 2 : 8, found = 0;
