@@ -1114,7 +1114,12 @@ static int collapse_pass(struct work *w, unsigned char *dead, double goal, int c
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
     unsigned char *lock = calloc(c->nv ? c->nv : 1, 1);
-    if (!lock) { topology_free(&t); return cm_seterr("out of memory"); }
+    /* face_sin of every face as the pass starts: a vertex that is looked
+     * at is not locked, so no collapse has changed a face of its star (the
+     * faces a collapse changes hold only the locked vertices) */
+    double *fq = malloc((c->nf ? c->nf : 1) * sizeof *fq);
+    if (!lock || !fq) { free(lock); free(fq); topology_free(&t); return cm_seterr("out of memory"); }
+    for (int f = 0; f < c->nf; f++) fq[f] = face_sin(c, c->F[3 * f], c->F[3 * f + 1], c->F[3 * f + 2]);
     double sg = sin(goal);
     int n = 0;
     for (int v = 0; v < c->nv; v++) {
@@ -1122,10 +1127,7 @@ static int collapse_pass(struct work *w, unsigned char *dead, double goal, int c
         if (onb && w->seg[2 * v] < 0) continue;   /* input outline vertex */
         if (dead[v] || lock[v] || t.VFs[v + 1] == t.VFs[v] || w->id[v] >= maxid) continue;
         double old = INFINITY;
-        for (int k = t.VFs[v]; k < t.VFs[v + 1]; k++) {
-            const int *F = c->F + 3 * t.VF[k];
-            old = fmin(old, face_sin(c, F[0], F[1], F[2]));
-        }
+        for (int k = t.VFs[v]; k < t.VFs[v + 1]; k++) old = fmin(old, fq[t.VF[k]]);
         if (!coarsen && !(old < sg)) continue;
         int bu = -1, pred = -1;
         double floor = coarsen ? fmin(old, sg) : old, bq = -1;
@@ -1175,7 +1177,7 @@ static int collapse_pass(struct work *w, unsigned char *dead, double goal, int c
             nf++;
         }
     c->nf = nf;
-    free(lock);
+    free(lock); free(fq);
     topology_free(&t);
     return n;
 }
