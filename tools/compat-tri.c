@@ -248,6 +248,10 @@ static void die_row(const char *path)
     die("cannot read '%s': %s", path, m);
 }
 
+/* seconds since the start (the -v lines say when each stage ended) */
+static double t_start;
+static double elapsed(void) { return now_seconds() - t_start; }
+
 /* The certificate of nc correspondence rows (corr: nc by N, counter-
  * clockwise; row[k]: their 1-based rows in the file named name; who: what
  * they are, for the line) as one line into line (size len); the cost goes
@@ -256,17 +260,16 @@ static double cert_line(int N, double **P, const int *n, const int *corr, int nc
                         const char *who, char *line, size_t len)
 {
     struct modulus_cert mc;
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t0);
     if (modulus_certificate(N, P, n, corr, nc, CERT_TOL, &mc) < 0) die("certificate failed: %s", cm_errmsg());
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t1);
     if (nc < 4) {
         snprintf(line, len, "certificate: %d point%s given in every shape; 4 are needed for a bound on the angles",
                  nc, nc == 1 ? "" : "s");
         return mc.ceiling;
     }
-    info(1, "certificate: %d quadruples of %.*s in %d shapes, brackets to %g, largest mesh %d vertices, %.3f s CPU",
-         mc.quads, (int)strcspn(who, "("), who, N, CERT_TOL, mc.nv, (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec));
+    int wl = (int)strcspn(who, "(");   /* without the parenthesis */
+    while (wl > 0 && who[wl - 1] == ' ') wl--;
+    info(1, "certificate: %d quadruples of %.*s in %d shapes, brackets to %g, largest mesh %d vertices; at %.3f s",
+         mc.quads, wl, who, N, CERT_TOL, mc.nv, elapsed());
     int r[4];
     for (int t = 0; t < 4; t++) r[t] = row[mc.row[t]];
     for (int a = 0; a < 4; a++)   /* increasing file rows */
@@ -274,9 +277,9 @@ static double cert_line(int N, double **P, const int *n, const int *corr, int nc
             if (r[b] < r[a]) { int t = r[a]; r[a] = r[b]; r[b] = t; }
     snprintf(line, len, "certificate: %s force a map stretch of at least %.3gx between poses %d and %d "
              "(rows %d %d %d %d of %s: modulus %.4g-%.4g against %.4g-%.4g): no compatible triangulation%s keeps "
-             "more than %.1f deg in both", who, mc.ratio, mc.pose[1], mc.pose[0], r[0], r[1], r[2], r[3], name,
+             "more than %.1f deg in both", who, mc.ratio > 1 ? mc.ratio : 1, mc.pose[1], mc.pose[0], r[0], r[1], r[2], r[3], name,
              mc.lo[1], mc.hi[1], mc.lo[0], mc.hi[0], strcmp(who, "the given points") ? " through them" : "",
-             floor(mc.ceiling * 10) / 10);
+             floor(mc.ceiling * 10 + 1e-6) / 10);
     return mc.ceiling;
 }
 
@@ -531,9 +534,6 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (o->interior) columns_free(&I);
 }
 
-/* seconds since the start (the -v lines say when each stage ended) */
-static double t_start;
-static double elapsed(void) { return now_seconds() - t_start; }
 
 /* the refinement's parameters for cp (compat_refine_params) */
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
