@@ -903,6 +903,9 @@ int main(int argc, char **argv)
         if (o.bound) {
             printf("%s\n", line + strlen("certificate: "));
             if (fclose(stdout) != 0) die("cannot write output");
+            for (int s = 0; s < N; s++) rings_free(&R[s]);
+            free(R);
+            free(flipped);
             return 0;
         }
         info(1, "%s", line);
