@@ -30,6 +30,7 @@ test_expect_success 'hidden leg: -v prints the same line, the mesh is the one wi
 	grep "compat-tri: certificate: the given points force" log >line &&
 	test "$(sed "s/^compat-tri: certificate: //" line)" = "$(cat b.txt)" &&
 	grep "certificate: 15 quadruples of the given points in 2 shapes" log &&
+	grep "certificate: the goal of 20 deg is out of reach with the given points (no triangulation keeps more than $(ceiling b.txt) deg); the mesh reaches" log &&
 	test_le 1e-12 $(min_area m1.mesh) &&
 	test_le $(worst_angle m1.mesh) $(ceiling b.txt)
 '

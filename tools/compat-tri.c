@@ -433,7 +433,8 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
  * largest ratio of conformal moduli of a quadrilateral (four given points)
  * between two poses, which bounds the worst angle of any compatible
  * triangulation honouring the points (modulus_cert.h).  Written as one
- * line into line (size len); returns the ceiling in degrees (60: none). */
+ * line into line (size len); returns the ceiling in degrees (-1: fewer than
+ * 4 rows, no certificate). */
 static double certify(const struct options *o, struct rings *R, const int *flipped, char *line, size_t len)
 {
     int N = o->nshapes;
@@ -478,7 +479,7 @@ static double certify(const struct options *o, struct rings *R, const int *flipp
     double ceiling = cert_line(N, P, n, corr, nc, row, o->corr, "the given points", line, len);
     columns_free(&C);
     free(n); free(corr); free(row); free(P);
-    return ceiling;
+    return nc >= 4 ? ceiling : -1;
 }
 
 /* several rings or interior points: compat_holes.h */
@@ -895,11 +896,12 @@ int main(int argc, char **argv)
             if ((flipped[s] = rings_orient(&R[s])))
                 info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
     o.flipped = flipped;
+    double ceiling = -1;   /* of the given points, degrees; -1: not computed */
     if (o.bound || (verbose && o.corr)) {
         char line[1024];
         if (multi) snprintf(line, sizeof line, "certificate: not computed for several rings or interior points "
                                                 "(the quadrilateral moduli are those of one outer ring)");
-        else certify(&o, R, flipped, line, sizeof line);
+        else ceiling = certify(&o, R, flipped, line, sizeof line);
         if (o.bound) {
             printf("%s\n", line + strlen("certificate: "));
             if (fclose(stdout) != 0) die("cannot write output");
@@ -956,6 +958,14 @@ int main(int argc, char **argv)
     info(1, "result: %d vertices (%d boundary, %d Steiner, %d refinement), %d triangles, "
             "min angle %.2f deg over %d shapes, %.3f s", cp.nv, cp.nb, cp.nsteiner, cp.nrefine, cp.nf,
          q * 180 / M_PI, N, elapsed());
+    if (ceiling > 0 && q * 180 / M_PI < o.min_angle) {   /* the shortfall against the certificate */
+        if (ceiling < o.min_angle)
+            info(1, "certificate: the goal of %g deg is out of reach with the given points (no triangulation keeps more "
+                    "than %.1f deg); the mesh reaches %.2f deg", o.min_angle, floor(ceiling * 10 + 1e-6) / 10, q * 180 / M_PI);
+        else
+            info(1, "certificate: below the goal, but the given points allow up to %.1f deg: the shortfall to %g deg is not "
+                    "proven to come from the outlines and the given points", floor(ceiling * 10 + 1e-6) / 10, o.min_angle);
+    }
 
     struct mesh m;
     if (mesh_alloc(&m, cp.nv, cp.nf, N) < 0) die("%s", cm_errmsg());
