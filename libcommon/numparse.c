@@ -307,48 +307,63 @@ const char *parse_long(const char *s, long *out)
     return p;
 }
 
-/* Lay out the decimal N * 10^(e - P + 1) (N has exactly P digits) the way
- * printf's %.Pg does: trailing zeros dropped, scientific notation when
- * e < -4 or e >= P.  Returns the length. */
-static int layout_g(char *buf, int neg, uint64_t N, int P, int e)
+/* Lay out the decimal s * 10^(e - k + 1) (s has exactly k digits, the
+ * last one nonzero) the way printf's %.Pg does (P >= k): scientific
+ * notation when e < -4 or e >= P, else positional; printf drops the
+ * trailing zeros of its P digits, which leaves the k of s.  Returns the
+ * length. */
+static int layout_g(char *buf, int neg, uint64_t s, int k, int P, int e)
 {
-    /* the P digits of N: two independent halves of 8 digits, two digits
-     * per step (the plain writer spends most of its time here) */
     static const char dig2[201] =
         "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
         "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
         "8081828384858687888990919293949596979899";
+    /* the k digits of s into t[24 - k .. 23]: two 8-digit halves in 32
+     * bits, two digits per step */
     char t[24];
-    uint32_t lo = (uint32_t)(N % 100000000), mid = (uint32_t)(N / 100000000 % 100000000);
-    uint32_t hi = (uint32_t)(N / 10000000000000000ULL);      /* < 10 for P <= 17 */
-    for (int i = 7; i > 0; i -= 2) {
-        memcpy(t + 16 + i - 1, dig2 + 2 * (lo % 100), 2);
-        memcpy(t + 8 + i - 1, dig2 + 2 * (mid % 100), 2);
-        lo /= 100;
-        mid /= 100;
+    char *end = t + 24, *d = end;
+    uint32_t lo = (uint32_t)(s % 100000000), hi32;
+    uint64_t hi = s / 100000000;
+    if (hi) {
+        for (int i = 0; i < 4; i++) { d -= 2; memcpy(d, dig2 + 2 * (lo % 100), 2); lo /= 100; }
+        uint32_t mid = (uint32_t)(hi % 100000000);
+        hi32 = (uint32_t)(hi / 100000000);          /* < 10 for k <= 17 */
+        if (hi32) {
+            for (int i = 0; i < 4; i++) { d -= 2; memcpy(d, dig2 + 2 * (mid % 100), 2); mid /= 100; }
+            *--d = (char)('0' + hi32);
+        } else {
+            while (mid >= 100) { d -= 2; memcpy(d, dig2 + 2 * (mid % 100), 2); mid /= 100; }
+            if (mid >= 10) { d -= 2; memcpy(d, dig2 + 2 * mid, 2); } else *--d = (char)('0' + mid);
+        }
+    } else {
+        while (lo >= 100) { d -= 2; memcpy(d, dig2 + 2 * (lo % 100), 2); lo /= 100; }
+        if (lo >= 10) { d -= 2; memcpy(d, dig2 + 2 * lo, 2); } else *--d = (char)('0' + lo);
     }
-    t[7] = (char)('0' + hi % 10);
-    const char *d = t + 24 - P;
-    int nd = P;
-    while (nd > 1 && d[nd - 1] == '0') nd--;
     char *o = buf;
-    if (neg) *o++ = '-';
+    *o = '-';
+    o += neg;
     if (e < -4 || e >= P) {
         *o++ = d[0];
-        if (nd > 1) { *o++ = '.'; for (int i = 1; i < nd; i++) *o++ = d[i]; }
+        if (k > 1) { *o++ = '.'; memcpy(o, d + 1, (size_t)k - 1); o += k - 1; }
         *o++ = 'e';
         *o++ = e < 0 ? '-' : '+';
         int ae = e < 0 ? -e : e;
         if (ae >= 100) *o++ = (char)('0' + ae / 100);
-        *o++ = (char)('0' + ae / 10 % 10);
-        *o++ = (char)('0' + ae % 10);
+        memcpy(o, dig2 + 2 * (ae % 100), 2);
+        o += 2;
     } else if (e >= 0) {
-        for (int i = 0; i <= e; i++) *o++ = i < nd ? d[i] : '0';
-        if (nd > e + 1) { *o++ = '.'; for (int i = e + 1; i < nd; i++) *o++ = d[i]; }
+        if (k <= e + 1) {
+            memcpy(o, d, (size_t)k); o += k;
+            for (int i = k; i <= e; i++) *o++ = '0';
+        } else {
+            memcpy(o, d, (size_t)e + 1); o += e + 1;
+            *o++ = '.';
+            memcpy(o, d + e + 1, (size_t)(k - e - 1)); o += k - e - 1;
+        }
     } else {
-        *o++ = '0'; *o++ = '.';
-        for (int i = 0; i < -e - 1; i++) *o++ = '0';
-        for (int i = 0; i < nd; i++) *o++ = d[i];
+        memcpy(o, "0.0000", (size_t)(1 - e));       /* "0." and -e - 1 zeros */
+        o += 1 - e;
+        memcpy(o, d, (size_t)k); o += k;
     }
     *o = 0;
     return (int)(o - buf);
@@ -375,8 +390,8 @@ int format_double(char *buf, double x)
     uint64_t s;
     int E;
     shortest_decimal(x, &s, &E);
-    int k = 1;
-    while (k < 17 && s >= p10u[k]) k++;
-    int P = k < 15 ? 15 : k;
-    return layout_g(buf, x < 0, s * p10u[P - k], P, E + k - 1);
+    /* its digits: floor(log10 s) + 1, from the bit length (s < 10^17) */
+    int t = ((64 - __builtin_clzll(s)) * 1233) >> 12;
+    int k = t + (s >= p10u[t]);
+    return layout_g(buf, x < 0, s, k, k < 15 ? 15 : k, E + k - 1);
 }

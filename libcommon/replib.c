@@ -764,6 +764,10 @@ struct work {
     int ncand;                  /* > 0: label steps restricted to this many candidates per frame (search trials) */
     double *qd;                 /* d: the diagonal of Q */
     double *Pb, *Qb;            /* P and Q of the best library of the search (restored when a trial fails) */
+    double *Pspare;             /* a free N by d buffer for P; with pshared = 1, P and Pb are one
+                                   buffer (saved or restored without a copy: P gets its own again,
+                                   a copy only when it is about to be updated in place) */
+    int pshared;
     /* incremental costs (direct back end): P, Q and Rw are those of the
      * library solved for the labels lw when have = 1 */
     int *lw, have, ninc;
@@ -784,7 +788,8 @@ struct work {
 static void work_free(struct work *w)
 {
     free(w->P); free(w->Q); free(w->C); free(w->Rw); free(w->U); free(w->T); free(w->H); free(w->c);
-    free(w->Pb); free(w->Qb); free(w->qd);
+    if (!w->pshared) free(w->Pb);
+    free(w->Pspare); free(w->Qb); free(w->qd);
     free(w->lw); free(w->lwb); free(w->Rwb); free(w->smark);
     free(w->cand); free(w->nc); free(w->hs);
     memset(w, 0, sizeof *w);
@@ -816,6 +821,20 @@ static int work_init(struct work *w, const struct replib_data *D, int d)
     return 0;
 }
 
+/* P about to be written: all of it (keep = 0) or updated in place (keep
+ * = 1).  While P is the search's saved buffer (pshared), it moves to the
+ * spare one first, with a copy of the numbers only if they are kept. */
+static double *p_write(struct work *w, int keep)
+{
+    if (w->pshared) {
+        if (keep) memcpy(w->Pspare, w->P, sizeof(double) * (size_t)w->D->N * w->d);
+        w->P = w->Pspare;
+        w->Pspare = NULL;
+        w->pshared = 0;
+    }
+    return w->P;
+}
+
 /* Gram back end: with r_a = sum_g C_ag z_g, P = K C^T and Q = C K C^T.
  * Row copies read K directly; solved pieces need only the sparse B:
  * P_F^T = A_FF^-1 (B K) (nnz N flops + two triangular solves), and
@@ -838,6 +857,7 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
         for (int p = 0; p < nf; p++)
             memcpy(PT + (size_t)s->fidx[p] * N, tmp + (size_t)p * N, sizeof(double) * N);
     }
+    p_write(w, 0);
     for (int g = 0; g < N; g++)
         for (int a = 0; a < d; a++) w->P[(size_t)g * d + a] = PT[(size_t)a * N + g];
     /* Q rows: a row copy a reads P at its source; solved rows via B P */
@@ -949,7 +969,7 @@ static void library_q(const struct replib_data *D, struct work *w)
 static void direct_products(const struct replib_data *D, struct work *w)
 {
     int n = D->n, d = w->d, m3 = D->zdim;
-    gemm_abt(w->team, n, d, m3, D->Z, m3, w->Rw, m3, 0.0, w->P, d);
+    gemm_abt(w->team, n, d, m3, D->Z, m3, w->Rw, m3, 0.0, p_write(w, 0), d);
     library_q(D, w);
 }
 
@@ -979,16 +999,28 @@ static int compute_costs(const struct replib_data *D, const struct lstate *s, do
 static int best_costs(const struct replib_data *D, double mu, struct work *w, int save)
 {
     size_t np = (size_t)D->N * w->d, nq = (size_t)w->d * w->d, nr = D->K ? 0 : (size_t)w->d * D->zdim;
-    if (!w->Pb) {
-        w->Pb = malloc(sizeof(double) * np);
+    if (!w->Qb) {
+        w->Pspare = malloc(sizeof(double) * np);
         w->Qb = malloc(sizeof(double) * nq);
         w->lwb = malloc(sizeof(int) * D->n);
         w->Rwb = nr ? malloc(sizeof(double) * nr) : NULL;
-        if (!w->Pb || !w->Qb || !w->lwb || (nr && !w->Rwb))
+        if (!w->Pspare || !w->Qb || !w->lwb || (nr && !w->Rwb))
             return cm_seterr("replib: out of memory (%d frames, %d pieces)", D->n, w->d);
     }
+    /* P: the buffers change roles, no copy (p_write) */
+    if (!w->pshared) {
+        if (save) {                 /* the old saved buffer (if any) is the spare */
+            double *old = w->Pb;
+            w->Pb = w->P;
+            if (old) w->Pspare = old;
+        } else {
+            if (!w->Pb) return cm_seterr("replib: internal: costs restored before any were saved");
+            w->Pspare = w->P;
+            w->P = w->Pb;
+        }
+        w->pshared = 1;
+    }
     if (save) {
-        memcpy(w->Pb, w->P, sizeof(double) * np);
         memcpy(w->Qb, w->Q, sizeof(double) * nq);
         w->haveb = w->have;
         if (w->have) {
@@ -996,7 +1028,6 @@ static int best_costs(const struct replib_data *D, double mu, struct work *w, in
             memcpy(w->Rwb, w->Rw, sizeof(double) * nr);
         }
     } else {
-        memcpy(w->P, w->Pb, sizeof(double) * np);
         memcpy(w->Q, w->Qb, sizeof(double) * nq);
         w->have = w->haveb;
         w->ninc = 0;
@@ -1064,7 +1095,7 @@ static int costs_incremental(const struct replib_data *D, const struct lstate *s
         lsolve(s, ns, M);                   /* M = A_FF^-1 [., S] */
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nf, r, ns, 1.0, M, ns, E, r, 1.0, Rf, r);
         gemm_abt(w->team, n, ns, r, Z, r, E, r, 0.0, G, ns);
-        gemm_abt(w->team, n, nf, ns, G, ns, M, ns, 1.0, w->P + nfix, d);
+        gemm_abt(w->team, n, nf, ns, G, ns, M, ns, 1.0, p_write(w, 1) + nfix, d);
         library_q(D, w);
         free(E); free(M); free(G);
         w->ninc++;
@@ -1732,7 +1763,7 @@ static int seed_greedy(const struct replib_data *D, struct team *t, int d, int p
 static int hartigan(const struct replib_data *D, struct work *w, int *l, double *kc)
 {
     int n = D->n, d = w->d, nfix = D->nfix, moves = 0;
-    double *P = w->P, *U = w->U, *Q = w->Q;
+    double *P = p_write(w, 1), *U = w->U, *Q = w->Q;
     int *cnt = calloc(d, sizeof(int));
     if (!cnt) return -1;
     for (int f = 0; f < n; f++) cnt[l[f]]++;
@@ -2349,9 +2380,11 @@ struct eval_job {
     const int *l;
     const unsigned char *cut;
     double *frame_err;
-    double data, se, me, vel, sv, mv;
-    long nvel;
-    int worst;
+    struct eval_part {                  /* the sums of each half */
+        double data, se, me, vel, sv, mv;
+        long nvel;
+        int worst;
+    } part[2];
 };
 
 /* frame f of the kept 32-bit frames in double (b + kept q, or b + kept;
@@ -2367,6 +2400,11 @@ static void kept_frame(const double *restrict b, const int32_t *restrict xi, con
     else for (size_t k = 0; k < m3; k++) out[k] = b[k] + xf[k];
 }
 
+/* Job j of two: the frames [f0, f1) of its half, each read (decoded)
+ * once: its data term, and the velocity term of each step f -> f + 1
+ * from it (the first frame of the other half is read again for the
+ * last step).  The sums of a half run in frame order; the halves are
+ * fixed by n, not by the threads. */
 static void eval_half(void *ctx, int job)
 {
     struct eval_job *j = ctx;
@@ -2376,50 +2414,40 @@ static void eval_half(void *ctx, int job)
     const mapped_double *const *Xm = j->Xm;
     double q = j->q;
     int n = j->n, nv = j->nv;
+    int f0 = job == 0 ? 0 : n / 2, f1 = job == 0 ? n / 2 : n;
     const int *l = j->l;
     const unsigned char *cut = j->cut;
     size_t m3 = 3 * (size_t)nv;
     double data = 0, vel = 0, se = 0, sv = 0, me = 0, mv = 0;
     long nvel = 0;
-    int worst = 0;
-    double *xb = NULL, *xcur = NULL, *xnext = NULL;   /* job 1: xnext holds frame f as step f starts */
-    if (!X) {       /* two frames in double at a time */
-        xb = malloc(sizeof(double) * 2 * m3);
-        if (!xb) { j->oom = 1; return; }
+    int worst = f0;
+    double *xb = NULL, *xcur = NULL, *xnext = NULL;   /* frames f and f + 1 in double */
+    if (f0 >= f1) { j->part[job] = (struct eval_part){0}; return; }
 #define KEPT(f, out) kept_frame(xbase ? xbase + (size_t)((f) / REPLIB_KEEP_CHUNK) * m3 : ref, \
                                 Xi ? Xi + (size_t)(f) * m3 : NULL, Xm ? Xm[f] : NULL, \
                                 Xi || Xm ? NULL : Xf + (size_t)(f) * m3, q, m3, out)
-        KEPT(0, job == 0 ? xb : xb + m3);
-        if (Xm && job == 1) mapped_release((const void *)Xm[0], (const void *)(Xm[0] + m3));
+#define RELEASE(f) do { if (Xm) mapped_release((const void *)Xm[f], (const void *)(Xm[f] + m3)); } while (0)
+    if (!X) {
+        xb = malloc(sizeof(double) * 2 * m3);
+        if (!xb) { j->oom = 1; return; }
         xcur = xb; xnext = xb + m3;
+        KEPT(f0, xcur);
     }
-    for (int f = 0; f < n; f++) {
-        if (job == 0) {
-            if (xb && f > 0) KEPT(f, xb);
-            const double *x = xb ? xb : X + f * m3, *r = R + l[f] * m3;
-            double fm = 0;
-            for (int i = 0; i < nv; i++) {
-                double dx = x[3 * i] - r[3 * i], dy = x[3 * i + 1] - r[3 * i + 1], dz = x[3 * i + 2] - r[3 * i + 2];
-                double e2 = dx * dx + dy * dy + dz * dz, e = sqrt(e2);
-                data += (w ? w[i] : 1) * e2;
-                se += e;
-                if (e > fm) fm = e;
-            }
-            if (j->frame_err) j->frame_err[f] = fm;
-            if (fm > me) { me = fm; worst = f; }
-            if (Xm) mapped_release((const void *)Xm[f], (const void *)(Xm[f] + m3));     /* read where it lies */
-            continue;
-        }
-        if (xb) {
-            /* frame f is in the buffer frame f + 1 went to last step: the
-             * two swap roles instead of a copy (3#V doubles per frame) */
-            double *t = xcur; xcur = xnext; xnext = t;
-            if (f + 1 < n) KEPT(f + 1, xnext);
-            if (Xm && f + 1 < n) mapped_release((const void *)Xm[f + 1], (const void *)(Xm[f + 1] + m3));
-#undef KEPT
-        }
+    for (int f = f0; f < f1; f++) {
+        int step = f + 1 < n && !(cut && cut[f + 1]);
+        if (xb && step) KEPT(f + 1, xnext);
         const double *x = xb ? xcur : X + f * m3, *r = R + l[f] * m3;
-        if (f + 1 < n && !(cut && cut[f + 1])) {
+        double fm = 0;
+        for (int i = 0; i < nv; i++) {
+            double dx = x[3 * i] - r[3 * i], dy = x[3 * i + 1] - r[3 * i + 1], dz = x[3 * i + 2] - r[3 * i + 2];
+            double e2 = dx * dx + dy * dy + dz * dz, e = sqrt(e2);
+            data += (w ? w[i] : 1) * e2;
+            se += e;
+            if (e > fm) fm = e;
+        }
+        if (j->frame_err) j->frame_err[f] = fm;
+        if (fm > me) { me = fm; worst = f; }
+        if (step) {
             const double *x1 = xb ? xnext : x + m3, *r1 = R + l[f + 1] * m3;
             for (size_t k = 0; k < m3; k += 3) {
                 double e2 = 0;
@@ -2434,9 +2462,16 @@ static void eval_half(void *ctx, int job)
             }
             nvel++;
         }
+        RELEASE(f);                 /* read where it lies: its pages go */
+        if (xb) {
+            /* frame f + 1 is in xnext: the two swap roles (a cut: read it now) */
+            double *t = xcur; xcur = xnext; xnext = t;
+            if (!step && f + 1 < f1) KEPT(f + 1, xcur);
+        }
     }
-    if (job == 0) { j->data = data; j->se = se; j->me = me; j->worst = worst; }
-    else { j->vel = vel; j->sv = sv; j->mv = mv; j->nvel = nvel; }
+#undef KEPT
+#undef RELEASE
+    j->part[job] = (struct eval_part){data, se, me, vel, sv, mv, nvel, worst};
     free(xb);
 }
 
@@ -2450,14 +2485,16 @@ static void evaluate(const double *X, const float *Xf, const int32_t *Xi, const 
     j.n = n; j.nv = nv; j.l = l; j.cut = cut; j.frame_err = frame_err;
     parallel_run(2, 2, eval_half, &j);
     if (j.oom) { memset(rep, 0, sizeof *rep); rep->energy = NAN; return; }
-    rep->data = j.data;
-    rep->velocity = j.vel;
-    rep->energy = j.data + lambda / 2 * j.vel;
-    rep->mean_err = j.se / ((double)n * nv);
-    rep->max_err = j.me;
-    rep->mean_verr = j.nvel ? j.sv / ((double)j.nvel * nv) : 0;
-    rep->max_verr = j.mv;
-    rep->worst_frame = j.worst;
+    const struct eval_part *a = &j.part[0], *b = &j.part[1];
+    long nvel = a->nvel + b->nvel;
+    rep->data = a->data + b->data;
+    rep->velocity = a->vel + b->vel;
+    rep->energy = rep->data + lambda / 2 * rep->velocity;
+    rep->mean_err = (a->se + b->se) / ((double)n * nv);
+    rep->max_err = b->me > a->me ? b->me : a->me;             /* the first worst frame */
+    rep->worst_frame = b->me > a->me ? b->worst : a->worst;
+    rep->mean_verr = nvel ? (a->sv + b->sv) / ((double)nvel * nv) : 0;
+    rep->max_verr = b->mv > a->mv ? b->mv : a->mv;
 }
 
 void replib_evaluate(const double *X, int n, int nv, const double *R, int d, const int *l,

@@ -643,6 +643,7 @@ static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, 
         if (need > S->keep_bytes) {
             keeper_wait(S);
             free(S->Xk); S->Xk = NULL; S->keeping = 0;      /* too long: sketch only */
+            S->dropped = 1; S->dropped_bytes = need;
         } else {
             /* grow the kept frames geometrically, within the budget */
             void *nx = S->Xk;
@@ -655,7 +656,10 @@ static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, 
                 nx = S->xcap ? realloc(S->Xk, nc * m3 * 4) : big_alloc(nc * m3 * 4);
                 if (nx) { S->xcap = (int)nc; S->Xk = nx; }     /* the helper is idle */
             }
-            if (!nx) { keeper_wait(S); free(S->Xk); S->Xk = NULL; S->keeping = 0; }
+            if (!nx) {
+                keeper_wait(S); free(S->Xk); S->Xk = NULL; S->keeping = 0;
+                S->dropped = 2; S->dropped_bytes = (size_t)(f + 1) * m3 * 4;
+            }
             else {
                 /* chunk c is buffered in half c % 2 of kb while the
                  * helper encodes chunk c - 1 from the other half; by

@@ -44,6 +44,9 @@ struct replib_sketch {
     int n;                      /* frames added so far */
     size_t keep_bytes;          /* budget for the single-precision frames (0: none) */
     int keeping;                /* 1 while the frames are kept */
+    int dropped;                /* the kept frames were dropped on the way: 1 over keep_bytes,
+                                   2 out of memory (the pieces then come from the sketch) */
+    size_t dropped_bytes;       /* the size that did not fit */
     double *ref;                /* 3#V first frame */
     double *sw;                 /* 3#V sqrt(w), or NULL */
     int zeta, zpsi;             /* nonzeros per row of Omega, per column of Psi */

@@ -95,6 +95,17 @@ test_expect_success 'more frames announced than --memory keeps: none kept, same 
 	grep "frames not kept (pieces from the sketch)" a.log && grep "frames not kept" u.log &&
 	test_cmp unk.lib ann.lib
 '
+test_expect_success 'frames beyond --memory: said without -v (the pieces are approximate), from a file and from a pipe; not with --memory 0 or when they fit' '
+	dict-learn -d 12 --stream on --memory 2 head.mesh 2>w.log >/dev/null &&
+	grep "warning: the frames need [0-9]* MB in 32 bits, more than --memory 2: the pieces and the report come from the rank-128 sketch" w.log &&
+	test $(wc -l <w.log) = 1 &&
+	cat head.mesh | dict-learn -d 12 --stream on --memory 2 2>wp.log >/dev/null &&
+	test_cmp w.log wp.log &&
+	dict-learn -d 12 --stream on --memory 0 head.mesh 2>w0.log >/dev/null &&
+	! test -s w0.log &&
+	dict-learn -d 12 --stream on head.mesh 2>wk.log >/dev/null &&
+	! test -s wk.log
+'
 test_expect_success 'auto switches to the sketch past 512 MB only (small input: in memory, same bytes)' '
 	dict-learn -d 8 head.mesh >auto.lib && dict-learn -d 8 --stream off head.mesh >off8.lib &&
 	test_cmp auto.lib off8.lib

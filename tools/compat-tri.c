@@ -6,6 +6,7 @@
 #include "compat_holes.h"
 #include "compat_refine.h"
 #include "boundary_match.h"
+#include "modulus_cert.h"
 #include "columns.h"
 #include "mesh.h"
 #include "rings.h"
@@ -96,6 +97,11 @@ static const char help[] =
 "                        splits: 'overlay' (default: overlay of the shapes'\n"
 "                        triangulations, always succeeds) or 'linkpath' (the\n"
 "                        paper's Steiner paths; can fail on thin pieces)\n"
+"      --bound           print the certificate of the given points (-c, one\n"
+"                        outer ring per shape, 4 or more rows) on stdout and\n"
+"                        exit without meshing: a proven upper bound on the\n"
+"                        worst angle any compatible triangulation can reach\n"
+"                        (also printed by -v; man compat-tri, CERTIFICATE)\n"
 "      --raw             raw (binary) MESH output (or STOPMO_RAW=1)\n"
 "  -o, --output FILE     write to FILE (temporary + rename)\n"
 "  -v, --verbose         print counts, Steiner points, minimum angle, time\n"
@@ -108,7 +114,7 @@ struct options {
     int match, match_points, match_default;
     double bend, feature;
     double err, edge;
-    int smooth, raw, split, nearest, refine, max_nv, threads;
+    int smooth, raw, split, nearest, refine, max_nv, threads, bound;
     double min_angle;
     int nshapes;
     char **shapes;
@@ -116,6 +122,8 @@ struct options {
     const int *flipped;    /* one outer ring: per shape, 1 if its file runs clockwise (reversed in R) */
 };
 #define LOG_SIZE 4096
+/* relative width of the certificate's modulus brackets */
+#define CERT_TOL 0.03
 
 /* a -v line of build_single: on stderr, or kept in o->log for later */
 static void __attribute__((format(printf, 2, 3))) binfo(const struct options *o, const char *fmt, ...)
@@ -137,7 +145,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"match-rings", 1, 0, 'M'},
         {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'X'}, {"threads", 1, 0, 'T'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
-        {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {0, 0, 0, 0}};
+        {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20;
     o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 10;
@@ -180,6 +188,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'B': o->bend = arg_double(optarg, "--bend"); break;
         case 'F': o->feature = arg_double(optarg, "--feature"); break;
         case 'P': o->points_out = optarg; break;
+        case 'b': o->bound = 1; break;
         case 'o': o->output = optarg; break;
         case 'v': verbose++; break;
         case 'h': print_help_and_exit(help);
@@ -192,6 +201,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->feature >= 0 && o->feature < 1e6)) usage_error("--feature must be >= 0");
     if (!o->corr && o->match == -2) usage_error("--match off needs -c CORR with at least 3 rows");
     if (!o->corr && o->match == BMATCH_ARCLENGTH) usage_error("--match arclength needs -c CORR (a start point)");
+    if (o->bound && !o->corr) usage_error("--bound needs -c CORR (the given points)");
     if (!(o->err >= 0 && o->err < 1)) usage_error("--error must be in [0, 1)");
     if (!(o->edge >= 0 && o->edge < 1e6)) usage_error("--edge-length must be >= 0");
     if (o->smooth < 0 || o->smooth > 10000) usage_error("--smooth must be in 0..10000");
@@ -238,6 +248,41 @@ static void die_row(const char *path)
     die("cannot read '%s': %s", path, m);
 }
 
+/* seconds since the start (the -v lines say when each stage ended) */
+static double t_start;
+static double elapsed(void) { return now_seconds() - t_start; }
+
+/* The certificate of nc correspondence rows (corr: nc by N, counter-
+ * clockwise; row[k]: their 1-based rows in the file named name; who: what
+ * they are, for the line) as one line into line (size len); the cost goes
+ * to -v.  Returns the ceiling in degrees (60: none). */
+static double cert_line(int N, double **P, const int *n, const int *corr, int nc, const int *row, const char *name,
+                        const char *who, char *line, size_t len)
+{
+    struct modulus_cert mc;
+    if (modulus_certificate(N, P, n, corr, nc, CERT_TOL, &mc) < 0) die("certificate failed: %s", cm_errmsg());
+    if (nc < 4) {
+        snprintf(line, len, "certificate: %d point%s given in every shape; 4 are needed for a bound on the angles",
+                 nc, nc == 1 ? "" : "s");
+        return mc.ceiling;
+    }
+    int wl = (int)strcspn(who, "(");   /* without the parenthesis */
+    while (wl > 0 && who[wl - 1] == ' ') wl--;
+    info(1, "certificate: %d quadruples of %.*s in %d shapes, brackets to %g, largest mesh %d vertices; at %.3f s",
+         mc.quads, wl, who, N, CERT_TOL, mc.nv, elapsed());
+    int r[4];
+    for (int t = 0; t < 4; t++) r[t] = row[mc.row[t]];
+    for (int a = 0; a < 4; a++)   /* increasing file rows */
+        for (int b = a + 1; b < 4; b++)
+            if (r[b] < r[a]) { int t = r[a]; r[a] = r[b]; r[b] = t; }
+    snprintf(line, len, "certificate: %s force a map stretch of at least %.3gx between poses %d and %d "
+             "(rows %d %d %d %d of %s: modulus %.4g-%.4g against %.4g-%.4g): no compatible triangulation%s keeps "
+             "more than %.1f deg in both", who, mc.ratio > 1 ? mc.ratio : 1, mc.pose[1], mc.pose[0], r[0], r[1], r[2], r[3], name,
+             mc.lo[1], mc.hi[1], mc.lo[0], mc.hi[0], strcmp(who, "the given points") ? " through them" : "",
+             floor(mc.ceiling * 10 + 1e-6) / 10);
+    return mc.ceiling;
+}
+
 /* the correspondence points used (nc rows, counter-clockwise index order)
  * to --points-out, in file order */
 static void write_points(const struct options *o, int N, const int *n, const int *flipped, const int *corr, int nc)
@@ -282,6 +327,16 @@ static int *match_points(const struct options *o, int N, double **P, const int *
     free(cost);
     free(given);
     write_points(o, N, n, flipped, corr, nc);
+    if (verbose >= 2 && !o->log) {   /* -v -v: the certificate of the points the matching placed */
+        int *row = malloc(nc * sizeof *row);
+        for (int k = 0; k < nc; k++) row[k] = (flipped[0] ? (nc - k) % nc : k) + 1;   /* rows of --points-out */
+        char line[1024];
+        cert_line(N, P, n, corr, nc, row, o->points_out ? o->points_out : "--points-out",
+                  "the matched points (chosen by the matching, not given: this speaks of that matching only)",
+                  line, sizeof line);
+        info(1, "%s", line);
+        free(row);
+    }
     *ncorr = nc;
     return corr;
 }
@@ -373,6 +428,60 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
     return 0;
 }
 
+/* The certificate of the given rows (one outer ring per shape; R oriented
+ * counter-clockwise, flipped[s] set where the file ran clockwise): the
+ * largest ratio of conformal moduli of a quadrilateral (four given points)
+ * between two poses, which bounds the worst angle of any compatible
+ * triangulation honouring the points (modulus_cert.h).  Written as one
+ * line into line (size len); returns the ceiling in degrees (-1: fewer than
+ * 4 rows, no certificate). */
+static double certify(const struct options *o, struct rings *R, const int *flipped, char *line, size_t len)
+{
+    int N = o->nshapes;
+    struct columns C = {0};
+    if (columns_read(o->corr, 0, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    if (C.rows > 0 && C.cols != N)
+        die("cannot read '%s': line 1: %d columns, but there are %d shapes", o->corr, C.cols, N);
+    int *n = malloc(N * sizeof *n), *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
+    int *row = malloc((C.rows + 1) * sizeof *row), nc = 0;
+    double **P = malloc(N * sizeof *P);
+    for (int s = 0; s < N; s++) { n[s] = rings_count(&R[s], 0); P[s] = R[s].P; }
+    for (int k = 0; k < C.rows; k++) {
+        const double *x = C.x + (size_t)k * N;
+        int unknown = 0;
+        for (int s = 1; s < N; s++) unknown += x[s] == -1;
+        if (unknown) continue;   /* a point in SHAPE0 only: placed by the matching, not given */
+        for (int s = 0; s < N; s++) {
+            if (x[s] != floor(x[s]) || x[s] < 0 || x[s] >= n[s])
+                die("cannot read '%s': row %d: '%g' is not a vertex index of '%s' (0..%d)", o->corr, k + 1,
+                    x[s], o->shapes[s], n[s] - 1);
+            int v = (int)x[s];
+            corr[(size_t)nc * N + s] = flipped[s] ? n[s] - 1 - v : v;
+        }
+        row[nc++] = k + 1;
+    }
+    for (int pass = 0; pass < 2; pass++) {   /* reversed: a clockwise file, then rows listed clockwise */
+        if (pass == 1) {
+            int rev = compat_corr_order(N, n, corr, nc);
+            if (rev < 0) die("cannot read '%s': %s", o->corr, cm_errmsg());
+            if (!rev) break;
+        } else {
+            if (!flipped[0]) continue;
+            for (int a = 0, b = nc - 1; a < b; a++, b--)
+                for (int s = 0; s < N; s++) {
+                    int t = corr[(size_t)a * N + s];
+                    corr[(size_t)a * N + s] = corr[(size_t)b * N + s];
+                    corr[(size_t)b * N + s] = t;
+                }
+        }
+        for (int a = 0, b = nc - 1; a < b; a++, b--) { int t = row[a]; row[a] = row[b]; row[b] = t; }
+    }
+    double ceiling = cert_line(N, P, n, corr, nc, row, o->corr, "the given points", line, len);
+    columns_free(&C);
+    free(n); free(corr); free(row); free(P);
+    return nc >= 4 ? ceiling : -1;
+}
+
 /* several rings or interior points: compat_holes.h */
 static void build_multi(const struct options *o, struct rings *R, struct compat *cp)
 {
@@ -426,9 +535,6 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (o->interior) columns_free(&I);
 }
 
-/* seconds since the start (the -v lines say when each stage ended) */
-static double t_start;
-static double elapsed(void) { return now_seconds() - t_start; }
 
 /* the refinement's parameters for cp (compat_refine_params) */
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
@@ -790,6 +896,22 @@ int main(int argc, char **argv)
             if ((flipped[s] = rings_orient(&R[s])))
                 info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
     o.flipped = flipped;
+    double ceiling = -1;   /* of the given points, degrees; -1: not computed */
+    if (o.bound || (verbose && o.corr)) {
+        char line[1024];
+        if (multi) snprintf(line, sizeof line, "certificate: not computed for several rings or interior points "
+                                                "(the quadrilateral moduli are those of one outer ring)");
+        else ceiling = certify(&o, R, flipped, line, sizeof line);
+        if (o.bound) {
+            printf("%s\n", line + strlen("certificate: "));
+            if (fclose(stdout) != 0) die("cannot write output");
+            for (int s = 0; s < N; s++) rings_free(&R[s]);
+            free(R);
+            free(flipped);
+            return 0;
+        }
+        info(1, "%s", line);
+    }
     if (multi) build_multi(&o, R, &cp);
     else if (build_single(&o, R, &cp) < 0) die("%s", cm_errmsg());
     /* the default's second candidate, built ahead on a second thread */
@@ -836,6 +958,14 @@ int main(int argc, char **argv)
     info(1, "result: %d vertices (%d boundary, %d Steiner, %d refinement), %d triangles, "
             "min angle %.2f deg over %d shapes, %.3f s", cp.nv, cp.nb, cp.nsteiner, cp.nrefine, cp.nf,
          q * 180 / M_PI, N, elapsed());
+    if (ceiling > 0 && q * 180 / M_PI < o.min_angle) {   /* the shortfall against the certificate */
+        if (ceiling < o.min_angle)
+            info(1, "certificate: the goal of %g deg is out of reach with the given points (no triangulation keeps more "
+                    "than %.1f deg); the mesh reaches %.2f deg", o.min_angle, floor(ceiling * 10 + 1e-6) / 10, q * 180 / M_PI);
+        else
+            info(1, "certificate: below the goal, but the given points allow up to %.1f deg: the shortfall to %g deg is not "
+                    "proven to come from the outlines and the given points", floor(ceiling * 10 + 1e-6) / 10, o.min_angle);
+    }
 
     struct mesh m;
     if (mesh_alloc(&m, cp.nv, cp.nf, N) < 0) die("%s", cm_errmsg());

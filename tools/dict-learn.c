@@ -436,6 +436,17 @@ int main(int argc, char **argv)
         if (replib_sketch_finish(&S, &D) < 0) die("cannot read '%s': %s", o.input ? o.input : "<stdin>", cm_errmsg());
         D.w = o.weights ? wc.x : NULL;
         if (map && !D.Xm) { munmap((void *)map, maplen); map = NULL; }     /* the frames are read */
+        /* pieces from the sketch are approximate: said without -v (unless
+         * --memory 0 asked for exactly that) */
+        if (!D.Xi && !D.Xm && !D.Xf && o.memory > 0) {
+            double need = (double)m.nframes * 12 * m.nv / 1048576.0;
+            if (S.dropped == 2)
+                warn("out of memory keeping the frames in 32 bits (%.0f MB): the pieces and the report come from the rank-%d sketch (approximate)",
+                     (double)S.dropped_bytes / 1048576.0, D.zdim);
+            else
+                warn("the frames need %.0f MB in 32 bits, more than --memory %g: the pieces and the report come from the rank-%d sketch (approximate; raise --memory to keep them)",
+                     need, o.memory, D.zdim);
+        }
         info(1, "sketch: rank %d captures %.8f of |Z|^2; frames %s", D.zdim, S.captured,
              D.Xi ? "kept in 32-bit integers of the input's step" :
              D.Xm ? "read where they lie in the file, as integers of the input's step" :

@@ -189,10 +189,12 @@ int main(void)
      * printed such a neighbour for about 1 value in 200). */
     bad = 0;
     int checked = 0, long16 = 0;
-    for (int it = 0; it < 200000; it++) {
+    for (int it = 0; it < 250000; it++) {
         double x;
         uint64_t u = rng_u64(&r);
-        switch (it % 4) {
+        switch (it % 5) {
+        case 4:     /* few digits at every place: integers with zeros, 0.0005, 1e+16 */
+            x = (double)(rng_int(&r, 200001) - 100000) * pow(10, rng_int(&r, 30) - 12); break;
         case 0: memcpy(&x, &u, sizeof x); if (!isfinite(x)) continue; break;
         case 1: x = rng_normal(&r) * pow(10, rng_int(&r, 40) - 20); break;
         case 2: x = (double)(rng_int(&r, 2000001) - 1000000) * 1e-6 + rng_int(&r, 300); break;
