@@ -1374,6 +1374,9 @@ struct compat_refiner {
     struct compat_refine_stats *st, own;
     struct snapshot snap;     /* the input, kept if refinement made it worse */
     struct best best;         /* the round with the best worst angle */
+    struct best polished;     /* the polished mesh of the last stall */
+    double wpolished;         /* its worst ratio to the goal */
+    int cycles;               /* stalls answered by a polish and more rounds */
     struct work w;
     double q0;                /* the input's worst angle (sine) */
     double wbest, wcur;       /* best and last worst ratio to the goal */
@@ -1392,6 +1395,7 @@ static void refiner_free(struct compat_refiner *r)
     struct work *w = &r->w;
     snap_free(r->c->N, &r->snap);
     best_free(r->c->N, &r->best);
+    best_free(r->c->N, &r->polished);
     free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->pose_cost); free(w->id); free(w->sig);
     free(r->sig); free(r->seed);
     free(r);
@@ -1464,6 +1468,47 @@ fail:
     return NULL;
 }
 
+/* The final polish: with remeshing, edge collapses that keep every good
+ * triangle good and make no triangle worse first.  Four sweeps, then
+ * (remeshing, still below the goal) more while each raises the worst
+ * angle by COMPAT_REFINE_GAIN: the max-min polish is local, and where the
+ * maps are stretched it goes on gaining for a while.  0, or -1 on error. */
+static int final_polish(struct compat_refiner *r)
+{
+    struct compat *c = r->c;
+    struct compat_refine_stats *st = r->st;
+    const struct compat_refine_params *pa = &r->pa;
+    struct work *w = &r->w;
+    double goal = pa->goal;
+    double wprev = -1;
+    for (int k = 0; k < COMPAT_REFINE_POLISH_MAX; k++) {
+        if (k >= 4) {
+            if (!r->remesh) break;
+            int wf, ws, nb;
+            double wk = worst_ratio(w, goal, &wf, &ws, &nb);
+            if (wk < 0) return -1;
+            if (wk >= 1 || (wprev >= 0 && wk < wprev + COMPAT_REFINE_GAIN / goal)) break;
+            wprev = wk;
+        }
+        int m = 0;
+        if (r->remesh) {
+            m = collapse_all(w, goal, 1, INT_MAX, &r->nvin);
+            if (m < 0) return -1;
+            st->collapses += m;
+            st->coarsened += m;
+        }
+        /* the candidate smoothing, then (with MIPS) the polish */
+        int m1 = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, pa->mips > 0 ? 4 : 0, pa->threads, w->pose_cost + 2 * c->N);
+        if (m1 < 0) return -1;
+        st->moves += m1;
+        m += m1;
+        int f0 = st->flips;
+        if (flips_until_done(c, &st->flips) < 0) return -1;
+        if (st->flips == f0 && m == 0) break;
+    }
+    return 0;
+}
+
 int compat_refine_step(struct compat_refiner *r)
 {
     if (r->done) return 0;
@@ -1530,9 +1575,32 @@ int compat_refine_step(struct compat_refiner *r)
     if (better) r->stall = 0;
     else if (++r->stall >= COMPAT_REFINE_STALL && r->remesh &&
              (c->nv > 2 * r->best.nv || r->stall >= 4 * COMPAT_REFINE_STALL)) {
-        st->stop = COMPAT_REFINE_STALLED;
-        r->done = 1;
-        return 0;
+        if (r->cycles < COMPAT_REFINE_CYCLES) {
+            /* stalled: back to the best round, the final polish on it
+             * (kept as the result unless later rounds beat it), then
+             * rounds again from the polished mesh.  The polish moves
+             * vertices the rounds' smoothing left, the coarsening takes
+             * out splits that did not help, and the next splits start
+             * from there. */
+            r->cycles++;
+            st->cycles = r->cycles;
+            if (r->best.nv && r->wbest > r->wcur) best_restore(w, &r->best, &r->nvin);
+            if (final_polish(r) < 0) return -1;
+            r->wcur = worst_ratio(w, goal, &r->wf, &r->ws, &r->nbad);
+            if (r->wcur < 0) return -1;
+            if (r->wcur >= 1) { st->stop = COMPAT_REFINE_GOAL; r->done = 1; return 0; }
+            if (best_take(w, r->nvin, &r->polished) < 0) return -1;
+            r->wpolished = r->wcur;
+            if (r->wcur > r->wbest && best_take(w, r->nvin, &r->best) < 0) return -1;
+            if (r->wcur > r->wbest) r->wbest = r->wcur;
+            r->stall = 0;
+            r->nbest = r->nbad;
+            r->full = 1;
+        } else {
+            st->stop = COMPAT_REFINE_STALLED;
+            r->done = 1;
+            return 0;
+        }
     }
     if (c->nv >= pa->max_nv || r->capped) { st->stop = COMPAT_REFINE_MAXNV; r->done = 1; return 0; }
     star_sigs(w, w->sig);
@@ -1546,6 +1614,13 @@ int compat_refine_step(struct compat_refiner *r)
 
 void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad, int *fewest)
 {
+    if (r->cycles) {   /* after a stall's polish: like a finished refinement,
+                          its polished mesh (the result at least that good) */
+        if (worst) *worst = fmax(r->wpolished, r->wcur) * r->pa.goal;
+        if (nbad) *nbad = INT_MAX;
+        if (fewest) *fewest = r->nbest;
+        return;
+    }
     if (worst) *worst = r->wcur < 0 ? 0 : r->wcur * r->pa.goal;
     if (nbad) *nbad = r->wcur < 0 ? INT_MAX : r->nbad;
     if (fewest) *fewest = r->nbest;
@@ -1565,36 +1640,17 @@ int compat_refine_finish(struct compat_refiner *r)
         best_restore(w, &r->best, &r->nvin);
         st->restored = 1;
     }
-    /* final polish; with remeshing, edge collapses that keep every good
-     * triangle good and make no triangle worse first.  Four sweeps, then
-     * (remeshing, still below the goal) more while each raises the worst
-     * angle by COMPAT_REFINE_GAIN: the max-min polish is local, and where
-     * the maps are stretched it goes on gaining for a while */
-    double wprev = -1;
-    for (int k = 0; k < COMPAT_REFINE_POLISH_MAX; k++) {
-        if (k >= 4) {
-            if (!r->remesh) break;
-            int wf, ws, nb;
-            double wk = worst_ratio(w, goal, &wf, &ws, &nb);
-            if (wk < 0) goto out;
-            if (wk >= 1 || (wprev >= 0 && wk < wprev + COMPAT_REFINE_GAIN / goal)) break;
-            wprev = wk;
+    if (final_polish(r) < 0) goto out;
+    /* a stall answered by more rounds (compat_refine_step) that ended
+     * below the polished mesh of that stall: back to it */
+    if (r->polished.nv) {
+        int wf, ws, nb;
+        double wk = worst_ratio(w, goal, &wf, &ws, &nb);
+        if (wk < 0) goto out;
+        if (r->wpolished >= wk) {
+            best_restore(w, &r->polished, &r->nvin);
+            st->restored = 1;
         }
-        int m = 0;
-        if (r->remesh) {
-            m = collapse_all(w, goal, 1, INT_MAX, &r->nvin);
-            if (m < 0) goto out;
-            st->collapses += m;
-            st->coarsened += m;
-        }
-        /* the candidate smoothing, then (with MIPS) the polish */
-        int m1 = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, pa->mips > 0 ? 4 : 0, pa->threads, w->pose_cost + 2 * c->N);
-        if (m1 < 0) goto out;
-        st->moves += m1;
-        m += m1;
-        int f0 = st->flips;
-        if (flips_until_done(c, &st->flips) < 0) goto out;
-        if (st->flips == f0 && m == 0) break;
     }
     /* where the worst triangle is and how stretched the maps are there */
     r->wcur = worst_ratio(w, goal, &r->wf, &r->ws, &r->nbad);

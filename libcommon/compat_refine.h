@@ -79,6 +79,10 @@ struct compat_refine_stats {
                           COMPAT_REFINE_STALLED) */
     int restored;      /* 1 if the mesh went back to the best round (later
                           rounds only added vertices) */
+    int cycles;        /* stalls answered by going back to the best round,
+                          the final polish and more rounds
+                          (COMPAT_REFINE_CYCLES); stop and stalled are then
+                          of the rounds after the last one */
     int worst_shape;   /* where the result's worst triangle is (measured
                           against what its corner allows): the shape, */
     double worst_at[2];/* its centroid in that shape, and */
@@ -102,6 +106,10 @@ enum {
     COMPAT_REFINE_ROUNDS    /* rounds used up */
 };
 #define COMPAT_REFINE_STALL 3
+/* a stall (pa->mips > 0) first goes back to the best round and gets the
+ * final polish; that mesh is kept unless the rounds that then follow from it
+ * (up to the next stall) end better.  This many times, then it stops. */
+#define COMPAT_REFINE_CYCLES 1
 #define COMPAT_REFINE_GAIN (0.05 * M_PI / 180)   /* radians */
 #define COMPAT_REFINE_POLISH_MAX 64   /* final polish sweeps at most */
 
@@ -154,7 +162,11 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa,
  *                      (>= pa->goal: done), nbad = triangles below it
  *                      (INT_MAX before the first step), fewest = the
  *                      fewest such triangles after any step so far (any
- *                      output may be NULL).
+ *                      output may be NULL).  Once a stall was answered by
+ *                      the final polish and more rounds (COMPAT_REFINE_CYCLES)
+ *                      it reports like a finished refinement: worst = the
+ *                      polished mesh's (the result is at least as good),
+ *                      nbad = INT_MAX.
  * compat_refine_finish back to the best round, final polish and
  *                      coarsening, renumbering; frees the refiner.  0 or -1.
  * compat_refine_threads sets the threads of the later steps (pa->threads;

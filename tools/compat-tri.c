@@ -559,8 +559,17 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
          rs->rounds, rs->splits, rs->bsplits, rs->collapses, rs->coarsened, rs->flips, rs->moves, q0 * 180 / M_PI, q1,
          rs->kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI, elapsed());
     if (rs->stop != COMPAT_REFINE_GOAL && !rs->kept_input) {
-        char why[160];
-        if (rs->stop == COMPAT_REFINE_STALLED)
+        char why[320];
+        if (rs->cycles > 0) {   /* a stall answered by the final polish and more rounds */
+            char again[96];
+            if (rs->stop == COMPAT_REFINE_STALLED) snprintf(again, sizeof again, "stalled again");
+            else if (rs->stop == COMPAT_REFINE_MAXNV) snprintf(again, sizeof again, "--max-vertices %d reached", pa->max_nv);
+            else if (rs->stop == COMPAT_REFINE_NOSPLIT) snprintf(again, sizeof again, "no split keeps every pose positive");
+            else snprintf(again, sizeof again, "%d rounds used up", pa->rounds);
+            snprintf(why, sizeof why, "neither the worst angle nor the number of triangles below the goal improved in %d rounds, "
+                     "then the best round polished and refined again: %s%s", COMPAT_REFINE_STALL, again,
+                     rs->restored ? " (back to the best round's mesh)" : "");
+        } else if (rs->stop == COMPAT_REFINE_STALLED)
             snprintf(why, sizeof why, "neither the worst angle nor the number of triangles below the goal improved in %d rounds%s", rs->stalled,
                      rs->restored ? " (back to the best round's mesh)" : "");
         else if (rs->stop == COMPAT_REFINE_MAXNV)
