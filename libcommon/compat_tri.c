@@ -1846,19 +1846,6 @@ static double tri_min_angle(const double *a, const double *b, const double *d)
 
 /* smallest angle over shapes of triangle (a,b,d) as its sine; -1 if
  * inverted in some shape (exact) */
-static double face_quality(const struct compat *c, int a, int b, int d)
-{
-    double q = INFINITY;
-    for (int s = 0; s < c->N; s++) {
-        const double *X = c->X[s];
-        double x = compat_sin_min_angle(X + 2 * a, X + 2 * b, X + 2 * d);
-        /* a sine above 1e-9 cannot come from a wrongly signed area */
-        if (x < 1e-9 && orient2_sign(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
-        q = fmin(q, x);
-    }
-    return q;
-}
-
 /* face_quality, or any value <= floor once the smallest so far is at or
  * below it (the shapes after that can only lower it) */
 static double face_quality_above(const struct compat *c, int a, int b, int d, double floor)
@@ -1867,11 +1854,17 @@ static double face_quality_above(const struct compat *c, int a, int b, int d, do
     for (int s = 0; s < c->N; s++) {
         const double *X = c->X[s];
         double x = compat_sin_min_angle(X + 2 * a, X + 2 * b, X + 2 * d);
+        /* a sine above 1e-9 cannot come from a wrongly signed area */
         if (x < 1e-9 && orient2_sign(X + 2 * a, X + 2 * b, X + 2 * d) <= 0) return -1;
         q = fmin(q, x);
         if (q <= floor) break;
     }
     return q;
+}
+
+static double face_quality(const struct compat *c, int a, int b, int d)
+{
+    return face_quality_above(c, a, b, d, -1);     /* q >= 0: never stops early */
 }
 
 double compat_min_angle(const struct compat *c, double *minarea)

@@ -64,6 +64,21 @@ static int refine_all(struct quad_state *Q, int N, double tol)
     return 0;
 }
 
+/* The quadruple with the largest lower bound of its ratio (the first on
+ * ties), if that bound exceeds *L: *L, its pair of poses (*bi, *bj; may
+ * be NULL) and its index are updated; returns the index (-1: none). */
+static long best_quad(const struct quad_state *Q, long nq, int N, double *L, int *bi, int *bj)
+{
+    long best = -1;
+    for (long k = 0; k < nq; k++) {
+        double l, u;
+        int i, j;
+        ratio_bounds(&Q[k], N, &l, &i, &j, &u);
+        if (l > *L) { *L = l; best = k; if (bi) *bi = i; if (bj) *bj = j; }
+    }
+    return best;
+}
+
 int modulus_certificate(int N, double *const *P, const int *n, const int *corr, int ncorr, double tol,
                         struct modulus_cert *c)
 {
@@ -114,12 +129,7 @@ int modulus_certificate(int N, double *const *P, const int *n, const int *corr, 
         for (int changed = 1; rc == 0 && changed;) {
             changed = 0;
             L = 0;
-            for (k = 0; k < nq; k++) {
-                double l, u;
-                int i, j;
-                ratio_bounds(&Q[k], N, &l, &i, &j, &u);
-                if (l > L) L = l;
-            }
+            best_quad(Q, nq, N, &L, NULL, NULL);
             for (k = 0; k < nq && rc == 0; k++) {
                 double l, u;
                 int i, j;
@@ -134,13 +144,10 @@ int modulus_certificate(int N, double *const *P, const int *n, const int *corr, 
             }
         }
     }
-    for (k = 0; k < nq && rc == 0; k++) {
-        double l, u;
-        int i, j;
-        ratio_bounds(&Q[k], N, &l, &i, &j, &u);
-        if (k == 0 || l > L) { L = l; best = k; bi = i; bj = j; }
-    }
     if (rc == 0) {
+        L = -INFINITY;
+        best = (int)best_quad(Q, nq, N, &L, &bi, &bj);
+        if (best < 0) { best = 0; L = 0; }     /* no bound is a number: no certificate */
         c->quads = (int)nq;
         c->ratio = L;
         c->pose[0] = bi;
