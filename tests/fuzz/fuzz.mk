@@ -47,13 +47,17 @@ replay: $(BIN)
 
 all: $(BIN)
 
+# with the headers each object read (-MMD): a changed header rebuilds them
+# (an inline function moved into a header left stale objects unresolved)
 $(FB)/%.o: libcommon/%.c
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+	$(FUZZ_CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -c -o $@ $<
 
 $(FB)/%.o: libcommon/%.cpp
 	@mkdir -p $(@D)
-	$(FUZZ_CXX) $(CPPFLAGS) $(CXXFLAGS) -c -o $@ $<
+	$(FUZZ_CXX) $(CPPFLAGS) $(CXXFLAGS) -MMD -MP -c -o $@ $<
+
+-include $(OBJ:.o=.d)
 
 $(FB)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(OBJ)
 	@mkdir -p $(@D)
