@@ -53,10 +53,12 @@ test_expect_success '--bound: the same bytes again, and with the files run clock
 	test "$(ceiling cw.txt)" = "$(ceiling b.txt)"
 '
 
-test_expect_success 'fewer than 4 given rows: no bound, said so' '
+test_expect_success 'fewer than 4 given rows: no bound; --bound refuses with the reason (exit 1, nothing on stdout), -v says so' '
 	head -n 3 corr.txt >c3.txt &&
-	compat-tri --bound -c c3.txt leg.rings hidden.rings >n.txt &&
-	grep "3 points given in every shape; 4 are needed" n.txt
+	test_fails_cleanly compat-tri --bound -c c3.txt leg.rings hidden.rings 2>n.err &&
+	grep "3 points given in every shape; 4 are needed" n.err &&
+	compat-tri -v -c c3.txt leg.rings hidden.rings 2>n.log >n.mesh &&
+	grep "certificate: 3 points given in every shape; 4 are needed" n.log
 '
 
 test_expect_success 'several rings: -v says the certificate is not computed' '
@@ -64,7 +66,9 @@ test_expect_success 'several rings: -v says the certificate is not computed' '
 	printf "ring 4\n0 0\n12 0\n12 10\n0 10\nring 4\n5 4\n5 6\n7 6\n7 4\n" >h1.rings &&
 	printf "0 0\n1 1\n2 2\n4 4\n" >hc.txt &&
 	compat-tri -v -c hc.txt h0.rings h1.rings >h.mesh 2>hlog &&
-	grep "certificate: not computed for several rings" hlog
+	grep "certificate: not computed for several rings" hlog &&
+	test_fails_cleanly compat-tri --bound -c hc.txt h0.rings h1.rings 2>herr &&
+	grep "bound: not computed for several rings" herr
 '
 
 test_expect_success 'bad input: --bound without -c is a usage error; a bad index, rows out of order: one line, exit 1, nothing on stdout' '

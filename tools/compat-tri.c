@@ -329,6 +329,7 @@ static int *match_points(const struct options *o, int N, double **P, const int *
     write_points(o, N, n, flipped, corr, nc);
     if (verbose >= 2 && !o->log) {   /* -v -v: the certificate of the points the matching placed */
         int *row = malloc(nc * sizeof *row);
+        if (!row) die("out of memory");
         for (int k = 0; k < nc; k++) row[k] = (flipped[0] ? (nc - k) % nc : k) + 1;   /* rows of --points-out */
         char line[1024];
         cert_line(N, P, n, corr, nc, row, o->points_out ? o->points_out : "--points-out",
@@ -445,6 +446,7 @@ static double certify(const struct options *o, struct rings *R, const int *flipp
     int *n = malloc(N * sizeof *n), *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
     int *row = malloc((C.rows + 1) * sizeof *row), nc = 0;
     double **P = malloc(N * sizeof *P);
+    if (!n || !corr || !row || !P) die("out of memory");
     for (int s = 0; s < N; s++) { n[s] = rings_count(&R[s], 0); P[s] = R[s].P; }
     for (int k = 0; k < C.rows; k++) {
         const double *x = C.x + (size_t)k * N;
@@ -911,6 +913,8 @@ int main(int argc, char **argv)
         if (multi) snprintf(line, sizeof line, "certificate: not computed for several rings or interior points "
                                                 "(the quadrilateral moduli are those of one outer ring)");
         else ceiling = certify(&o, R, flipped, line, sizeof line);
+        /* --bound with nothing to bound is refused, not answered with a note */
+        if (o.bound && ceiling < 0) die("--bound: %s", line + strlen("certificate: "));
         if (o.bound) {
             printf("%s\n", line + strlen("certificate: "));
             if (fclose(stdout) != 0) die("cannot write output");
