@@ -439,7 +439,7 @@ static int bisect(struct work *w, int f1, int f2, int a, int b)
     return 1;
 }
 
-static int split_pass(struct work *w, const struct compat_refine_params *pa, int *nsplit, int *nbsplit)
+static int split_pass(struct work *w, const struct compat_refine_params *pa, double frac, int *nsplit, int *nbsplit)
 {
     double goal = pa->goal;
     int max_nv = pa->max_nv;
@@ -472,6 +472,14 @@ static int split_pass(struct work *w, const struct compat_refine_params *pa, int
         if (big > 1) { B[nb].r = 1 + 1 / big; B[nb].f = f; B[nb].s = s; nb++; }
     }
     qsort(B, nb, sizeof *B, cmp_bad);
+    if (frac < 1) {   /* only the worst share of the triangles below the goal
+                         (they come first; the too large ones after them) */
+        int nl = 0;
+        while (nl < nb && B[nl].r < 1 - 1e-9) nl++;
+        int keep = (int)ceil(frac * nl);
+        if (keep < 1) keep = 1;
+        if (keep < nl) nb = keep;
+    }
     for (int i = 0; i < nb && c->nv < max_nv; i++) {
         int f = B[i].f, s = B[i].s;
         if (touched[f]) continue;
@@ -1604,7 +1612,12 @@ int compat_refine_step(struct compat_refiner *r)
     }
     if (c->nv >= pa->max_nv || r->capped) { st->stop = COMPAT_REFINE_MAXNV; r->done = 1; return 0; }
     star_sigs(w, w->sig);
-    int n = split_pass(w, pa, &st->splits, &st->bsplits);
+    /* after the first rounds, only the worst share of the triangles below
+     * the goal (compat_refine_params.split_share) */
+    double frac = 1;
+    if (pa->mips > 0 && pa->split_share > 0 && pa->split_share < 1 && st->rounds > COMPAT_REFINE_FULL_SPLITS)
+        frac = pa->split_share;
+    int n = split_pass(w, pa, frac, &st->splits, &st->bsplits);
     if (n < 0) return -1;
     if (n == 0) { st->stop = COMPAT_REFINE_NOSPLIT; r->done = 1; return 0; }
     r->capped = c->nv >= pa->max_nv;   /* smoothed once more, then stop */

@@ -130,7 +130,20 @@ struct compat_refine_params {
     int threads;       /* the smoothing and polish run pose by pose on this
                           many threads (0: one per processor); the result
                           does not depend on it */
+    double split_share;/* (pa->mips > 0) after COMPAT_REFINE_FULL_SPLITS
+                          rounds, each round splits only this share (0..1)
+                          of the triangles below the goal, the worst first
+                          (at least one); 0 or 1: all of them every round.
+                          Where the maps between the poses are stretched,
+                          splitting every bad triangle doubles the vertices
+                          there each round and reaches max_nv (or a stall)
+                          before the smoothing has spread the stretch;
+                          splitting the worst only leaves the smoothing,
+                          polish and flips more rounds per vertex */
 };
+/* rounds that split every triangle below the goal before split_share
+ * applies (most of the quick cases reach the goal by then) */
+#define COMPAT_REFINE_FULL_SPLITS 3
 
 /* Refine c in place.
  * c          compatible triangulation (every triangle positive in every

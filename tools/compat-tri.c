@@ -89,6 +89,11 @@ static const char help[] =
 "      --max-vertices K  --refine stops splitting at K vertices (default: the\n"
 "                        triangulation's vertices plus 10 times the simplified\n"
 "                        outline's vertex count)\n"
+"      --split-share F   after 3 rounds each --refine round splits only the\n"
+"                        worst share F of the triangles below --min-angle\n"
+"                        (default 1: all of them every round; 0.2 raises the\n"
+"                        worst angle where the poses' maps are stretched, on\n"
+"                        most but not all inputs, at more CPU: man page)\n"
 "      --threads N       the boundary matching, the triangulation's split\n"
 "                        search and the refinement's smoothing run on N\n"
 "                        threads (default 0: one per core); the output does\n"
@@ -115,7 +120,7 @@ struct options {
     double bend, feature;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
-    double min_angle;
+    double min_angle, split_share;
     int nshapes;
     char **shapes;
     char *log;             /* non-NULL: build_single's -v lines go here (LOG_SIZE bytes) */
@@ -145,9 +150,10 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"smooth", 1, 0, 's'}, {"split", 1, 0, 'S'}, {"match-rings", 1, 0, 'M'},
         {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'X'}, {"threads", 1, 0, 'T'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
-        {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'}, {0, 0, 0, 0}};
+        {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'},
+        {"split-share", 1, 0, 'H'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
-    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20;
+    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 1;
     o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 10;
     int c;
     while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:m:vh", lo, NULL)) != -1) {
@@ -175,6 +181,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case 'a': o->min_angle = arg_double(optarg, "--min-angle"); break;
         case 'X': o->max_nv = arg_int(optarg, "--max-vertices"); break;
+        case 'H': o->split_share = arg_double(optarg, "--split-share"); break;
         case 'T': o->threads = arg_int(optarg, "--threads"); break;
         case 'R': o->raw = 1; break;
         case 'm':
@@ -207,6 +214,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->smooth < 0 || o->smooth > 10000) usage_error("--smooth must be in 0..10000");
     if (!(o->min_angle > 0 && o->min_angle <= 60)) usage_error("--min-angle must be in (0, 60] degrees");
     if (o->max_nv < 0) usage_error("--max-vertices must be >= 0");
+    if (!(o->split_share > 0 && o->split_share <= 1)) usage_error("--split-share must be in (0, 1]");
     if (o->threads < 0) usage_error("--threads must be >= 0");
     o->nshapes = argc - optind;
     o->shapes = argv + optind;
@@ -542,7 +550,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
 {
     struct compat_refine_params pa = {o->min_angle * M_PI / 180, 0, o->max_nv ? o->max_nv : cpp->nv + 10 * cpp->nb, 200,
-                                      o->refine == 2 ? 0 : 200, o->threads};
+                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share};
     return pa;
 }
 
