@@ -1396,6 +1396,19 @@ struct compat_refiner {
     int done;                 /* 1 once the splitting stopped (st->stop) */
     unsigned char *seed;
     unsigned long long *sig;
+    /* the second pass (pa.split_share < 1): the first pass's result, the
+     * start to go back to, and the rounds of the current pass */
+    int pass;                 /* 0: every bad triangle split; 1: the share */
+    int prounds;              /* rounds of the current pass */
+    struct best start;        /* the mesh after compat_refine_begin */
+    int start_nvin, start_nextid;
+    int *start_id;
+    unsigned long long *start_sig;
+    struct best alt;          /* the first pass's result (settled) */
+    double walt;              /* its worst ratio to the goal */
+    struct compat_refine_stats alt_stats;   /* the first pass's stop reason */
+    int settled;              /* 1: the first pass settled at the goal (finish
+                                 must not polish it again) */
 };
 
 static void refiner_free(struct compat_refiner *r)
@@ -1404,6 +1417,9 @@ static void refiner_free(struct compat_refiner *r)
     snap_free(r->c->N, &r->snap);
     best_free(r->c->N, &r->best);
     best_free(r->c->N, &r->polished);
+    best_free(r->c->N, &r->start);
+    best_free(r->c->N, &r->alt);
+    free(r->start_id); free(r->start_sig);
     free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->pose_cost); free(w->id); free(w->sig);
     free(r->sig); free(r->seed);
     free(r);
@@ -1470,6 +1486,16 @@ struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat
     r->nbest = INT_MAX;
     r->st->stop = COMPAT_REFINE_ROUNDS;
     r->done = pa->rounds <= 0;
+    if (r->remesh && pa->split_share > 0 && pa->split_share < 1) {   /* for the second pass */
+        if (best_take(w, r->nvin, &r->start) < 0) goto fail;
+        r->start_id = malloc((c->nv ? c->nv : 1) * sizeof *r->start_id);
+        r->start_sig = malloc((c->nv ? c->nv : 1) * sizeof *r->start_sig);
+        if (!r->start_id || !r->start_sig) { cm_seterr("out of memory"); goto fail; }
+        memcpy(r->start_id, w->id, c->nv * sizeof *w->id);
+        memcpy(r->start_sig, w->sig, c->nv * sizeof *w->sig);
+        r->start_nvin = r->nvin;
+        r->start_nextid = w->nextid;
+    }
     return r;
 fail:
     refiner_free(r);
@@ -1517,7 +1543,7 @@ static int final_polish(struct compat_refiner *r)
     return 0;
 }
 
-int compat_refine_step(struct compat_refiner *r)
+static int refine_round(struct compat_refiner *r)
 {
     if (r->done) return 0;
     struct compat *c = r->c;
@@ -1526,6 +1552,7 @@ int compat_refine_step(struct compat_refiner *r)
     struct work *w = &r->w;
     double goal = pa->goal;
     st->rounds++;
+    r->prounds++;
     if (flips_until_done(c, &st->flips) < 0) return -1;
     free(r->seed);
     r->seed = NULL;
@@ -1615,8 +1642,7 @@ int compat_refine_step(struct compat_refiner *r)
     /* after the first rounds, only the worst share of the triangles below
      * the goal (compat_refine_params.split_share) */
     double frac = 1;
-    if (pa->mips > 0 && pa->split_share > 0 && pa->split_share < 1 && st->rounds > COMPAT_REFINE_FULL_SPLITS)
-        frac = pa->split_share;
+    if (r->pass && r->prounds > COMPAT_REFINE_FULL_SPLITS) frac = pa->split_share;
     int n = split_pass(w, pa, frac, &st->splits, &st->bsplits);
     if (n < 0) return -1;
     if (n == 0) { st->stop = COMPAT_REFINE_NOSPLIT; r->done = 1; return 0; }
@@ -1625,8 +1651,88 @@ int compat_refine_step(struct compat_refiner *r)
     return 1;
 }
 
+/* the end of a pass: back to the best round if the later ones only added
+ * vertices, the final polish, and back to the polished mesh of a stall if
+ * the later rounds ended below it.  0 or -1. */
+static int settle(struct compat_refiner *r)
+{
+    struct work *w = &r->w;
+    double goal = r->pa.goal;
+    if (r->remesh && r->best.nv && r->wbest > r->wcur) {
+        best_restore(w, &r->best, &r->nvin);
+        r->st->restored = 1;
+    }
+    if (final_polish(r) < 0) return -1;
+    if (r->polished.nv) {
+        int wf, ws, nb;
+        double wk = worst_ratio(w, goal, &wf, &ws, &nb);
+        if (wk < 0) return -1;
+        if (r->wpolished >= wk) {
+            best_restore(w, &r->polished, &r->nvin);
+            r->st->restored = 1;
+        }
+    }
+    return 0;
+}
+
+int compat_refine_step(struct compat_refiner *r)
+{
+    int k = refine_round(r);
+    struct compat_refine_stats *st = r->st;
+    if (k != 0 || r->pass || !r->start.nv || st->stop == COMPAT_REFINE_GOAL || st->stop == COMPAT_REFINE_ROUNDS)
+        return k;
+    /* the first pass ended below the goal: its result is kept aside and
+     * the refinement starts again from the beginning, splitting only the
+     * worst share of the bad triangles after the first rounds; the better
+     * of the two is the result (a tie keeps the first) */
+    struct work *w = &r->w;
+    struct compat *c = r->c;
+    st->stalled = r->stall;
+    if (settle(r) < 0) return -1;
+    int wf, ws, nb;
+    r->walt = worst_ratio(w, r->pa.goal, &wf, &ws, &nb);
+    if (r->walt < 0) return -1;
+    r->settled = 1;
+    if (r->walt >= 1) return 0;   /* the final polish reached the goal */
+    r->settled = 0;
+    if (best_take(w, r->nvin, &r->alt) < 0) return -1;
+    r->alt_stats = *st;
+    best_restore(w, &r->start, &r->nvin);
+    memcpy(w->id, r->start_id, c->nv * sizeof *w->id);
+    memcpy(w->sig, r->start_sig, c->nv * sizeof *w->sig);
+    w->nextid = r->start_nextid;
+    r->nvin = r->start_nvin;
+    best_free(c->N, &r->best);
+    best_free(c->N, &r->polished);
+    memset(&r->best, 0, sizeof r->best);
+    memset(&r->polished, 0, sizeof r->polished);
+    r->wpolished = 0;
+    r->cycles = 0;
+    r->wbest = r->wcur = -1;
+    r->nbest = INT_MAX;
+    r->stall = r->capped = 0;
+    r->full = 1;
+    r->prounds = 0;
+    r->pass = 1;
+    r->done = r->st->rounds >= r->pa.rounds;
+    st->stop = COMPAT_REFINE_ROUNDS;
+    st->cycles = 0;
+    st->restored = 0;
+    st->rerun = 1;
+    return r->done ? 0 : 1;
+}
+
 void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad, int *fewest)
 {
+    if (r->pass) {   /* the second pass: like a finished refinement, at
+                        least the first pass's result */
+        double wk = r->wcur;
+        if (r->cycles) wk = fmax(wk, r->wpolished);
+        if (worst) *worst = fmax(r->walt, wk) * r->pa.goal;
+        if (nbad) *nbad = INT_MAX;
+        if (fewest) *fewest = r->nbest;
+        return;
+    }
     if (r->cycles) {   /* after a stall's polish: like a finished refinement,
                           its polished mesh (the result at least that good) */
         if (worst) *worst = fmax(r->wpolished, r->wcur) * r->pa.goal;
@@ -1647,22 +1753,23 @@ int compat_refine_finish(struct compat_refiner *r)
     struct work *w = &r->w;
     double goal = pa->goal;
     int rc = -1;
-    st->stalled = r->stall;
-    /* back to the best round if the later ones only added vertices */
-    if (r->remesh && r->best.nv && r->wbest > r->wcur) {
-        best_restore(w, &r->best, &r->nvin);
-        st->restored = 1;
+    if (!r->settled) {
+        st->stalled = r->stall;
+        if (settle(r) < 0) goto out;
     }
-    if (final_polish(r) < 0) goto out;
-    /* a stall answered by more rounds (compat_refine_step) that ended
-     * below the polished mesh of that stall: back to it */
-    if (r->polished.nv) {
+    /* the second pass not better than the first: back to the first's */
+    if (r->pass) {
         int wf, ws, nb;
         double wk = worst_ratio(w, goal, &wf, &ws, &nb);
         if (wk < 0) goto out;
-        if (r->wpolished >= wk) {
-            best_restore(w, &r->polished, &r->nvin);
-            st->restored = 1;
+        if (r->walt >= wk) {
+            best_restore(w, &r->alt, &r->nvin);
+            int rounds = st->rounds, splits = st->splits, bsplits = st->bsplits, flips = st->flips, moves = st->moves,
+                collapses = st->collapses, coarsened = st->coarsened;
+            *st = r->alt_stats;   /* its stop reason; the counts are of both passes */
+            st->rounds = rounds; st->splits = splits; st->bsplits = bsplits; st->flips = flips;
+            st->moves = moves; st->collapses = collapses; st->coarsened = coarsened;
+            st->rerun = 2;
         }
     }
     /* where the worst triangle is and how stretched the maps are there */

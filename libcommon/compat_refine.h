@@ -77,6 +77,11 @@ struct compat_refine_stats {
     int stop;          /* why the splitting stopped: COMPAT_REFINE_* */
     int stalled;       /* rounds in a row at the end without progress (see
                           COMPAT_REFINE_STALLED) */
+    int rerun;         /* split_share < 1: 0 if the first pass reached the
+                          goal, 1 if the second pass (only the worst share
+                          split) was run and kept, 2 if it was run and the
+                          first pass kept (stop, stalled, cycles and
+                          restored are then of the first pass) */
     int restored;      /* 1 if the mesh went back to the best round (later
                           rounds only added vertices) */
     int cycles;        /* stalls answered by going back to the best round,
@@ -130,19 +135,24 @@ struct compat_refine_params {
     int threads;       /* the smoothing and polish run pose by pose on this
                           many threads (0: one per processor); the result
                           does not depend on it */
-    double split_share;/* (pa->mips > 0) after COMPAT_REFINE_FULL_SPLITS
-                          rounds, each round splits only this share (0..1)
-                          of the triangles below the goal, the worst first
-                          (at least one); 0 or 1: all of them every round.
-                          Where the maps between the poses are stretched,
-                          splitting every bad triangle doubles the vertices
-                          there each round and reaches max_nv (or a stall)
-                          before the smoothing has spread the stretch;
-                          splitting the worst only leaves the smoothing,
-                          polish and flips more rounds per vertex */
+    double split_share;/* (pa->mips > 0) 0 or 1: one pass, every triangle
+                          below the goal split every round.  Below 1: a
+                          refinement whose first pass (as with 1) ends
+                          below the goal is run again from its start, and
+                          after COMPAT_REFINE_FULL_SPLITS rounds each round
+                          of that second pass splits only this share of
+                          the triangles below the goal, the worst first
+                          (at least one); the better of the two passes is
+                          the result (a tie: the first).  Where the maps
+                          between the poses are stretched, splitting every
+                          bad triangle doubles the vertices there each
+                          round and reaches max_nv (or a stall) before the
+                          smoothing has spread the stretch; splitting the
+                          worst only leaves the smoothing, polish and
+                          flips more rounds per vertex */
 };
-/* rounds that split every triangle below the goal before split_share
- * applies (most of the quick cases reach the goal by then) */
+/* rounds of the second pass that split every triangle below the goal
+ * before split_share applies */
 #define COMPAT_REFINE_FULL_SPLITS 3
 
 /* Refine c in place.

@@ -89,11 +89,11 @@ static const char help[] =
 "      --max-vertices K  --refine stops splitting at K vertices (default: the\n"
 "                        triangulation's vertices plus 10 times the simplified\n"
 "                        outline's vertex count)\n"
-"      --split-share F   after 3 rounds each --refine round splits only the\n"
-"                        worst share F of the triangles below --min-angle\n"
-"                        (default 1: all of them every round; 0.2 raises the\n"
-"                        worst angle where the poses' maps are stretched, on\n"
-"                        most but not all inputs, at more CPU: man page)\n"
+"      --split-share F   a --refine that ends below --min-angle is run again\n"
+"                        from its start, splitting after 3 rounds only the\n"
+"                        worst share F of the triangles below the goal each\n"
+"                        round; the better of the two is kept (default 0.2;\n"
+"                        1: one pass only, the refinement before)\n"
 "      --threads N       the boundary matching, the triangulation's split\n"
 "                        search and the refinement's smoothing run on N\n"
 "                        threads (default 0: one per core); the output does\n"
@@ -153,7 +153,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'},
         {"split-share", 1, 0, 'H'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
-    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 1;
+    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 0.2;
     o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 10;
     int c;
     while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:m:vh", lo, NULL)) != -1) {
@@ -569,7 +569,7 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
          rs->rounds, rs->splits, rs->bsplits, rs->collapses, rs->coarsened, rs->flips, rs->moves, q0 * 180 / M_PI, q1,
          rs->kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI, elapsed());
     if (rs->stop != COMPAT_REFINE_GOAL && !rs->kept_input) {
-        char why[320];
+        char why[480];
         if (rs->cycles > 0) {   /* a stall answered by the final polish and more rounds */
             char again[96];
             if (rs->stop == COMPAT_REFINE_STALLED) snprintf(again, sizeof again, "stalled again");
@@ -587,6 +587,12 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
                      rs->restored ? " (back to the best round's mesh)" : "");
         else if (rs->stop == COMPAT_REFINE_NOSPLIT) snprintf(why, sizeof why, "no split keeps every pose positive");
         else snprintf(why, sizeof why, "%d rounds used up", pa->rounds);
+        if (rs->rerun) {   /* the second pass of --split-share */
+            size_t n = strlen(why);
+            snprintf(why + n, sizeof why - n, rs->rerun == 1 ? " in the second pass (from the start, --split-share %g), kept"
+                                                            : " in the first pass, kept (the second, --split-share %g, was not better)",
+                     pa->split_share);
+        }
         info(1, "%s%srefinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
                 "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", who, sep, o->min_angle, why, q1, rs->stretch,
              rs->worst_at[0], rs->worst_at[1], rs->worst_shape, o->shapes[rs->worst_shape]);
