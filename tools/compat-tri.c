@@ -92,7 +92,7 @@ static const char help[] =
 "      --split-share F   a --refine that ends below --min-angle is run again\n"
 "                        from its start, splitting after 3 rounds only the\n"
 "                        worst share F of the triangles below the goal each\n"
-"                        round; the better of the two is kept (default 0.1;\n"
+"                        round; the better of the two is kept (default 0.2;\n"
 "                        1: one pass only, the refinement before)\n"
 "      --threads N       the boundary matching, the triangulation's split\n"
 "                        search and the refinement's smoothing run on N\n"
@@ -153,7 +153,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'},
         {"split-share", 1, 0, 'H'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
-    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 0.1;
+    o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 0.2;
     o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 10;
     int c;
     while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:m:vh", lo, NULL)) != -1) {
