@@ -111,7 +111,7 @@ static const char help[] =
 
 struct options {
     const char *corr, *output, *interior, *points_out;
-    int match, match_points, match_default;
+    int match, match_points, match_default, match_auto;   /* match_auto: no -m (the matching by default) */
     double bend, feature;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
@@ -382,7 +382,7 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
         }
         if (unknown) nwant++; else ncorr++;
     }
-    if (o->match == -1) { o->match = BMATCH_MULTISCALE; o->match_default = ncorr >= 3 && !nwant; }
+    if (o->match == -1) { o->match = BMATCH_MULTISCALE; o->match_default = ncorr >= 3 && !nwant; o->match_auto = 1; }
     if (o->match == -2 && (ncorr < 3 || nwant))
         die("cannot read '%s': %d correspondence point%s%s; at least 3 are needed without --match",
             o->corr, ncorr, ncorr == 1 ? "" : "s", nwant ? " given in every shape" : "");
@@ -947,6 +947,51 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     return K[use]->q;
 }
 
+/* The default matching with fewer than 3 given rows (no race: nothing
+ * else to compare) below the goal: the matching again with twice
+ * --match-points, refined, and the larger worst angle kept (the first on
+ * a tie).  cp: the refined mesh, q1 its worst angle (degrees); returns the
+ * kept one's. */
+static double dense_retry(const struct options *o, struct rings *R, struct compat *cp, double q1)
+{
+    struct options dense = *o;
+    struct candidate k;
+    memset(&k, 0, sizeof k);
+    dense.match_points = 2 * o->match_points < 1000 ? 2 * o->match_points : 1000;
+    dense.points_out = NULL;
+    char name[64];
+    snprintf(name, sizeof name, "the matching with %d points", dense.match_points);
+    k.name = name;
+    info(1, "below the goal (%.2f deg): %s too; at %.3f s", q1, name, elapsed());
+    if (dense_start(&dense, R, &k) < 0) {
+        info(1, "%s: %s; left out", name, cm_errmsg());
+        if (k.r) compat_refine_abandon(k.r);
+        compat_free(&k.cp);
+        return q1;
+    }
+    int st;
+    while ((st = compat_refine_step(k.r)) > 0) {}
+    if (st < 0) die("%s", cm_errmsg());
+    if (compat_refine_finish(k.r) < 0) die("%s", cm_errmsg());
+    double q2 = refine_report(&dense, &k.cp, k.q0, &k.rs, &k.pa, name);
+    if (!(q2 > q1)) {
+        info(1, "kept the matched points: worst angle %.2f deg (%s: %.2f deg)", q1, name, q2);
+        compat_free(&k.cp);
+        return q1;
+    }
+    info(1, "kept %s: worst angle %.2f deg (the matched points: %.2f deg)", name, q2, q1);
+    compat_free(cp);
+    *cp = k.cp;
+    if (o->points_out) {   /* the rows actually used */
+        struct compat tmp;
+        char quiet[LOG_SIZE] = "";
+        dense.points_out = o->points_out;
+        dense.log = quiet;
+        if (build_single(&dense, R, &tmp) == 0) compat_free(&tmp);
+    }
+    return q2;
+}
+
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -1028,6 +1073,9 @@ int main(int argc, char **argv)
          cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
     double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
+    if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && q1 < o.min_angle &&
+        o.match_points < 1000)
+        q1 = dense_retry(&o, R, &cp, q1);
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
         compat_pose_quality(&cp, s, &mn, &u10, &u20);
