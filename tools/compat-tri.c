@@ -58,7 +58,9 @@ static const char help[] =
 "                        between them: the earlier default); with 3 or more rows\n"
 "                        and no -m, where the matched points are not at\n"
 "                        --min-angle after 3 rounds, 'off' is refined side by\n"
-"                        side and the one falling behind dropped (-v)\n"
+"                        side and the one falling behind dropped (-v); no -m\n"
+"                        and a mesh below --min-angle: the matching with twice\n"
+"                        --match-points is refined too, the best mesh kept\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
 "                        rows plus SHAPE0's most salient corners (default 12)\n"
 "      --bend R          weight of the bending term of the matching (default 0.03)\n"
@@ -116,7 +118,7 @@ static const char help[] =
 
 struct options {
     const char *corr, *output, *interior, *points_out;
-    int match, match_points, match_default;
+    int match, match_points, match_default, match_auto;   /* match_auto: no -m (the matching by default) */
     double bend, feature;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
@@ -390,7 +392,7 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
         }
         if (unknown) nwant++; else ncorr++;
     }
-    if (o->match == -1) { o->match = BMATCH_MULTISCALE; o->match_default = ncorr >= 3 && !nwant; }
+    if (o->match == -1) { o->match = BMATCH_MULTISCALE; o->match_default = ncorr >= 3 && !nwant; o->match_auto = 1; }
     if (o->match == -2 && (ncorr < 3 || nwant))
         die("cannot read '%s': %d correspondence point%s%s; at least 3 are needed without --match",
             o->corr, ncorr, ncorr == 1 ? "" : "s", nwant ? " given in every shape" : "");
@@ -752,59 +754,115 @@ static void ahead_join(struct ahead *a, int stop)
     a->started = 0;
 }
 
+/* The third candidate of the default (struct candidate k): the matching
+ * again with twice --match-points (dense: its options), built, triangulated
+ * and started; its -v lines are printed.  0, or -1 (cm_errmsg set) if it
+ * could not be built. */
+static int dense_start(struct options *dense, struct rings *R, struct candidate *k)
+{
+    char log[LOG_SIZE] = "";
+    dense->log = log;
+    int ok = build_single(dense, R, &k->cp) == 0 && compat_triangulate(&k->cp) == 0;
+    dense->log = NULL;
+    for (char *l = log, *e; *l && (e = strchr(l, '\n')); l = e + 1) {   /* its -v lines */
+        *e = 0;
+        info(1, "%s: %s", k->name, l);
+    }
+    if (!ok) return -1;
+    k->q0 = compat_min_angle(&k->cp, NULL);
+    k->pa = refine_params(dense, &k->cp);
+    if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) return -1;
+    return 0;
+}
+
 /* The default with 3 or more given rows: the points the matching placed
- * between the rows (cp, built and triangulated) and the given rows alone
- * (-m off) are both candidates (measured: the matching wins on the traced
- * camel and horse, the rows alone on the shared elephant poses, and no
- * count of the triangulations told them apart in advance).  The matched
- * points are refined first; if they are not at the goal after RACE_ROUNDS
- * rounds, the rows alone are built and the two are refined a round each
- * in turn.  A candidate is dropped once it falls behind: a smaller worst
- * angle than the other's with at least RACE_BEHIND times its triangles
- * below the goal, from the third round on (on the six elephant poses the
- * matched points have 434 bad triangles at 3.7 deg against 201 at 6.8 and
- * would go on to 3041 vertices at 18.5 deg).  One that reaches the goal
- * is kept; otherwise the larger worst angle (the matched points on a tie).
- * ah: the rows alone built ahead (struct ahead; not started: built here
- * when needed).  On return cp holds the kept mesh; returns its worst
- * angle (degrees). */
+ * between the rows (cp, built and triangulated), the given rows alone
+ * (-m off) and the matching with twice as many points (--match-points 2K)
+ * are candidates (measured: the matching wins on the traced camel and
+ * horse, the rows alone on the shared elephant poses, and no count of the
+ * triangulations told them apart in advance; which of the two matchings
+ * keeps the larger worst angle changes from subset to subset of the same
+ * poses, the twice as many points more often on the horse and the camel's
+ * three-quarter views).  The matched points are refined first; if they are
+ * not at the goal after RACE_ROUNDS rounds, the two others are built and
+ * the live candidates are refined a round each in turn (the one with the
+ * fewest rounds first).  A candidate is dropped once it falls behind: a
+ * smaller worst angle than another's with at least RACE_BEHIND times its
+ * triangles below the goal, from the third round on (on the six elephant
+ * poses the matched points have 434 bad triangles at 3.7 deg against 201
+ * at 6.8 and would go on to 3041 vertices at 18.5 deg).  The matched
+ * points at the goal are kept; otherwise the largest worst angle (the
+ * first in that order on a tie).  ah: the rows alone built ahead (struct
+ * ahead; not started: built here when needed).  On return cp holds the
+ * kept mesh; returns its worst angle (degrees). */
+#define NCAND 3
+/* the further matching has DENSE_FACTOR times --match-points (measured on
+ * the survey of compat-tri(1): 2 raised the mean worst angle of the 37
+ * subsets below 20 deg from 8.40 to 9.34 at 64 -> 97 s of CPU, 3 to 9.52
+ * at 118 s, the horse worse than with 2) */
+#ifndef DENSE_FACTOR
+#define DENSE_FACTOR 2
+#endif
 static double race(struct options *o, struct rings *R, struct compat *cp, double q0, struct ahead *ah)
 {
-    struct options off = *o;
+    struct options off = *o, dense = *o;
     off.match = -2;
     off.points_out = NULL;
-    struct candidate k0, *K[2] = {&k0, ah->k};
+    dense.match_points = DENSE_FACTOR * o->match_points < 1000 ? DENSE_FACTOR * o->match_points : 1000;
+    dense.points_out = NULL;
+    dense.match_default = 0;
+    struct candidate k0, k2, *K[NCAND] = {&k0, ah->k, &k2};
     memset(&k0, 0, sizeof k0);
+    memset(&k2, 0, sizeof k2);
+    int nk = dense.match_points > o->match_points ? 3 : 2;
+    char dname[64];
+    snprintf(dname, sizeof dname, "the matching with %d points", dense.match_points);
     K[0]->name = "the matched points";
     K[1]->name = "the given rows only (-m off)";
+    K[2]->name = dname;
     K[0]->cp = *cp;
     K[0]->built = 1;
     K[0]->q0 = q0;
-    K[0]->q = K[1]->q = -1;
+    K[0]->q = K[1]->q = K[2]->q = -1;
     K[0]->pa = refine_params(o, cp);
     if (ah->started) K[0]->pa.threads = 1;   /* the other core builds the rows alone */
     if (!(K[0]->r = compat_refine_begin(&K[0]->cp, &K[0]->pa, &K[0]->rs))) die("%s", cm_errmsg());
-    int rounds[2] = {0, 0};
+    int rounds[NCAND] = {0, 0, 0};
     struct progress pr;
     long done = 0;
     progress_start(&pr, "compat-tri: refinement rounds", 0);
     for (;;) {
         if (K[0]->r && ah->started && atomic_load(&ah->done)) compat_refine_threads(K[0]->r, o->threads);
-        int live0 = K[0]->r != NULL, live1 = K[1]->r != NULL && K[1]->built;
-        if (!live0 && !live1 && (K[1]->built || K[0]->q >= o->min_angle)) break;
+        int nlive = 0, pick = -1;
+        for (int a = 0; a < nk; a++)
+            if (K[a]->r && K[a]->built) {
+                nlive++;
+                if (pick < 0 || rounds[a] < rounds[pick]) pick = a;   /* the fewest rounds first */
+            }
+        if (!nlive && K[1]->built && nk > 2 && !K[2]->built && K[0]->q < o->min_angle && K[1]->q < o->min_angle) {
+            /* both below the goal: the matching with twice the points */
+            K[2]->built = 1;
+            if (dense_start(&dense, R, K[2]) < 0) {
+                info(1, "%s: %s; left out", K[2]->name, cm_errmsg());
+                if (K[2]->r) compat_refine_abandon(K[2]->r);
+                K[2]->r = NULL;
+                compat_free(&K[2]->cp);
+                memset(&K[2]->cp, 0, sizeof K[2]->cp);
+                K[2]->q = -1;
+            } else info(1, "both below the goal: %s too; at %.3f s", K[2]->name, elapsed());
+            continue;
+        }
+        if (!nlive && (K[1]->built || K[0]->q >= o->min_angle)) break;
         /* the matched points at the goal: kept */
-        if (!live0 && K[0]->q >= o->min_angle) break;
-        if (live0 && (rounds[0] <= rounds[1] || !live1)) {
-            if (cand_step(o, K[0], &pr, &done) < 0) die("%s", cm_errmsg());
-            rounds[0]++;
-        } else if (live1) {
-            if (cand_step(o, K[1], &pr, &done) < 0) die("%s", cm_errmsg());
-            rounds[1]++;
+        if (!K[0]->r && K[0]->q >= o->min_angle) break;
+        if (pick >= 0) {
+            if (cand_step(o, K[pick], &pr, &done) < 0) die("%s", cm_errmsg());
+            rounds[pick]++;
         }
         int nbad0 = 0, fewest0 = 0;
         if (K[0]->r) compat_refine_progress(K[0]->r, NULL, &nbad0, &fewest0);
         if (!K[1]->built && ((rounds[0] >= RACE_ROUNDS && nbad0 > fewest0) || !K[0]->r) && K[0]->q < o->min_angle) {
-            /* the second candidate; if it cannot be built the first goes on alone */
+            /* the other candidates; one that cannot be built is left out */
             K[1]->built = 1;
             int ok;
             char err[512];
@@ -844,21 +902,31 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
             }
             continue;
         }
-        /* the one behind after the same number of rounds is dropped */
-        if (K[1]->built && (rounds[0] == rounds[1] || !K[0]->r || !K[1]->r) &&
-            (rounds[0] >= RACE_ROUNDS || !K[0]->r) && (rounds[1] >= RACE_ROUNDS || !K[1]->r)) {
-            for (int a = 0; a < 2; a++) {
-                if (!K[a]->r || (!K[1 - a]->r && K[1 - a]->q < 0)) continue;
-                double wa, wb;
-                int na, nb;
-                cand_state(K[a], &wa, &na);
-                cand_state(K[1 - a], &wb, &nb);
+        /* after the same number of rounds, one behind another is dropped */
+        if (!K[1]->built) continue;
+        int even = 1, r0 = -1;   /* every live candidate at the same round, RACE_ROUNDS or more */
+        for (int a = 0; a < nk; a++)
+            if (K[a]->r) {
+                if (r0 < 0) r0 = rounds[a];
+                if (rounds[a] != r0 || rounds[a] < RACE_ROUNDS) even = 0;
+            }
+        for (int a = 0; a < nk && even; a++) {
+            if (!K[a]->r) continue;
+            double wa;
+            int na;
+            cand_state(K[a], &wa, &na);
+            for (int b = 0; b < nk; b++) {
+                if (b == a || !K[b]->built || (!K[b]->r && K[b]->q < 0)) continue;
+                double wb;
+                int nb;
+                cand_state(K[b], &wb, &nb);
                 if (wa < wb && (double)na >= RACE_BEHIND * (double)nb) {
                     info(1, "%s dropped after %d rounds: worst angle %.2f deg with %d triangles below the goal (%s: %.2f deg, %d); at %.3f s",
-                         K[a]->name, rounds[a], wa, na, K[1 - a]->name, wb, nb, elapsed());
+                         K[a]->name, rounds[a], wa, na, K[b]->name, wb, nb, elapsed());
                     compat_refine_abandon(K[a]->r);
                     K[a]->r = NULL;
                     K[a]->q = -1;
+                    even = 0;   /* one a round */
                     break;
                 }
             }
@@ -870,26 +938,81 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
         if (K[1]->r) compat_refine_abandon(K[1]->r);
         K[1]->r = NULL;
         compat_free(&K[1]->cp);
-        memset(&K[1]->cp, 0, sizeof K[1]->cp);
     }
-    /* kept: the matched points at the goal, else the larger worst angle */
-    int use = K[0]->q >= o->min_angle ? 0 : K[1]->q > K[0]->q;
-    for (int a = 0; a < 2; a++)
+    /* kept: the matched points at the goal, else the largest worst angle */
+    int use = 0;
+    if (K[0]->q < o->min_angle)
+        for (int a = 1; a < nk; a++)
+            if (K[a]->q > K[use]->q) use = a;
+    for (int a = 0; a < nk; a++)
         if (K[a]->r) { compat_refine_abandon(K[a]->r); K[a]->r = NULL; }
-    if (K[1]->built && K[1]->q >= 0 && K[0]->q >= 0)
-        info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", K[use]->name, K[use]->q, K[1 - use]->name, K[1 - use]->q);
-    else if (K[1]->built && K[use]->q >= 0)
-        info(1, "kept %s: worst angle %.2f deg", K[use]->name, K[use]->q);
-    if (K[1 - use]->built) compat_free(&K[1 - use]->cp);
+    if (K[1]->built) {
+        char others[512] = "";
+        for (int a = 0; a < nk; a++)
+            if (a != use && K[a]->built && K[a]->q >= 0) {
+                size_t l = strlen(others);
+                snprintf(others + l, sizeof others - l, "%s%s: %.2f deg", l ? "; " : "", K[a]->name, K[a]->q);
+            }
+        if (K[use]->q >= 0)
+            info(1, "kept %s: worst angle %.2f deg%s%s%s", K[use]->name, K[use]->q, *others ? " (" : "", others, *others ? ")" : "");
+    }
+    for (int a = 0; a < nk; a++)
+        if (a != use && K[a]->built) compat_free(&K[a]->cp);
     *cp = K[use]->cp;
-    if (use == 1 && o->points_out) {   /* the rows actually used */
+    if (use > 0 && o->points_out) {   /* the rows actually used */
         struct compat tmp;
         char quiet[LOG_SIZE] = "";   /* its -v lines were printed */
-        off.points_out = o->points_out;
-        off.log = quiet;
-        if (build_single(&off, R, &tmp) == 0) compat_free(&tmp);
+        struct options *w = use == 1 ? &off : &dense;
+        w->points_out = o->points_out;
+        w->log = quiet;
+        if (build_single(w, R, &tmp) == 0) compat_free(&tmp);
     }
     return K[use]->q;
+}
+
+/* The default matching with fewer than 3 given rows (no race: nothing
+ * else to compare) below the goal: the matching again with twice
+ * --match-points, refined, and the larger worst angle kept (the first on
+ * a tie).  cp: the refined mesh, q1 its worst angle (degrees); returns the
+ * kept one's. */
+static double dense_retry(const struct options *o, struct rings *R, struct compat *cp, double q1)
+{
+    struct options dense = *o;
+    struct candidate k;
+    memset(&k, 0, sizeof k);
+    dense.match_points = DENSE_FACTOR * o->match_points < 1000 ? DENSE_FACTOR * o->match_points : 1000;
+    dense.points_out = NULL;
+    char name[64];
+    snprintf(name, sizeof name, "the matching with %d points", dense.match_points);
+    k.name = name;
+    info(1, "below the goal (%.2f deg): %s too; at %.3f s", q1, name, elapsed());
+    if (dense_start(&dense, R, &k) < 0) {
+        info(1, "%s: %s; left out", name, cm_errmsg());
+        if (k.r) compat_refine_abandon(k.r);
+        compat_free(&k.cp);
+        return q1;
+    }
+    int st;
+    while ((st = compat_refine_step(k.r)) > 0) {}
+    if (st < 0) die("%s", cm_errmsg());
+    if (compat_refine_finish(k.r) < 0) die("%s", cm_errmsg());
+    double q2 = refine_report(&dense, &k.cp, k.q0, &k.rs, &k.pa, name);
+    if (!(q2 > q1)) {
+        info(1, "kept the matched points: worst angle %.2f deg (%s: %.2f deg)", q1, name, q2);
+        compat_free(&k.cp);
+        return q1;
+    }
+    info(1, "kept %s: worst angle %.2f deg (the matched points: %.2f deg)", name, q2, q1);
+    compat_free(cp);
+    *cp = k.cp;
+    if (o->points_out) {   /* the rows actually used */
+        struct compat tmp;
+        char quiet[LOG_SIZE] = "";
+        dense.points_out = o->points_out;
+        dense.log = quiet;
+        if (build_single(&dense, R, &tmp) == 0) compat_free(&tmp);
+    }
+    return q2;
 }
 
 int main(int argc, char **argv)
@@ -973,6 +1096,9 @@ int main(int argc, char **argv)
          cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
     double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
+    if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && q1 < o.min_angle &&
+        o.match_points < 1000)
+        q1 = dense_retry(&o, R, &cp, q1);
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
         compat_pose_quality(&cp, s, &mn, &u10, &u20);
