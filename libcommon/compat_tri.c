@@ -1553,7 +1553,7 @@ static int overlay_piece(struct compat *c, const int *poly, int m)
     }
     double *S = NULL;
     int k = 0, nf = 0, *F = NULL;
-    int rc = cdt2_overlay(m, N, (const double *const *)X, c->split_mode != COMPAT_OVERLAY_DELAUNAY, &S, &k, &F, &nf);
+    int rc = cdt2_overlay(m, N, (const double *const *)X, c->split_mode == COMPAT_OVERLAY_FEWEST, &S, &k, &F, &nf);
     if (rc < 0) {
         for (int s = 0; s < N; s++) free(X[s]);
         free(X);

@@ -95,9 +95,9 @@ static const char help[] =
 "                        not depend on N\n"
 "      --split MODE      pieces that no common diagonal or single Steiner point\n"
 "                        splits: 'overlay' (default: overlay of the shapes'\n"
-"                        triangulations, chosen to cross least; always\n"
-"                        succeeds), 'overlay-delaunay' (the same with each\n"
-"                        shape's Delaunay triangulation, as Aronov et al.) or\n"
+"                        Delaunay triangulations, always succeeds),\n"
+"                        'overlay-fewest' (the same with the triangulations\n"
+"                        chosen to cross least: fewer Steiner points) or\n"
 "                        'linkpath' (the paper's Steiner paths; can fail on\n"
 "                        thin pieces)\n"
 "      --bound           print the certificate of the given points (-c, one\n"
@@ -162,9 +162,9 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 's': o->smooth = arg_int(optarg, "--smooth"); break;
         case 'S':
             if (!strcmp(optarg, "overlay")) o->split = COMPAT_OVERLAY;
-            else if (!strcmp(optarg, "overlay-delaunay")) o->split = COMPAT_OVERLAY_DELAUNAY;
+            else if (!strcmp(optarg, "overlay-fewest")) o->split = COMPAT_OVERLAY_FEWEST;
             else if (!strcmp(optarg, "linkpath")) o->split = COMPAT_LINKPATH;
-            else usage_error("--split must be 'overlay', 'overlay-delaunay' or 'linkpath'");
+            else usage_error("--split must be 'overlay', 'overlay-fewest' or 'linkpath'");
             break;
         case 'M':
             if (!strcmp(optarg, "order")) o->nearest = 0;
