@@ -34,15 +34,23 @@ int cdt2_mesh_box(const double lo[2], const double hi[2], const double *P, int n
  * simple counter-clockwise polygons; costs Steiner points (the chord
  * crossings), so it is the fallback for pieces the divide and conquer
  * cannot split.
+ * With fewest != 0 each shape's triangulation is chosen, among those no
+ * thinner than its constrained Delaunay one's thinnest triangle, to cross
+ * the other shapes' as little as possible on the circle (coordinate
+ * descent over the shapes, each step an exact O(m^3) dynamic program over
+ * the shape's diagonals): fewer Steiner points than with every shape's
+ * Delaunay triangulation as in Aronov et al. (fewest = 0).
  * m        corners
  * N        shapes
  * X        N arrays of m by 2 corner positions (simple, counter-clockwise)
+ * fewest   1: triangulations with the fewest crossings; 0: each shape's
+ *          constrained Delaunay triangulation
  * S        out: N arrays (malloc'd, stacked: *S is N by k by 2) of the k new
  *          vertices' positions, shape by shape
  * k        out: number of new vertices (numbered m .. m+k-1)
  * F        out: #F by 3 counter-clockwise triangles over 0..m+k-1 (malloc'd)
  * Returns -1 on failure (cm_errmsg set). */
-int cdt2_overlay(int m, int N, const double *const *X, double **S, int *k, int **F, int *nf);
+int cdt2_overlay(int m, int N, const double *const *X, int fewest, double **S, int *k, int **F, int *nf);
 
 /* Quality mesh of one simple polygon (CGAL Delaunay_mesher_2, the
  * baseline compat-tri's refinement is measured against in bench/).

@@ -1219,7 +1219,7 @@ static int choose_split(struct compat *c, const int *poly, int m, struct split *
         goto done;
     }
     free(bestpath);
-    if (c->split_mode == COMPAT_OVERLAY) { rc = 1; goto done; }
+    if (c->split_mode != COMPAT_LINKPATH) { rc = 1; goto done; }
     /* stage III: link distances through candidate points */
     {
         int **dist = malloc(N * sizeof *dist);   /* dist[s][i*m + j]: links */
@@ -1553,7 +1553,7 @@ static int overlay_piece(struct compat *c, const int *poly, int m)
     }
     double *S = NULL;
     int k = 0, nf = 0, *F = NULL;
-    int rc = cdt2_overlay(m, N, (const double *const *)X, &S, &k, &F, &nf);
+    int rc = cdt2_overlay(m, N, (const double *const *)X, c->split_mode == COMPAT_OVERLAY_FEWEST, &S, &k, &F, &nf);
     if (rc < 0) {
         for (int s = 0; s < N; s++) free(X[s]);
         free(X);

@@ -46,7 +46,7 @@ struct compat {
     int nsteiner;     /* interior vertices added by stages II-III */
     int nrefine;      /* interior vertices added by refinement */
     int stage_count[3]; /* splits made by stage I, II, III (or overlays) */
-    int split_mode;   /* COMPAT_OVERLAY (default) or COMPAT_LINKPATH */
+    int split_mode;   /* COMPAT_OVERLAY (default), COMPAT_OVERLAY_FEWEST or COMPAT_LINKPATH */
     int threads;      /* the split search runs on this many threads (0: one
                        * per processor); the mesh does not depend on it */
     int exhaustive;   /* 1: the split search's inside tests try every edge of
@@ -103,9 +103,12 @@ int compat_simplify(struct compat *c, double err, const unsigned char *keep);
 
 /* What to do with a piece that no common diagonal and no single Steiner
  * point splits: triangulate it by overlay (cdt2_overlay: always succeeds)
- * or, as in Baxter et al., split it along a path of several Steiner points
- * (link distances through candidate points; can fail on thin pieces). */
-enum { COMPAT_OVERLAY = 0, COMPAT_LINKPATH = 1 };
+ * of each shape's constrained Delaunay triangulation (COMPAT_OVERLAY,
+ * Aronov et al.) or of the triangulations chosen to cross least
+ * (COMPAT_OVERLAY_FEWEST), or, as in Baxter et al., split it along a path
+ * of several Steiner points (link distances through candidate points; can
+ * fail on thin pieces). */
+enum { COMPAT_OVERLAY = 0, COMPAT_LINKPATH = 1, COMPAT_OVERLAY_FEWEST = 2 };
 
 /* Compatible triangulation of the boundary polygons (interior Steiner
  * points appended after the boundary).  Returns -1 if it fails. */

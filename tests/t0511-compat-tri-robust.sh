@@ -97,4 +97,16 @@ test_expect_success 'the paper-style link paths stay available (--split linkpath
 	compat-tri --split linkpath -c c3 p0.rings p1.rings p2.rings >lp.mesh &&
 	check_mesh lp.mesh c3 p0.rings p1.rings p2.rings
 '
+test_expect_success 'the overlay of the fewest crossings (--split overlay-fewest): a valid mesh, no more Steiner points before refinement' '
+	compat-tri -v --split overlay-fewest -c c3 p0.rings p1.rings p2.rings >of.mesh 2>of.log &&
+	check_mesh of.mesh c3 p0.rings p1.rings p2.rings &&
+	compat-tri -v -c c3 p0.rings p1.rings p2.rings >od.mesh 2>od.log &&
+	nf=$(sed -n "s/.*triangulation: [0-9]* triangles, \([0-9]*\) Steiner.*/\1/p" of.log) &&
+	nd=$(sed -n "s/.*triangulation: [0-9]* triangles, \([0-9]*\) Steiner.*/\1/p" od.log) &&
+	echo "Steiner points: $nf fewest, $nd Delaunay" && test "$nf" -le "$nd"
+'
+test_expect_success 'an unknown --split mode: usage error naming the modes' '
+	test_must_fail_usage compat-tri --split fewest -c c3 p0.rings p1.rings p2.rings >/dev/null 2>err &&
+	grep -q "overlay-fewest" err
+'
 test_done

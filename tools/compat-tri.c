@@ -102,8 +102,11 @@ static const char help[] =
 "                        not depend on N\n"
 "      --split MODE      pieces that no common diagonal or single Steiner point\n"
 "                        splits: 'overlay' (default: overlay of the shapes'\n"
-"                        triangulations, always succeeds) or 'linkpath' (the\n"
-"                        paper's Steiner paths; can fail on thin pieces)\n"
+"                        Delaunay triangulations, always succeeds),\n"
+"                        'overlay-fewest' (the same with the triangulations\n"
+"                        chosen to cross least: fewer Steiner points) or\n"
+"                        'linkpath' (the paper's Steiner paths; can fail on\n"
+"                        thin pieces)\n"
 "      --bound           print the certificate of the given points (-c, one\n"
 "                        outer ring per shape, 4 or more rows) on stdout and\n"
 "                        exit without meshing: a proven upper bound on the\n"
@@ -167,8 +170,9 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 's': o->smooth = arg_int(optarg, "--smooth"); break;
         case 'S':
             if (!strcmp(optarg, "overlay")) o->split = COMPAT_OVERLAY;
+            else if (!strcmp(optarg, "overlay-fewest")) o->split = COMPAT_OVERLAY_FEWEST;
             else if (!strcmp(optarg, "linkpath")) o->split = COMPAT_LINKPATH;
-            else usage_error("--split must be 'overlay' or 'linkpath'");
+            else usage_error("--split must be 'overlay', 'overlay-fewest' or 'linkpath'");
             break;
         case 'M':
             if (!strcmp(optarg, "order")) o->nearest = 0;
@@ -1093,7 +1097,7 @@ int main(int argc, char **argv)
     double ma0, q0 = compat_min_angle(&cp, &ma0);
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg; at %.3f s", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
-         cp.stage_count[2], o.split == COMPAT_OVERLAY ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
+         cp.stage_count[2], o.split != COMPAT_LINKPATH ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
     double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
     if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && q1 < o.min_angle &&
