@@ -62,7 +62,8 @@ static const char help[] =
 "                        and a mesh below --min-angle: the matching with twice\n"
 "                        --match-points is refined too, the best mesh kept\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
-"                        rows plus SHAPE0's most salient corners (default 12)\n"
+"                        rows plus SHAPE0's most salient corners (default 12;\n"
+"                        given, no matching with twice K is tried)\n"
 "      --bend R          weight of the bending term of the matching (default 0.03)\n"
 "      --feature F       weight of the multi-scale turning term (default 10)\n"
 "      --points-out FILE write the correspondence points used (a -c file, indices\n"
@@ -122,6 +123,7 @@ static const char help[] =
 struct options {
     const char *corr, *output, *interior, *points_out;
     int match, match_points, match_default, match_auto;   /* match_auto: no -m (the matching by default) */
+    int match_points_given;   /* --match-points on the command line: no denser candidate */
     double bend, feature;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
@@ -197,7 +199,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             else if (!strcmp(optarg, "off")) o->match = -2;
             else usage_error("--match must be 'multiscale', 'elastic', 'arclength' or 'off'");
             break;
-        case 'K': o->match_points = arg_int(optarg, "--match-points"); break;
+        case 'K': o->match_points = arg_int(optarg, "--match-points"); o->match_points_given = 1; break;
         case 'B': o->bend = arg_double(optarg, "--bend"); break;
         case 'F': o->feature = arg_double(optarg, "--feature"); break;
         case 'P': o->points_out = optarg; break;
@@ -818,7 +820,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     struct candidate k0, k2, *K[NCAND] = {&k0, ah->k, &k2};
     memset(&k0, 0, sizeof k0);
     memset(&k2, 0, sizeof k2);
-    int nk = dense.match_points > o->match_points ? 3 : 2;
+    int nk = dense.match_points > o->match_points && !o->match_points_given ? 3 : 2;
     char dname[64];
     snprintf(dname, sizeof dname, "the matching with %d points", dense.match_points);
     K[0]->name = "the matched points";
@@ -1101,7 +1103,7 @@ int main(int argc, char **argv)
     double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
     if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && q1 < o.min_angle &&
-        o.match_points < 1000)
+        o.match_points < 1000 && !o.match_points_given)
         q1 = dense_retry(&o, R, &cp, q1);
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
