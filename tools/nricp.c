@@ -607,6 +607,14 @@ static void key_settle(const struct options *o, const struct mesh *S, const stru
     double h0, h, hc, hs;
     int f0, fl, fc, fs;
     measure(X, S, T, &h0, &f0);
+    /* a key with more than START_FLIPS flipped faces did not register (a
+     * sheet folded on the target): a pass from it lowers the distance by
+     * sliding that sheet along the target, not by fitting it (facecap
+     * chain: closer, but farther from the true places; nricp(1)) */
+    if (f0 > START_FLIPS) {
+        info(1, "%s%snot settled: %d flipped faces", name ? name : "", name ? ": " : "", f0);
+        return;
+    }
     hs = h0;
     fs = f0;
     size_t n3 = (size_t)S->nv * 3;
