@@ -20,7 +20,7 @@ test_expect_success 'nricp --chain writes SOURCE and one key per target; key 1 i
 # the same up to the last bits: built with the --settle code (not run here)
 # the chain's key 2 and the run from key 1 differ by 1.3e-6 at most (mean
 # 1.5e-8; the build before, 0): something along the chain depends on state
-# below the options (not found; nricp(1) BUGS); against 0.0016 for a run
+# below the options (not found; nricp(1), --settle); against 0.0016 for a run
 # from key 1 with its own rest shape (the next test)
 test_expect_success 'nricp --rest SOURCE: key 2 of the chain is a run from key 1 with the rest shape SOURCE' '
 	anim-slice -f 2 keys.mesh >k2.mesh &&
