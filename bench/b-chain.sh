@@ -75,7 +75,7 @@ run_chain() {
 case_run() {
     n=$1; shift
     echo "nricp --chain $n, keys Hausdorff %/flipped (truth %):"
-    run_chain "$n" "  new ($OPTS)" "$OPTS" "$@"
+    run_chain "$n" "  new (${OPTS:-default})" "$OPTS" "$@"
     run_chain "$n" "  baseline ($BASE_OPTS)" "$BASE_OPTS" "$@"
 }
 
