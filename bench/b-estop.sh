@@ -148,6 +148,16 @@ if [ -e "$DATA/scans/camel-gallop-05.off" ]; then
     set -- $(hf "$T/c05.mesh" "$T/n45.mesh"); h45=$1
     set -- $(hf "$T/c05.mesh" "$T/cd05.mesh"); hd5=$1
     echo "nricp --chain camel 01-05, last key against registrations onto scan 05: $hf4 % | baseline direct 01->05 $hd5 %, one step 04->05 $h45 % | ratio $(ratio "$hf4" "$hd5") against the direct, $(ratio "$hf4" "$h45") against one step (no build-up: <= 1.2x the one step)"
+    # the chain's keys settled (--settle 2, the default with --chain: each
+    # key registered again from itself after the chain, kept where closer)
+    # against the chain as it leaves them (--settle 0); and the last key
+    # against the one step 04->05 settled the same way (--settle 2)
+    nricp --chain --settle 0 "$T/c01.mesh" "$T/c02.mesh" "$T/c03.mesh" "$T/c04.mesh" "$T/c05.mesh" >"$T/cs0.mesh" &&
+    nricp --settle 2 "$T/c04.mesh" "$T/c05.mesh" >"$T/n45s.mesh" &&
+    anim-slice -f 4 "$T/cs0.mesh" >"$T/cs04.mesh" || exit 1
+    set -- $(hf "$T/c05.mesh" "$T/cs04.mesh"); hs4=$1 fs4=$2
+    set -- $(hf "$T/c05.mesh" "$T/n45s.mesh"); h45s=$1
+    echo "nricp --chain --settle 2 (default) camel 01-05, last key: $hf4 % ($ff4 flipped) | baseline --settle 0 $hs4 % ($fs4 flipped) | ratio $(ratio "$hf4" "$hs4"); against 04->05 --settle 2 ($h45s %) $(ratio "$hf4" "$h45s") (goal: within 1.2x of the best registration onto scan 05)"
     # mesh-metrics on 21 ARAP in-betweens of 01 -> 02 against scan 01 (the
     # examples/clay interp-metrics case): one process for all frames (tree,
     # samples and topology of the reference once, each frame's closest

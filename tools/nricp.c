@@ -97,6 +97,13 @@ static const char help[] =
 "                        or with more than 10 flipped faces, fit it once more with\n"
 "                        the rest shape smoothed N times, the better kept (default\n"
 "                        3; 0: off)\n"
+"      --settle N        last, register the result again from itself (no landmarks,\n"
+"                        the fit's rest shape that result, refined), and again from\n"
+"                        that, up to N times, each kept where the Hausdorff distance\n"
+"                        + 1e-4 per flipped face drops (at most 10 flipped faces, or\n"
+"                        no more than before; a key with more than 10 is not\n"
+"                        settled); default 2 with --chain, after the whole chain,\n"
+"                        on every key; 0 for one pair: off\n"
 "      --passes N        1: one registration per key; 2: register it once more\n"
 "                        from its result, as if that were SOURCE (its own\n"
 "                        automatic landmarks and starts; the\n"
@@ -158,6 +165,10 @@ struct options {
     int fit_release;       /* 0 stay, 1 mean, 2 both (nricp_params.fit_release per run) */
     int fit_smooth_retry;  /* > fit_smooth: the kept key's second fit with this rest smoothing */
     int refine;            /* iterations of the kept key's last refinement (sample_fit.h) */
+    int settle;            /* the result (with --chain every key, after the chain) registered
+                              up to this many times more from itself, kept where closer
+                              (key_settle) */
+    int settle_given;
     int passes_given;      /* --passes on the command line */
     int passes;            /* 2: each key registered again from its result, the better kept;
                               0 (auto): only where the first ends farther than
@@ -170,14 +181,14 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES, O_UNFLIP, O_REFINE };
+           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES, O_UNFLIP, O_REFINE, O_SETTLE };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
         {"gamma", 1, 0, O_GAMMA}, {"max-angle", 1, 0, O_ANGLE}, {"max-dist", 1, 0, O_DIST},
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
-        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"unflip", 1, 0, O_UNFLIP}, {"refine", 1, 0, O_REFINE}, {"fit-release", 1, 0, O_FITREL},
+        {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"unflip", 1, 0, O_UNFLIP}, {"refine", 1, 0, O_REFINE}, {"settle", 1, 0, O_SETTLE}, {"fit-release", 1, 0, O_FITREL},
         {"fit-smooth-retry", 1, 0, O_FITSR}, {"coarse", 1, 0, O_COARSE}, {"fine-steps", 1, 0, O_FINESTEPS}, {"rigid-const", 0, 0, O_RIGIDC}, {"passes", 1, 0, O_PASSES},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
@@ -221,6 +232,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case O_UNTANGLE: o->p.untangle = arg_int(optarg, "--untangle"); break;
         case O_UNFLIP: o->p.unflip = arg_int(optarg, "--unflip"); break;
         case O_REFINE: o->refine = arg_int(optarg, "--refine"); break;
+        case O_SETTLE: o->settle = arg_int(optarg, "--settle"); o->settle_given = 1; break;
         case O_FITREL:
             if (!strcmp(optarg, "stay")) o->fit_release = 0;
             else if (!strcmp(optarg, "mean")) o->fit_release = 1;
@@ -321,6 +333,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->p.untangle < 0 || o->p.untangle > 20) usage_error("--untangle must be in 0..20");
     if (o->p.unflip < 0 || o->p.unflip > 20) usage_error("--unflip must be in 0..20");
     if (o->refine < 0 || o->refine > 1000) usage_error("--refine must be in 0..1000");
+    if (o->settle < 0 || o->settle > 100) usage_error("--settle must be in 0..100");
     if (o->p.rigid_iters < 1 || o->p.rigid_iters > 100) usage_error("--rigid-iters must be in 1..100");
     if (!(o->p.coarse >= 0 && o->p.coarse <= 0.5)) usage_error("--coarse must be in [0, 0.5]");
     if (o->p.fine_steps < 0 || o->p.fine_steps > 1000) usage_error("--fine-steps must be in 0..1000");
@@ -328,6 +341,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->passes < 0 || o->passes > 2) usage_error("--passes must be 1, 2 or auto");
     /* --paper is the thesis' method: one pass, unless asked otherwise */
     if (!o->passes_given && o->paper) o->passes = 1;
+    /* --settle: 2 with --chain (build-up, nricp(1)); one pair and --paper: off */
+    if (!o->settle_given) o->settle = o->chain && !o->paper ? 2 : 0;
     if (o->fit_smooth_retry < 0 || o->fit_smooth_retry > 100)
         usage_error("--fit-smooth-retry must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
@@ -572,6 +587,83 @@ static void key_refine(const struct options *o, const struct mesh *S, const stru
          now_seconds() - t0);
 }
 
+/* --settle: the kept key X (#V by 3, in and out; with --chain every key,
+ * after the whole chain) registered once more from itself, and again from
+ * that result, up to o->settle times: no landmarks, the fit's rest shape
+ * the pass's start (so what the chain handed on is not pulled back toward
+ * SOURCE), released vertices kept in
+ * place (and pulled to their neighbours' mean too where that leaves more
+ * than START_FLIPS flipped faces, the lower score kept), then refined as
+ * every key.  A pass's result replaces X only where its score is lower
+ * (Hausdorff distance + START_FLIP_COST per flipped face, as --passes)
+ * with no more flipped faces than X or at most START_FLIPS; the passes
+ * stop early when one does not lower the score of its start.  A
+ * chain key starts one step away and ends where that start's
+ * correspondences let it; started on the target, the schedule and the
+ * refinement reach about what they reach for a neighbouring pair
+ * (nricp(1), --settle).  st: its counters (its frames are not touched). */
+static void key_settle(const struct options *o, const struct mesh *S, const struct mesh *T,
+                       const char *name, const struct steps *st, double *X)
+{
+    double h0, h, hc, hs;
+    int f0, fl, fc, fs;
+    measure(X, S, T, &h0, &f0);
+    /* a key with more than START_FLIPS flipped faces did not register (a
+     * sheet folded on the target): a pass from it lowers the distance by
+     * sliding that sheet along the target, not by fitting it (facecap
+     * chain: closer, but farther from the true places; nricp(1)) */
+    if (f0 > START_FLIPS) {
+        info(1, "%s%snot settled: %d flipped faces", name ? name : "", name ? ": " : "", f0);
+        return;
+    }
+    hs = h0;
+    fs = f0;
+    size_t n3 = (size_t)S->nv * 3;
+    double *Xs = malloc(n3 * sizeof *Xs), *Xc = malloc(n3 * sizeof *Xc), *Xb = malloc(n3 * sizeof *Xb);
+    if (!Xs || !Xc || !Xb) die("out of memory");
+    memcpy(Xs, X, n3 * sizeof *Xs);
+    struct landmarks none = {0};
+    struct steps sst = *st;
+    sst.frames = NULL;         /* --steps-out keeps the kept registration's steps */
+    int nrel = o->fit_release == 2 && o->p.fit > 0 ? 2 : 1;
+    for (int it = 0; it < o->settle; it++) {
+        double t0 = now_seconds(), best = INFINITY;
+        struct options oc = *o;
+        for (int v = 0; v < nrel; v++) {
+            oc.p.fit_release = nrel == 2 ? v : o->fit_release;
+            key_register(&oc, S, Xs, NULL, T, &none, &sst, Xc);
+            measure(Xc, S, T, &hc, &fc);
+            double sc = hc + START_FLIP_COST * fc;
+            if (sc < best) {
+                best = sc;
+                memcpy(Xb, Xc, n3 * sizeof *Xb);
+            }
+            if (fc <= START_FLIPS) break;
+        }
+        if (o->refine > 0) key_refine(o, S, T, name, Xb);
+        measure(Xb, S, T, &h, &fl);
+        /* the score of --passes; more flipped faces than X only up to
+         * START_FLIPS (a chain key's goal) */
+        int keep = h + START_FLIP_COST * fl < h0 + START_FLIP_COST * f0 &&
+                   (fl <= f0 || fl <= START_FLIPS);
+        info(1, "%s%ssettled (pass %d): Hausdorff %.3f%% -> %.3f%% of the diagonal, %d -> %d "
+             "flipped faces, %.2f s%s", name ? name : "", name ? ": " : "", it + 1, 100 * hs, 100 * h, fs, fl, now_seconds() - t0,
+             keep ? ": kept" : "");
+        if (keep) {
+            memcpy(X, Xb, n3 * sizeof *X);
+            h0 = h;
+            f0 = fl;
+        }
+        if (!(h + START_FLIP_COST * fl < hs + START_FLIP_COST * fs)) break;
+        memcpy(Xs, Xb, n3 * sizeof *Xs);
+        hs = h;
+        fs = fl;
+    }
+    free(Xs);
+    free(Xc);
+    free(Xb);
+}
+
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -806,6 +898,10 @@ int main(int argc, char **argv)
       if (o.refine > 0)
           key_refine(&o, &S, &T[k], o.chain ? o.targets[k] : NULL, K + (size_t)(k + 1) * S.nv * 3);
     }
+    /* --settle: after the whole chain (every key started as before), each
+     * key registered again from its own result, kept where closer */
+    for (int k = 0; k < o.ntargets && o.settle > 0; k++)
+        key_settle(&o, &S, &T[k], o.chain ? o.targets[k] : NULL, &st, K + (size_t)(k + 1) * S.nv * 3);
     free(Xp);
     free(X2);
     free(Fp);
