@@ -79,26 +79,24 @@ case_run() {
     run_chain "$n" "  baseline ($BASE_OPTS)" "$BASE_OPTS" "$@"
 }
 
+# anim_case CASE TARBALL NAME KEY...: the chain over an animation's key
+# frames (the first the source, the others remeshed scans with their truth)
+anim_case() {
+    c=$1 tb=$2 nm=$3
+    shift 3
+    [ -e "$tb" ] || { echo "$c: skipped (needs $tb)"; return 0; }
+    anim_keys $c "$tb" $nm "$@" || exit 1
+    src=$T/$c-$1.mesh; shift
+    tr="" tg=""
+    for k in "$@"; do tr="$tr${tr:+,}$T/$c-$k.mesh"; tg="$tg $T/$c-$k-r.mesh"; done
+    case_run $c "$src" "$tr" $tg
+}
+
 for c in $CASES; do
     case $c in
-    elephant|elephant20)
-        tb=$DATA/anim/elephant-walk-457.tar.xz
-        [ -e "$tb" ] || { echo "$c: skipped (needs $tb)"; continue; }
-        if [ $c = elephant ]; then set -- 0000 0040 0080 0120 0160; else set -- 0000 0020 0040 0060 0080; fi
-        anim_keys $c "$tb" elephant "$@" || exit 1
-        src=$T/$c-$1.mesh; shift
-        tr="" tg=""
-        for k in "$@"; do tr="$tr${tr:+,}$T/$c-$k.mesh"; tg="$tg $T/$c-$k-r.mesh"; done
-        case_run $c "$src" "$tr" $tg ;;
-    facecap)
-        tb=$DATA/anim/facecap-335.tar.xz
-        [ -e "$tb" ] || { echo "$c: skipped (needs $tb)"; continue; }
-        set -- 0000 0080 0160 0240 0320
-        anim_keys $c "$tb" facecap "$@" || exit 1
-        src=$T/$c-$1.mesh; shift
-        tr="" tg=""
-        for k in "$@"; do tr="$tr${tr:+,}$T/$c-$k.mesh"; tg="$tg $T/$c-$k-r.mesh"; done
-        case_run $c "$src" "$tr" $tg ;;
+    elephant) anim_case $c "$DATA/anim/elephant-walk-457.tar.xz" elephant 0000 0040 0080 0120 0160 ;;
+    elephant20) anim_case $c "$DATA/anim/elephant-walk-457.tar.xz" elephant 0000 0020 0040 0060 0080 ;;
+    facecap) anim_case $c "$DATA/anim/facecap-335.tar.xz" facecap 0000 0080 0160 0240 0320 ;;
     camel)
         [ -e "$DATA/scans/camel-gallop-05.off" ] || { echo "camel: skipped (needs $DATA/scans)"; continue; }
         for k in 01 02 03 04 05; do
