@@ -154,3 +154,14 @@ every_subset() {
 	done &&
 	echo "$ok $tot $worst"
 }
+
+# stick_pose CHAR K: CHARK.rings (t0587's generated character CHAR, horse
+# or flamingo, pose K traced by img2rings) and CHARlmK (its seven
+# landmarks as vertex indices in outline order, each within 4 pixels)
+stick_pose() {
+	awk -v char=$1 -v pose=$2 -v lm=pts$2 -f "$TEST_DIRECTORY/t0587-stick-character.awk" >$1$2.ppm &&
+	img2rings -1 -s 1 -o $1$2.rings $1$2.ppm &&
+	awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
+	{ b = -1; for (i = 0; i < n; i++) { d = ($2 - x[i]) ^ 2 + ($3 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
+	  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 } print b }' $1$2.rings pts$2 >$1lm$2
+}

@@ -6,13 +6,7 @@ test_description='compat-tri on two generated characters with five given rows: a
 # poses CHAR: CHAR0.rings .. CHAR5.rings and lmK (the seven landmarks as
 # vertex indices, in outline order; each within 4 pixels of its vertex)
 poses() {
-	for k in 0 1 2 3 4 5; do
-		awk -v char=$1 -v pose=$k -v lm=pts$k -f "$TEST_DIRECTORY/t0587-stick-character.awk" >$1$k.ppm &&
-		img2rings -1 -s 1 -o $1$k.rings $1$k.ppm &&
-		awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
-		{ b = -1; for (i = 0; i < n; i++) { d = ($2 - x[i]) ^ 2 + ($3 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
-		  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 } print b }' $1$k.rings pts$k >$1lm$k || return 1
-	done
+	for k in 0 1 2 3 4 5; do stick_pose $1 $k || return 1; done
 }
 # held CHAR A B GIVEN [options]: landmarks numbered in GIVEN given in both
 # poses, the others picked on pose A only; worst arc error (% of B's

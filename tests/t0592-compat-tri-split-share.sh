@@ -3,16 +3,8 @@ test_description='compat-tri --split-share: a refinement that ends below the goa
 . "$(dirname "$0")/test-lib.sh"
 . "$TEST_DIRECTORY/morph2d-lib.sh"
 
-# pose CHAR K: CHARK.rings and CHARlmK (t0587's generator and landmarks)
-pose() {
-	awk -v char=$1 -v pose=$2 -v lm=pts$2 -f "$TEST_DIRECTORY/t0587-stick-character.awk" >$1$2.ppm &&
-	img2rings -1 -s 1 -o $1$2.rings $1$2.ppm &&
-	awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
-	{ b = -1; for (i = 0; i < n; i++) { d = ($2 - x[i]) ^ 2 + ($3 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
-	  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 } print b }' $1$2.rings pts$2 >$1lm$2
-}
 test_expect_success 'generate: horse poses 2 3' '
-	pose horse 2 && pose horse 3 &&
+	stick_pose horse 2 && stick_pose horse 3 &&
 	paste -d" " horselm2 horselm3 | sed -n "1p;3p;5p;6p;7p" >c
 '
 # measured (compat-tri(1), REFINEMENT): 10.35 deg with one pass splitting

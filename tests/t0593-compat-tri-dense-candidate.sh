@@ -3,17 +3,9 @@ test_description='compat-tri: when the default ends below the goal, the matching
 . "$(dirname "$0")/test-lib.sh"
 . "$TEST_DIRECTORY/morph2d-lib.sh"
 
-# pose CHAR K: CHARK.rings and CHARlmK (t0587's generator and landmarks)
-pose() {
-	awk -v char=$1 -v pose=$2 -v lm=pts$2 -f "$TEST_DIRECTORY/t0587-stick-character.awk" >$1$2.ppm &&
-	img2rings -1 -s 1 -o $1$2.rings $1$2.ppm &&
-	awk 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
-	{ b = -1; for (i = 0; i < n; i++) { d = ($2 - x[i]) ^ 2 + ($3 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
-	  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 } print b }' $1$2.rings pts$2 >$1lm$2
-}
 test_expect_success 'generate: horse poses 0 1 2, flamingo poses 2 3' '
-	pose horse 0 && pose horse 1 && pose horse 2 &&
-	pose flamingo 2 && pose flamingo 3
+	stick_pose horse 0 && stick_pose horse 1 && stick_pose horse 2 &&
+	stick_pose flamingo 2 && stick_pose flamingo 3
 '
 # measured (compat-tri(1), MATCHING): horse 0 1 2 9.90 deg before (the
 # matched points 9.90, the rows alone below), 13.41 after (the matching with
