@@ -34,6 +34,7 @@ void arap_ring_rotations(const struct topology *t, const double *R, const double
 
 void arap_fit_defaults(struct arap_fit_params *p)
 {
+    *p = (struct arap_fit_params){0};   /* every field set, the ones not named below 0 */
     p->iters = 30;
     p->inner = 1;
     p->mu_min = 0.1;

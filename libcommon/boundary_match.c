@@ -9,6 +9,7 @@
 
 void bmatch_defaults(struct bmatch_params *prm)
 {
+    *prm = (struct bmatch_params){0};   /* every field set, the ones not named below 0 */
     prm->mode = BMATCH_MULTISCALE;
     prm->samples = 256;
     prm->bend = 0.03;

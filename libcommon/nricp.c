@@ -18,6 +18,7 @@
 
 void nricp_defaults(struct nricp_params *p)
 {
+    *p = (struct nricp_params){0};   /* every field set, the ones not named below 0 */
     p->steps = 6;
     p->alpha_max = 50;
     p->alpha_min = 0.5;

@@ -9,6 +9,7 @@
 
 void nricp_untangle_defaults(struct nricp_untangle_params *p)
 {
+    *p = (struct nricp_untangle_params){0};   /* every field set, the ones not named below 0 */
     p->rings = 1;
     p->iters = 60;
     p->check = 5;

@@ -10,6 +10,7 @@
 
 void patch_unflip_defaults(struct patch_unflip_params *p)
 {
+    *p = (struct patch_unflip_params){0};   /* every field set, the ones not named below 0 */
     p->rings = 2;
     p->rounds = 1;
     p->iters = 30;

@@ -13,6 +13,7 @@
 
 void sample_fit_defaults(struct sample_fit_params *p)
 {
+    *p = (struct sample_fit_params){0};   /* every field set, min_dot 0 among them */
     p->iters = 12;
     p->mu = 30;
     p->cover = 1;

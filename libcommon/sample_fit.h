@@ -49,7 +49,7 @@ struct sample_fit_params {
     double gain;      /* reweighting: w = 1 + gain (d / H)^power (default 30) */
     double power;     /* (default 4) */
     double memory;    /* the reweighting's running mean: each iteration keeps this share
-                         of a sample's earlier (d / H)^power (default 0.5) */
+                         of a sample's earlier (d / H)^power (default 0.8) */
     double min_dot;   /* a sample whose normal and the other surface's normal there have a
                          lower dot product is left out (default 0) */
     double plane;     /* fraction of the tangential offset kept (default 0.9) */

@@ -8,6 +8,7 @@
 
 void stiffness_defaults(struct stiffness_params *p)
 {
+    *p = (struct stiffness_params){0};   /* every field set, the ones not named below 0 */
     p->kmin = 1; p->kmax = 100; p->gamma = 0.5; p->q = 2; p->radius = 0.1;
     p->weight = STIFF_IDW; p->spread = STIFF_RADIAL; p->geodesic = 0;
 }

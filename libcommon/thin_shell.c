@@ -29,6 +29,7 @@ struct thin_shell {
 
 void thin_shell_defaults(struct thin_shell_params *p)
 {
+    *p = (struct thin_shell_params){0};   /* every field set, the ones not named below 0 */
     p->ks = 1; p->kb = 1; p->kv = 0.1; p->kvg = 10; p->lambda = 100; p->damping = 1e-6;
 }
 
