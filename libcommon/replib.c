@@ -553,7 +553,7 @@ static void kept_row(void *ctx, int a)
     size_t m3 = D->m3;
     double q = D->xstep, iq = q > 0 ? 1 / q : 0;
 #define BASE(g) (D->xbase ? D->xbase + (size_t)((g) / REPLIB_KEEP_CHUNK) * m3 : D->ref)
-#define DONE(g) do { if (j->last[g] == a) mapped_release((const void *)D->Xm[g], (const void *)(D->Xm[g] + m3)); } while (0)
+#define DONE(g) do { if (!D->Xm_keep && j->last[g] == a) mapped_release((const void *)D->Xm[g], (const void *)(D->Xm[g] + m3)); } while (0)
     int g = s->src[a], p = j->row[a];
     if (g >= 0) {
         kept_axpy(j->R + (size_t)a * m3, 0, BASE(g), D->ref, NULL, D->Xm[g], NULL, q, iq, m3, 0);
@@ -2375,6 +2375,7 @@ struct eval_job {
     const float *Xf;
     const int32_t *Xi;
     const mapped_double *const *Xm;
+    int keep;                           /* Xm's pages stay mapped once read */
     double q;
     int n, nv, oom;
     const int *l;
@@ -2426,7 +2427,7 @@ static void eval_half(void *ctx, int job)
 #define KEPT(f, out) kept_frame(xbase ? xbase + (size_t)((f) / REPLIB_KEEP_CHUNK) * m3 : ref, \
                                 Xi ? Xi + (size_t)(f) * m3 : NULL, Xm ? Xm[f] : NULL, \
                                 Xi || Xm ? NULL : Xf + (size_t)(f) * m3, q, m3, out)
-#define RELEASE(f) do { if (Xm) mapped_release((const void *)Xm[f], (const void *)(Xm[f] + m3)); } while (0)
+#define RELEASE(f) do { if (Xm && !j->keep) mapped_release((const void *)Xm[f], (const void *)(Xm[f] + m3)); } while (0)
     if (!X) {
         xb = malloc(sizeof(double) * 2 * m3);
         if (!xb) { j->oom = 1; return; }
@@ -2475,13 +2476,13 @@ static void eval_half(void *ctx, int job)
     free(xb);
 }
 
-static void evaluate(const double *X, const float *Xf, const int32_t *Xi, const mapped_double *const *Xm, double q,
+static void evaluate(const double *X, const float *Xf, const int32_t *Xi, const mapped_double *const *Xm, int keep, double q,
                      const double *xbase, const double *ref, int n, int nv, const double *R,
                      const int *l, const double *w, const unsigned char *cut, double lambda,
                      struct replib_report *rep, double *frame_err)
 {
     struct eval_job j = {0};
-    j.X = X; j.xbase = xbase; j.ref = ref; j.R = R; j.w = w; j.Xf = Xf; j.Xi = Xi; j.Xm = Xm; j.q = q;
+    j.X = X; j.xbase = xbase; j.ref = ref; j.R = R; j.w = w; j.Xf = Xf; j.Xi = Xi; j.Xm = Xm; j.keep = keep; j.q = q;
     j.n = n; j.nv = nv; j.l = l; j.cut = cut; j.frame_err = frame_err;
     parallel_run(2, 2, eval_half, &j);
     if (j.oom) { memset(rep, 0, sizeof *rep); rep->energy = NAN; return; }
@@ -2502,7 +2503,7 @@ void replib_evaluate(const double *X, int n, int nv, const double *R, int d, con
                      struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(X, NULL, NULL, NULL, 0, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(X, NULL, NULL, NULL, 0, 0, NULL, NULL, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }
 
 void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
@@ -2510,7 +2511,7 @@ void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, 
                        struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(NULL, Xf, NULL, NULL, 0, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(NULL, Xf, NULL, NULL, 0, 0, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }
 
 void replib_evaluate_i(const int32_t *Xi, double q, const double *xbase, const double *ref, int n, int nv, const double *R, int d,
@@ -2518,13 +2519,13 @@ void replib_evaluate_i(const int32_t *Xi, double q, const double *xbase, const d
                        struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(NULL, NULL, Xi, NULL, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(NULL, NULL, Xi, NULL, 0, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }
 
-void replib_evaluate_m(const mapped_double *const *Xm, double q, const double *xbase, const double *ref, int n, int nv,
-                       const double *R, int d, const int *l, const double *w, const unsigned char *cut, double lambda,
-                       struct replib_report *rep, double *frame_err)
+void replib_evaluate_m(const mapped_double *const *Xm, int keep, double q, const double *xbase, const double *ref,
+                       int n, int nv, const double *R, int d, const int *l, const double *w, const unsigned char *cut,
+                       double lambda, struct replib_report *rep, double *frame_err)
 {
     (void)d;
-    evaluate(NULL, NULL, NULL, Xm, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
+    evaluate(NULL, NULL, NULL, Xm, keep, q, xbase, ref, n, nv, R, l, w, cut, lambda, rep, frame_err);
 }

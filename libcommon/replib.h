@@ -86,6 +86,9 @@ struct replib_data {
     const mapped_double *const *Xm;   /* n frames where they lie in a file mapping, read as the
                                    integers Xi would hold: x_f = b + round((x - b) / xstep) xstep
                                    (every value checked on that grid), or NULL: */
+    int Xm_keep;                /* 1: Xm's pages stay mapped once read (the file is small enough
+                                   to stay mapped whole between the passes); 0: each frame's
+                                   pages are released after its last read (mapped_release) */
     const float *Xf;            /* n by 3#V: x_f - ref in single precision, or NULL: */
     const double *V;            /* 3#V by zdim orthonormal basis, z ~ Zr V^T */
     const double *ref;          /* 3#V reference frame */
@@ -241,10 +244,11 @@ void replib_evaluate_f(const float *Xf, const double *xbase, const double *ref, 
                        const int *l, const double *w, const unsigned char *cut, double lambda,
                        struct replib_report *rep, double *frame_err);
 /* The same with the frames where they lie (Xm: n frame pointers), read as
- * replib_data.Xm says (q: their step, xbase: the bases, ref: 3#V). */
-void replib_evaluate_m(const mapped_double *const *Xm, double q, const double *xbase, const double *ref, int n, int nv,
-                       const double *R, int d, const int *l, const double *w, const unsigned char *cut, double lambda,
-                       struct replib_report *rep, double *frame_err);
+ * replib_data.Xm says (q: their step, xbase: the bases, ref: 3#V); keep:
+ * as replib_data.Xm_keep (0: each frame's pages are released once read). */
+void replib_evaluate_m(const mapped_double *const *Xm, int keep, double q, const double *xbase, const double *ref,
+                       int n, int nv, const double *R, int d, const int *l, const double *w, const unsigned char *cut,
+                       double lambda, struct replib_report *rep, double *frame_err);
 
 #ifdef __cplusplus
 }

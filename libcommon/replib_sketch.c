@@ -863,6 +863,7 @@ int replib_sketch_finish(struct replib_sketch *S, struct replib_data *D)
     memset(D, 0, sizeof *D);
     D->n = D->N = n; D->nv = S->nv; D->m3 = m3; D->X = NULL;
     D->Xm = S->keeping && S->decode ? S->xp : NULL;
+    D->Xm_keep = !S->release;
     D->Xf = S->keeping && !S->decode && !S->fixed ? (const float *)S->Xk : NULL;
     D->Xi = S->keeping && !S->decode && S->fixed ? (const int32_t *)S->Xk : NULL;
     D->xstep = S->xstep; D->step = S->xstep; D->xbase = S->keeping ? S->xbase : NULL;

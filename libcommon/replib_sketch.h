@@ -77,7 +77,9 @@ struct replib_sketch {
     int xref;                   /* 1: frames were added by reference */
     int release;                /* 1 (set by the caller): the referenced frames lie in a read-only
                                    private file mapping; their pages are released once read
-                                   (mapped_release) and fault in again when a pass needs them */
+                                   (mapped_release) and fault in again when a pass needs them;
+                                   0: they stay mapped, in this pass and (replib_data.Xm_keep)
+                                   in the pieces' and the report's */
     int decode;                 /* 1 (set by the caller, with replib_sketch_add_ref):
                                    the referenced frames stay mapped until the pieces are built, so
                                    they are not copied into Xk: the helper only computes the bases
