@@ -545,6 +545,12 @@ struct kept_rows {
                                                (k order); last[g]: the last piece that reads frame g */
 };
 
+static int int_cmp(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
 static void kept_row(void *ctx, int a)
 {
     const struct kept_rows *j = ctx;
@@ -553,21 +559,34 @@ static void kept_row(void *ctx, int a)
     size_t m3 = D->m3;
     double q = D->xstep, iq = q > 0 ? 1 / q : 0;
 #define BASE(g) (D->xbase ? D->xbase + (size_t)((g) / REPLIB_KEEP_CHUNK) * m3 : D->ref)
-#define DONE(g) do { if (!D->Xm_keep && j->last[g] == a) mapped_release((const void *)D->Xm[g], (const void *)(D->Xm[g] + m3)); } while (0)
     int g = s->src[a], p = j->row[a];
-    if (g >= 0) {
-        kept_axpy(j->R + (size_t)a * m3, 0, BASE(g), D->ref, NULL, D->Xm[g], NULL, q, iq, m3, 0);
-        DONE(g);
-    }
-    if (p < 0) return;
-    for (int e = j->start[p]; e < j->start[p + 1]; e++) {
-        int k = j->ent[e];
-        g = s->ci[k];
-        kept_axpy(j->tmp + (size_t)p * m3, s->v[k], BASE(g), D->ref, NULL, D->Xm[g], NULL, q, iq, m3, 1);
-    }
-    for (int e = j->start[p]; e < j->start[p + 1]; e++) DONE(s->ci[j->ent[e]]);
+    if (g >= 0) kept_axpy(j->R + (size_t)a * m3, 0, BASE(g), D->ref, NULL, D->Xm[g], NULL, q, iq, m3, 0);
+    if (p >= 0)
+        for (int e = j->start[p]; e < j->start[p + 1]; e++) {
+            int k = j->ent[e];
+            g = s->ci[k];
+            kept_axpy(j->tmp + (size_t)p * m3, s->v[k], BASE(g), D->ref, NULL, D->Xm[g], NULL, q, iq, m3, 1);
+        }
 #undef BASE
-#undef DONE
+    if (D->Xm_keep) return;
+    /* the frames this piece reads last: their pages go, each run of
+     * consecutive frames in one call (one TLB flush, not one per frame) */
+    int nr = p >= 0 ? j->start[p + 1] - j->start[p] : 0, nd = 0;
+    int *done = malloc(sizeof(int) * (size_t)(nr + 1));
+    if (!done) return;              /* the pages stay: only the resident set is larger */
+    if (s->src[a] >= 0 && j->last[s->src[a]] == a) done[nd++] = s->src[a];
+    for (int e = 0; e < nr; e++) {
+        g = s->ci[j->ent[j->start[p] + e]];
+        if (j->last[g] == a) done[nd++] = g;
+    }
+    qsort(done, nd, sizeof(int), int_cmp);
+    for (int i = 0; i < nd;) {
+        int e = i;
+        while (e + 1 < nd && done[e + 1] <= done[e] + 1) e++;
+        mapped_release((const void *)D->Xm[done[i]], (const void *)(D->Xm[done[e]] + m3));
+        i = e + 1;
+    }
+    free(done);
 }
 
 /* kept_row's jobs over every piece; tmp: nf by 3#V zeros.  Returns 0 or -1
@@ -2427,7 +2446,11 @@ static void eval_half(void *ctx, int job)
 #define KEPT(f, out) kept_frame(xbase ? xbase + (size_t)((f) / REPLIB_KEEP_CHUNK) * m3 : ref, \
                                 Xi ? Xi + (size_t)(f) * m3 : NULL, Xm ? Xm[f] : NULL, \
                                 Xi || Xm ? NULL : Xf + (size_t)(f) * m3, q, m3, out)
-#define RELEASE(f) do { if (Xm && !j->keep) mapped_release((const void *)Xm[f], (const void *)(Xm[f] + m3)); } while (0)
+    /* read where they lie: their pages go, 32 frames at a time (one call,
+     * one TLB flush, instead of one per frame) */
+    int rel = f0;
+#define RELEASE(f) do { if (Xm && !j->keep && ((f) + 1 - rel == 32 || (f) + 1 == f1)) { \
+        mapped_release((const void *)Xm[rel], (const void *)(Xm[f] + m3)); rel = (f) + 1; } } while (0)
     if (!X) {
         xb = malloc(sizeof(double) * 2 * m3);
         if (!xb) { j->oom = 1; return; }
@@ -2463,7 +2486,7 @@ static void eval_half(void *ctx, int job)
             }
             nvel++;
         }
-        RELEASE(f);                 /* read where it lies: its pages go */
+        RELEASE(f);
         if (xb) {
             /* frame f + 1 is in xnext: the two swap roles (a cut: read it now) */
             double *t = xcur; xcur = xnext; xnext = t;
