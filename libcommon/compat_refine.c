@@ -6,6 +6,7 @@
 #include "arap_deform2d.h"
 #include "rings.h"
 #include "parallel.h"
+#include "maxmin_polish.h"
 #include <math.h>
 #include <stdlib.h>
 #include <limits.h>
@@ -1502,6 +1503,38 @@ fail:
     return NULL;
 }
 
+/* the global max-min polish (maxmin_polish) of every pose whose smallest
+ * angle is below the goal, the poses on the threads (their positions are
+ * independent) */
+struct gpolish { struct compat *c; const unsigned char *bnd; const int *seg; double goal; int *rc; };
+
+static void gpolish_job(void *ctx, int s)
+{
+    struct gpolish *gp = ctx;
+    struct compat *c = gp->c;
+    double mn;
+    compat_pose_quality(c, s, &mn, NULL, NULL);
+    if (mn >= gp->goal) return;
+    struct maxmin_params mp;
+    maxmin_defaults(&mp);
+    gp->rc[s] = maxmin_polish(c->X[s], c->nv, c->F, c->nf, gp->bnd, gp->seg, &mp, NULL, NULL);
+}
+
+/* returns the number of poses moved, -1 on error */
+static int global_polish(struct compat *c, const unsigned char *bnd, const int *seg, double goal, int threads)
+{
+    int *rc = calloc(c->N, sizeof *rc), n = 0;
+    if (!rc) return cm_seterr("out of memory");
+    struct gpolish gp = {.c = c, .bnd = bnd, .seg = seg, .goal = goal, .rc = rc};
+    parallel_run(c->N, threads, gpolish_job, &gp);
+    for (int s = 0; s < c->N; s++) {
+        if (rc[s] < 0) n = -1;
+        if (n >= 0) n += rc[s];
+    }
+    free(rc);
+    return n;
+}
+
 /* The final polish: with remeshing, edge collapses that keep every good
  * triangle good and make no triangle worse first.  Four sweeps, then
  * (remeshing, still below the goal) more while each raises the worst
@@ -1770,6 +1803,30 @@ int compat_refine_finish(struct compat_refiner *r)
             st->rounds = rounds; st->splits = splits; st->bsplits = bsplits; st->flips = flips;
             st->moves = moves; st->collapses = collapses; st->coarsened = coarsened;
             st->rerun = 2;
+        }
+    }
+    /* below the goal: the global max-min polish of the poses, and flips,
+     * while that raises the worst angle (it only moves vertices where a
+     * pose's smallest angle rises, and flips only raise the worst angle,
+     * so the result is never worse than the mesh it starts from) */
+    if (r->remesh) {
+        int wf, ws, nb;
+        double wk = worst_ratio(w, goal, &wf, &ws, &nb);
+        if (wk < 0) goto out;
+        if (wk < 1) st->gpolish[0] = st->gpolish[1] = compat_min_angle(c, NULL);
+        for (int it = 0; it < COMPAT_REFINE_GPOLISH && wk < 1; it++) {
+            int g = global_polish(c, w->bnd, w->seg, goal, pa->threads);
+            if (g < 0) goto out;
+            if (!g) break;
+            st->gpolish[1] = compat_min_angle(c, NULL);
+            int f0 = st->flips;
+            if (flips_until_done(c, &st->flips) < 0) goto out;
+            if (st->flips == f0) break;
+            double wn = worst_ratio(w, goal, &wf, &ws, &nb);
+            if (wn < 0) goto out;
+            st->gpolish[1] = compat_min_angle(c, NULL);
+            if (wn < wk + COMPAT_REFINE_GAIN / goal) break;
+            wk = wn;
         }
     }
     /* where the worst triangle is and how stretched the maps are there */

@@ -91,6 +91,9 @@ struct compat_refine_stats {
     int worst_shape;   /* where the result's worst triangle is (measured
                           against what its corner allows): the shape, */
     double worst_at[2];/* its centroid in that shape, and */
+    double gpolish[2]; /* below the goal: the worst angle (radians) before
+                          and after the global max-min polish of the result
+                          (maxmin_polish.h) and its flips; 0 0 at the goal */
     double stretch;    /* the largest ratio of singular values of the
                           affine maps between the shapes on it (1: similar
                           copies; a triangle whose map is stretched k times
@@ -117,6 +120,7 @@ enum {
 #define COMPAT_REFINE_CYCLES 1
 #define COMPAT_REFINE_GAIN (0.05 * M_PI / 180)   /* radians */
 #define COMPAT_REFINE_POLISH_MAX 64   /* final polish sweeps at most */
+#define COMPAT_REFINE_GPOLISH 4   /* global max-min polishes (each then flips) at most */
 
 struct compat_refine_params {
     double goal;       /* target smallest angle, radians (e.g. 20 degrees) */

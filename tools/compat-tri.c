@@ -577,7 +577,7 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
          rs->rounds, rs->splits, rs->bsplits, rs->collapses, rs->coarsened, rs->flips, rs->moves, q0 * 180 / M_PI, q1,
          rs->kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI, elapsed());
     if (rs->stop != COMPAT_REFINE_GOAL && !rs->kept_input) {
-        char why[480];
+        char why[560];
         if (rs->cycles > 0) {   /* a stall answered by the final polish and more rounds */
             char again[96];
             if (rs->stop == COMPAT_REFINE_STALLED) snprintf(again, sizeof again, "stalled again");
@@ -600,6 +600,11 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
             snprintf(why + n, sizeof why - n, rs->rerun == 1 ? " in the second pass (from the start, --split-share %g), kept"
                                                             : " in the first pass, kept (the second, --split-share %g, was not better)",
                      pa->split_share);
+        }
+        if (rs->gpolish[1] > rs->gpolish[0]) {   /* the global max-min polish of the result */
+            size_t n = strlen(why);
+            snprintf(why + n, sizeof why - n, "; the global max-min polish raised the worst angle from %.2f deg",
+                     rs->gpolish[0] * 180 / M_PI);
         }
         info(1, "%s%srefinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
                 "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", who, sep, o->min_angle, why, q1, rs->stretch,
