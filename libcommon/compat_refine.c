@@ -1849,7 +1849,8 @@ int compat_refine_finish(struct compat_refiner *r)
     if (!(minarea > 0) || q1 < r->q0) {
         snap_restore(c, &r->snap);
         st->kept_input = 1;
-    }
+    } else if (r->wcur >= 1)
+        st->stop = COMPAT_REFINE_GOAL;   /* the final or the global polish reached it */
     rc = 0;
 out:
     refiner_free(r);
