@@ -86,11 +86,26 @@ int arap_fit(const double *R0, const int *F, int nv, int nf,
     unsigned char *uok = malloc((size_t)nv + 1), *tok = malloc((size_t)nvt + 1);
     unsigned char *loose = calloc((size_t)nv + 1, 1), *loose2 = malloc((size_t)nv + 1);
     double *NR = malloc(((size_t)nf * 3 + 1) * sizeof *NR), *NP = malloc(((size_t)nf * 3 + 1) * sizeof *NP);
+    double *DS = malloc(((size_t)nv + 1) * sizeof *DS);
     if (topology_build(F, nf, nv, &ts) < 0 || topology_build(FT, nft, nvt, &tt) < 0) goto done;
     for (int i = 0; i < nv; i++) iso[i] = ts.VFs[i + 1] == ts.VFs[i];
     /* the rest shape, smoothed: p_i <- (p_i + mean of its neighbours) / 2 */
     memcpy(R, R0, (size_t)nv * 3 * sizeof *R);
-    if (umbrella_smooth(&ts, NULL, 0.5, p->rest_smooth, R) < 0) goto done;
+    if (!p->rest_keep) {
+        if (umbrella_smooth(&ts, NULL, 0.5, p->rest_smooth, R) < 0) goto done;
+    } else if (p->rest_smooth > 0) {
+        /* rims kept, and every sweep inflated back (Taubin): the parts keep their size */
+        unsigned char *inner = malloc((size_t)nv + 1);
+        if (!inner) { cm_seterr("out of memory"); goto done; }
+        memset(inner, 1, (size_t)nv);
+        for (int e = 0; e < ts.ne; e++)
+            if (ts.EFn[e] == 1) inner[ts.E[2 * e]] = inner[ts.E[2 * e + 1]] = 0;
+        int bad = 0;
+        for (int s = 0; s < p->rest_smooth && !bad; s++)
+            bad = umbrella_smooth(&ts, inner, 0.5, 1, R) < 0 || umbrella_smooth(&ts, inner, -0.53, 1, R) < 0;
+        free(inner);
+        if (bad) goto done;
+    }
     vertex_normals(VT, FT, nvt, nft, NT);
     face_normals(R, F, nf, NR);
     double cosmax = cos(p->max_angle * M_PI / 180);
@@ -144,8 +159,16 @@ int arap_fit(const double *R0, const int *F, int nv, int nf,
             correspond(TS, F, NS, &ts, VT, NT, nvt, cosmax, p->max_dist, p->search, k > 0, TC, TF, TB, tok);
             closest_point_tree_free(TS);
             double wb = p->backward * (double)nv / nvt;
+            double tau = 0;
+            if (p->overlay > 0) {
+                for (int i = 0; i < nv; i++) DS[i] = dist3(P + 3 * i, U + 3 * i);
+                tau = correspond_overlay_scale(P, U, uok, nv, ARAP_FIT_OVERLAY_TAU);
+            }
             for (int j = 0; j < nvt; j++) {
                 if (!tok[j] || tt.VFs[j + 1] == tt.VFs[j]) continue;
+                if (correspond_overlay(F, TF[j], TB + 3 * j, DS, dist3(VT + 3 * j, TC + 3 * j),
+                                       p->overlay, tau))
+                    continue;
                 for (int a = 0; a < 3; a++) {
                     int v = F[3 * TF[j] + a];
                     double w = wb * TB[3 * j + a];
@@ -223,6 +246,6 @@ done:
     topology_free(&tt);
     free(Rot); free(R); free(NS); free(NT); free(U); free(UB); free(TC); free(TB); free(G); free(Gw);
     free(rhs); free(UF); free(TF); free(iso); free(uok); free(tok); free(loose); free(loose2);
-    free(NR); free(NP);
+    free(NR); free(NP); free(DS);
     return rc;
 }

@@ -67,7 +67,18 @@ struct arap_fit_params {
                            skin folded off the target is ironed flat instead of held where
                            it is, but a folded thin tip may be pulled in (nricp
                            --fit-release tries both) */
+    double overlay;     /* > 0: a target vertex pulls no corner when it lies over mesh that
+                           already fits (correspond_overlay with this ratio, tau OVERLAY_TAU
+                           RMS distances of the mesh's pairs; nricp sets it for a source
+                           with parts; default 0: off) */
+    int rest_keep;      /* 1: the rest smoothing moves no boundary vertex (an open rim
+                           would shrink along the surface) and each sweep is followed by an
+                           inflating one (Taubin's lambda|mu, -0.53): small parts (teeth,
+                           eyes) keep their size (default 0) */
 };
+
+/* the overlay test's tau, in RMS distances of the mesh's pairs (nricp.h's OVERLAY_TAU) */
+#define ARAP_FIT_OVERLAY_TAU 3
 
 void arap_fit_defaults(struct arap_fit_params *p);
 

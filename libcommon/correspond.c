@@ -3,6 +3,7 @@
 #include "geometry.h"
 #include <math.h>
 #include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
 
 void correspond_normal(const double *N, const int *F, int f, const double *b, double n[3])
@@ -60,4 +61,36 @@ int correspond(const struct closest_point_tree *T, const int *F, const double *N
         if (ok) ok[i] = (unsigned char)!bad;
     }
     return rejected;
+}
+
+int correspond_overlay(const int *F, int f, const double *b, const double *d, double dist,
+                       double ratio, double tau)
+{
+    if (!(ratio > 0) || !(dist > tau)) return 0;
+    double dc = b[0] * d[F[3 * f]] + b[1] * d[F[3 * f + 1]] + b[2] * d[F[3 * f + 2]];
+    return dc < ratio * dist;
+}
+
+double correspond_overlay_scale(const double *Q, const double *C, const unsigned char *ok, int n,
+                                double factor)
+{
+    double s = 0;
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        if (ok && !ok[i]) continue;
+        double e = dist3(Q + 3 * i, C + 3 * i);
+        s += e * e;
+        m++;
+    }
+    return m ? factor * sqrt(s / m) : 0;
+}
+
+int correspond_parts(const struct topology *t, const int *F)
+{
+    if (t->nboundary > 0) return 1;
+    int *c = malloc(((size_t)t->nf + 1) * sizeof *c);
+    if (!c) return 1;
+    int n = connected_components(t, F, c);
+    free(c);
+    return n > 1;
 }

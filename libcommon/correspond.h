@@ -37,6 +37,34 @@ void correspond_normal(const double *N, const int *F, int f, const double *b, do
  * surface (on an edge with one face)? */
 int correspond_on_boundary(const struct topology *t, int f, const double *b);
 
+/* Target surface over a part of the source that already fits: a face
+ * scan's holes closed by mesh-clean (a cap across the mouth, or across a
+ * part's opening, lying over the skin) or another part's surface (a lid
+ * over an eye).  The backward pair (target point t, its closest point c of
+ * the source) is such an overlay when the source's own distance to the
+ * target at c is below ratio |t - c| while |t - c| exceeds tau: the source
+ * there has a nearer partner, t has none in the source.  Where the source
+ * is one closed surface every target point must be covered by it, so the
+ * registrations test this only for sources with parts (correspond_parts).
+ *
+ * correspond_overlay: F the source's faces, f and b c's face and
+ * barycentrics, d (#V) every source vertex's distance to the target, dist
+ * |t - c|.  Returns 1 for an overlay. */
+int correspond_overlay(const int *F, int f, const double *b, const double *d, double dist,
+                       double ratio, double tau);
+
+/* tau of correspond_overlay: factor times the RMS of |Q_i - C_i| over the
+ * pairs with ok[i] (all when ok is NULL); n pairs. */
+double correspond_overlay_scale(const double *Q, const double *C, const unsigned char *ok, int n,
+                                double factor);
+
+/* Does a mesh have parts: an open boundary (holes: a face mask's mouth and
+ * eyes) or several connected components (eyes, teeth beside the skin)?
+ * The registrations' precautions for such sources (correspond_overlay,
+ * arap_fit's rest_keep) apply only then: a closed single surface (the
+ * camel) registers as before. */
+int correspond_parts(const struct topology *t, const int *F);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,6 +1,7 @@
 /* mesh_distance.c -- see mesh_distance.h */
 #include "mesh_distance.h"
 #include "cm_error.h"
+#include "correspond.h"
 #include "geometry.h"
 #include "topology.h"
 #include <math.h>
@@ -51,6 +52,50 @@ int symmetric_distance(const double *VA, int nva, const int *FA, int nfa,
     *hausdorff = ab.max > ba.max ? ab.max : ba.max;
     *rms = sqrt((ab.sumsq + ba.sumsq) / (ab.n + ba.n));
     return 0;
+}
+
+int overlay_distance(const double *VA, int nva, const int *FA, int nfa,
+                     const struct closest_point_tree *TA,
+                     const double *VB, int nvb, const int *FB, int nfb,
+                     const struct closest_point_tree *TB, double ratio, double tau_factor,
+                     double *hausdorff, int *left_out)
+{
+    struct topology ta, tb;
+    if (topology_build(FA, nfa, nva, &ta) < 0) return -1;
+    if (topology_build(FB, nfb, nvb, &tb) < 0) { topology_free(&ta); return -1; }
+    int na = nva + nfa + ta.ne, nb = nvb + nfb + tb.ne, rc = -1;
+    double *PA = malloc((size_t)na * 3 * sizeof *PA + 1), *DA = malloc((size_t)na * sizeof *DA + 1);
+    double *PB = malloc((size_t)nb * 3 * sizeof *PB + 1), *DB = malloc((size_t)nb * sizeof *DB + 1);
+    double *BB = malloc((size_t)nb * 3 * sizeof *BB + 1);
+    int *IB = malloc((size_t)nb * sizeof *IB + 1);
+    if (!PA || !DA || !PB || !DB || !BB || !IB) { cm_seterr("out of memory"); goto done; }
+    samples(VA, nva, FA, nfa, &ta, PA);
+    samples(VB, nvb, FB, nfb, &tb, PB);
+    closest_points(TB, PA, na, NULL, NULL, NULL, DA);
+    closest_points(TA, PB, nb, NULL, IB, BB, DB);
+    double h = 0, s2 = 0;
+    for (int i = 0; i < na; i++) {
+        if (DA[i] > h) h = DA[i];
+        s2 += DA[i] * DA[i];
+    }
+    double tau = tau_factor * sqrt(s2 / (na ? na : 1));
+    int out = 0;
+    for (int i = 0; i < nb; i++) {
+        /* DA's first nva entries: A's vertices' distances to B */
+        if (ratio > 0 && correspond_overlay(FA, IB[i], BB + 3 * i, DA, DB[i], ratio, tau)) {
+            out++;
+            continue;
+        }
+        if (DB[i] > h) h = DB[i];
+    }
+    *hausdorff = h;
+    if (left_out) *left_out = out;
+    rc = 0;
+done:
+    topology_free(&ta);
+    topology_free(&tb);
+    free(PA); free(DA); free(PB); free(DB); free(BB); free(IB);
+    return rc;
 }
 
 int flipped_faces(const double *VA, const int *FA, int nfa, const double *VB, int nvb,

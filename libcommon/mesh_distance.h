@@ -32,6 +32,21 @@ int symmetric_distance(const double *VA, int nva, const int *FA, int nfa,
                        const double *VB, int nvb, const int *FB, int nfb,
                        const struct closest_point_tree *TB, double *hausdorff, double *rms);
 
+/* As symmetric_distance()'s Hausdorff distance, with the samples of B
+ * that lie over A where A already fits left out (correspond_overlay(): a
+ * sample t of B whose closest point c of A has A's own distance to B,
+ * interpolated from A's vertices, below ratio |t - c|, while |t - c| is
+ * more than tau_factor times the RMS distance of A's samples): surface of
+ * a scan that the registered mesh A has no part for (a cap that mesh-clean
+ * laid across a hole of a face mask).  ratio <= 0: nothing left out.
+ * left_out (may be NULL): how many samples of B were.  Returns 0, -1 on
+ * error. */
+int overlay_distance(const double *VA, int nva, const int *FA, int nfa,
+                     const struct closest_point_tree *TA,
+                     const double *VB, int nvb, const int *FB, int nfb,
+                     const struct closest_point_tree *TB, double ratio, double tau_factor,
+                     double *hausdorff, int *left_out);
+
 /* Faces of A that point against B: the normal of a face of A points
  * against the whole normal cone of B at the point closest to the face's
  * centroid, i.e. has a negative dot product with B's face normal there

@@ -9,6 +9,7 @@
 #include "mesh_clean.h"
 #include "nricp_untangle.h"
 #include "patch_unflip.h"
+#include "procrustes.h"
 #include "spd.h"
 #include "topology.h"
 #include <stdio.h>
@@ -42,6 +43,89 @@ void nricp_defaults(struct nricp_params *p)
     p->coarse = 0;
     p->fine_steps = 2;
     p->rigid_const = 0;
+    p->parts = -1;
+    p->overlay = 0.5;
+    p->small_parts = 0.1;
+}
+
+int nricp_small_parts(const double *R, const int *F, int nv, int nf, double frac, double *P)
+{
+    struct topology t;
+    if (topology_build(F, nf, nv, &t) < 0) return -1;
+    int *cf = malloc(((size_t)nf + 1) * sizeof *cf), *cv = malloc(((size_t)nv + 1) * sizeof *cv);
+    int nc = cf && cv ? connected_components(&t, F, cf) : -1;
+    topology_free(&t);
+    if (nc < 0) { free(cf); free(cv); return cm_seterr("out of memory"); }
+    for (int v = 0; v < nv; v++) cv[v] = -1;
+    for (int f = 0; f < nf; f++)
+        for (int k = 0; k < 3; k++) cv[F[3 * f + k]] = cf[f];
+    int *cnt = calloc((size_t)nc + 1, sizeof *cnt), *grp = malloc(((size_t)nc + 1) * sizeof *grp);
+    unsigned char *small = malloc((size_t)nc + 1);
+    double *box = malloc(((size_t)nc * 6 + 1) * sizeof *box);
+    int *idx = malloc(((size_t)nv + 1) * sizeof *idx);
+    double *A = malloc(((size_t)nv * 3 + 1) * sizeof *A), *B = malloc(((size_t)nv * 3 + 1) * sizeof *B);
+    int ng = -1;
+    if (!cnt || !grp || !small || !box || !idx || !A || !B) { cm_seterr("out of memory"); goto done; }
+    for (int c = 0; c < nc; c++) {
+        for (int d = 0; d < 3; d++) { box[6 * c + d] = INFINITY; box[6 * c + 3 + d] = -INFINITY; }
+        grp[c] = c;
+    }
+    for (int v = 0; v < nv; v++) {
+        int c = cv[v];
+        if (c < 0) continue;
+        cnt[c]++;
+        for (int d = 0; d < 3; d++) {
+            if (R[3 * v + d] < box[6 * c + d]) box[6 * c + d] = R[3 * v + d];
+            if (R[3 * v + d] > box[6 * c + 3 + d]) box[6 * c + 3 + d] = R[3 * v + d];
+        }
+    }
+    /* small: a box diagonal of at most frac of the source's, or at most
+     * frac of its vertices (too few to carry a deformation of their own); small
+     * components whose boxes come within the gap: one group (union-find) */
+    double diag = bbox_diagonal(R, nv), gap = SMALL_PARTS_GAP * diag;
+    for (int c = 0; c < nc; c++) {
+        double e2 = 0;
+        for (int d = 0; d < 3; d++) e2 += (box[6 * c + 3 + d] - box[6 * c + d]) * (box[6 * c + 3 + d] - box[6 * c + d]);
+        small[c] = cnt[c] > 0 && (sqrt(e2) <= frac * diag || cnt[c] <= frac * nv);
+    }
+    for (int a = 0; a < nc; a++) {
+        if (!small[a]) continue;
+        for (int b = a + 1; b < nc; b++) {
+            if (!small[b]) continue;
+            int near = 1;
+            for (int d = 0; d < 3 && near; d++)
+                near = box[6 * a + d] - gap <= box[6 * b + 3 + d] && box[6 * b + d] - gap <= box[6 * a + 3 + d];
+            if (!near) continue;
+            int ra = a, rb = b;
+            while (grp[ra] != ra) ra = grp[ra];
+            while (grp[rb] != rb) rb = grp[rb];
+            if (ra != rb) grp[ra > rb ? ra : rb] = ra < rb ? ra : rb;
+        }
+    }
+    ng = 0;
+    for (int g = 0; g < nc; g++) {
+        if (grp[g] != g || !small[g]) continue;
+        int n = 0;
+        for (int v = 0; v < nv; v++) {
+            int c = cv[v];
+            if (c < 0) continue;
+            while (grp[c] != c) c = grp[c];
+            if (c != g) continue;
+            idx[n] = v;
+            memcpy(A + 3 * n, R + 3 * v, 3 * sizeof *A);
+            memcpy(B + 3 * n, P + 3 * v, 3 * sizeof *B);
+            n++;
+        }
+        if (n < 3) continue;
+        double Rm[9], tv[3];
+        if (procrustes(A, B, NULL, n, 0, Rm, tv, NULL) < 0) { ng = -1; goto done; }
+        similarity_apply(Rm, tv, 1, A, n, A);
+        for (int k = 0; k < n; k++) memcpy(P + 3 * idx[k], A + 3 * k, 3 * sizeof *P);
+        ng++;
+    }
+done:
+    free(cf); free(cv); free(cnt); free(grp); free(small); free(box); free(idx); free(A); free(B);
+    return ng;
 }
 
 /* right-hand side of the ARAP edge rows: w ([v_i 1] X_i - [v_j 1] X_j)
@@ -227,6 +311,7 @@ struct target_side {
     const double *c;
     double *Xout;          /* #V (fine) by 3, the report's buffer */
     int nout;              /* fine vertices */
+    double overlay;        /* the overlay ratio of the backward pairs (0: the source has no parts) */
 };
 
 /* The stiffness steps k0 .. k1 - 1 of the schedule on one level: source VS
@@ -259,6 +344,7 @@ static int run_stages(const double *VS, const double *Rr, const int *FS, int nvs
     double *Q = p->rigid > 0 ? malloc(((size_t)nvs * 9 + 1) * sizeof *Q) : NULL;
     double *B0 = p->rigid > 0 ? malloc(((size_t)nvs * 12 + 1) * sizeof *B0) : NULL;
     double *PF = cm ? malloc(((size_t)cm->nv * 3 + 1) * sizeof *PF) : NULL;
+    double *DS = malloc(((size_t)nvs + 1) * sizeof *DS);   /* each vertex's distance to the target */
     if (topology_build(FS, nfs, nvs, &ts) < 0) goto done;
     if (system_new(&S, &ts, nvs) < 0) goto done;
     for (int i = 0; i < nvs; i++) {
@@ -299,8 +385,17 @@ static int run_stages(const double *VS, const double *Rr, const int *FS, int nvs
                 correspond(TS, FS, NS, &ts, VT, NT, nvt, cosmax, p->max_dist, p->search, !first, TC, TF, TB, tok);
                 closest_point_tree_free(TS);
                 double wb = p->backward * (double)nvs / nvt;
+                /* with parts: no pull from target surface lying over source that
+                 * already fits (correspond_overlay) */
+                double tau = 0;
+                if (T->overlay > 0) {
+                    for (int i = 0; i < nvs; i++) DS[i] = dist3(P + 3 * i, U + 3 * i);
+                    tau = correspond_overlay_scale(P, U, uok, nvs, OVERLAY_TAU);
+                }
                 for (int j = 0; j < nvt; j++)
-                    if (tok[j] && T->tt->VFs[j + 1] > T->tt->VFs[j])
+                    if (tok[j] && T->tt->VFs[j + 1] > T->tt->VFs[j] &&
+                        !correspond_overlay(FS, TF[j], TB + 3 * j, DS, dist3(VT + 3 * j, TC + 3 * j),
+                                            T->overlay, tau))
                         add_row(&S, B, FS + 3 * TF[j], TB + 3 * j, 3, VS, wb, VT + 3 * j);
             }
             /* landmarks */
@@ -381,7 +476,7 @@ done:
     system_free(&S);
     topology_free(&ts);
     free(B); free(Pold); free(NS); free(U); free(UB); free(UF); free(TB); free(TC); free(TF);
-    free(uok); free(tok); free(Q); free(B0); free(PF);
+    free(uok); free(tok); free(Q); free(B0); free(PF); free(DS);
     return rc;
 }
 
@@ -458,7 +553,16 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
     vertex_normals(VT, FT, nvt, nft, NT);
     memcpy(P, VS, (size_t)nvs * 3 * sizeof *P);
     int K = p->steps < 1 ? 1 : p->steps;
-    struct target_side ts = {VT, NT, FT, nvt, nft, &tt, TT, LD, nl, p, cb, ctx, sc, c, Xout, nvs};
+    /* a source with parts (holes, several components): the precautions */
+    int parts = p->parts;
+    if (parts < 0) {
+        struct topology tsrc;
+        if (topology_build(FS, nfs, nvs, &tsrc) < 0) goto done;
+        parts = correspond_parts(&tsrc, FS);
+        topology_free(&tsrc);
+    }
+    struct target_side ts = {VT, NT, FT, nvt, nft, &tt, TT, LD, nl, p, cb, ctx, sc, c, Xout, nvs,
+                             parts ? p->overlay : 0};
     /* coarse to fine: the stiff steps on SOURCE remeshed coarser, the last
      * fine_steps on SOURCE itself, from the coarse maps blended */
     int kf = 0;
@@ -521,6 +625,8 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
         ap.search = p->search;
         ap.rest_smooth = p->fit_smooth;
         ap.release_mean = p->fit_release;
+        ap.overlay = parts ? p->overlay : 0;
+        ap.rest_keep = parts != 0;
         int frc = arap_fit(RS ? RS : VS, FS, nvs, nfs, VT, FT, nvt, nft, TT, &ap, P, cb ? fit_step : NULL, &fc);
         if (frc < 0) goto done;
     }
@@ -550,6 +656,16 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
             for (int i = 0; i < nvs; i++)
                 for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
             cb(ctx, K + (p->fit > 0 ? p->fit : 0), 0, 0, st[0], st[1], -4, Xout);
+        }
+    }
+    /* small parts: each group the rigid motion of its rest that fits it */
+    if (parts && p->small_parts > 0) {
+        int ng = nricp_small_parts(Rr, FS, nvs, nfs, p->small_parts, P);
+        if (ng < 0) goto done;
+        if (cb && ng > 0) {
+            for (int i = 0; i < nvs; i++)
+                for (int d = 0; d < 3; d++) Xout[3 * i + d] = P[3 * i + d] * sc + c[d];
+            cb(ctx, K + (p->fit > 0 ? p->fit : 0), 0, 0, ng, 0, -5, Xout);
         }
     }
     for (int i = 0; i < nvs; i++)

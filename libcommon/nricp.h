@@ -99,7 +99,34 @@ struct nricp_params {
                               fading with alpha / alpha_max (default 0) */
     int fine_steps;        /* steps of the schedule on the source with coarse > 0 (default 2;
                               0: every step coarse, the ARAP fit refines on the source) */
+    int parts;             /* a source with parts (open boundaries or several components:
+                              a face's mask, eyes, teeth; correspond_parts): -1 decide from
+                              the source (default), 0 as a closed surface, 1 with parts.
+                              With parts the backward pairs over source that already fits
+                              are dropped (overlay) and the ARAP fit's rest smoothing keeps
+                              rims and the size of small parts (arap_fit rest_keep) */
+    double overlay;        /* with parts: a target point t pulls its closest source point c
+                              only unless the source's own distance to the target at c is
+                              below overlay |t - c| with |t - c| more than OVERLAY_TAU
+                              times the RMS distance of the source's pairs (correspond.h;
+                              a cap that mesh-clean laid across a hole, over the skin;
+                              default 0.5; 0 off) */
+    double small_parts;    /* with parts: every component whose bounding-box diagonal is at
+                              most this fraction of the source's, or that has at most this
+                              fraction of its vertices, is small (a tooth, an eye); small
+                              components whose bounding boxes come within SMALL_PARTS_GAP
+                              source diagonals of each other form a group (a row of
+                              teeth), and each group ends as the rigid motion of
+                              its rest that best fits its registration (procrustes.h): the
+                              closest points of a part smaller than the target's faces
+                              only squash it (default 0.1; 0 off) */
 };
+
+/* the gap that joins small parts into one rigid group, in source diagonals */
+#define SMALL_PARTS_GAP 0.01
+
+/* the tau of the overlay test, in RMS distances of the source's pairs */
+#define OVERLAY_TAU 3
 
 void nricp_defaults(struct nricp_params *p);
 
@@ -130,6 +157,14 @@ int nricp_register(const double *VS, const double *RS, const int *FS, int nvs, i
                    const double *VT, const int *FT, int nvt, int nft,
                    const int *lm_src, const double *lm_dst, int nl,
                    const struct nricp_params *p, double *X, nricp_step_fn cb, void *ctx);
+
+/* The small parts (nricp_params.small_parts, frac): P (#V by 3, in: a
+ * registration of the rest R with faces F, out) takes, for every group of
+ * small components, the rigid motion of R's group that best fits it
+ * (procrustes.h).  nricp_register does it last; a refinement after it
+ * (nricp --refine) calls it again.  Returns the number of groups, -1 on
+ * error (cm_errmsg set). */
+int nricp_small_parts(const double *R, const int *F, int nv, int nf, double frac, double *P);
 
 /* How much a registration X stretched its rest shape R (both #V by 3, faces
  * F #F by 3): the mean over the faces' edges of |l_X / l_R - 1|

@@ -2,6 +2,7 @@
 #include "sample_fit.h"
 #include "arap_fit.h"
 #include "cm_error.h"
+#include "correspond.h"
 #include "geometry.h"
 #include "mesh_distance.h"
 #include "sparse.h"
@@ -80,6 +81,26 @@ static double irls(double d, double H, double *u, const struct sample_fit_params
     return 1 + p->gain * *u;
 }
 
+/* the Hausdorff distance that decides what is kept: frame_compare's, or
+ * with p->overlay > 0 overlay_distance()'s (the target's overlay samples
+ * left out) */
+static int kept_distance(const struct frame_distance *fd, const double *X, const int *F, int nv,
+                         int nf, const double *VT, const int *FT, int nvt, int nft,
+                         const struct closest_point_tree *TT, const struct sample_fit_params *p,
+                         double *H)
+{
+    if (!(p->overlay > 0)) {
+        *H = fd->fit.max > fd->cover.max ? fd->fit.max : fd->cover.max;
+        return 0;
+    }
+    struct closest_point_tree *TX = closest_point_tree_new(X, nv, F, nf);
+    if (!TX) return -1;
+    int rc = overlay_distance(X, nv, F, nf, TX, VT, nvt, FT, nft, TT, p->overlay,
+                              SAMPLE_FIT_OVERLAY_TAU, H, NULL);
+    closest_point_tree_free(TX);
+    return rc;
+}
+
 int sample_fit(double *P, const int *F, int nv, int nf, const double *VT, const int *FT, int nvt,
                int nft, const struct closest_point_tree *TT, const struct sample_fit_params *p,
                double stats[4])
@@ -129,7 +150,9 @@ int sample_fit(double *P, const int *F, int nv, int nf, const double *VT, const 
     if (!FC) goto done;
     struct frame_distance fd;
     if (frame_compare_run(FC, P, nv, F, nf, p->tol, &fd, flip0, NULL) < 0) goto done;
-    double H0 = fd.fit.max > fd.cover.max ? fd.fit.max : fd.cover.max, Hb = H0;
+    double H0, Hb;
+    if (kept_distance(&fd, P, F, nv, nf, VT, FT, nvt, nft, TT, p, &H0) < 0) goto done;
+    Hb = H0;
     int flips0 = fd.flipped, flipsb = flips0;
     memcpy(P0, P, (size_t)nv * 3 * sizeof *P0);
     memcpy(Pb, P, (size_t)nv * 3 * sizeof *Pb);
@@ -151,6 +174,15 @@ int sample_fit(double *P, const int *F, int nv, int nf, const double *VT, const 
         TP = closest_point_tree_new(Pp, nv, F, nf);
         if (!TP) goto done;
         closest_points(TP, YT, (int)nts, CT, IT, BT, DT);
+        /* with overlay: the target's samples over mesh that already fits
+         * are left out (DT < 0 marks them) */
+        if (p->overlay > 0) {
+            double s2 = 0;
+            for (size_t s = 0; s < ns; s++) s2 += D[s] * D[s];
+            double tau = SAMPLE_FIT_OVERLAY_TAU * sqrt(s2 / (double)ns);
+            for (size_t s = 0; s < nts; s++)
+                if (correspond_overlay(F, IT[s], BT + 3 * s, D, DT[s], p->overlay, tau)) DT[s] = -1;
+        }
         double H = 0;
         for (size_t s = 0; s < ns; s++) if (D[s] > H) H = D[s];
         for (size_t s = 0; s < nts; s++) if (DT[s] > H) H = DT[s];
@@ -193,6 +225,7 @@ int sample_fit(double *P, const int *F, int nv, int nf, const double *VT, const 
         }
         for (size_t s = 0; s < nts; s++) {
             int f = IT[s];
+            if (DT[s] < 0) continue;                             /* an overlay */
             if (dot3(NF + 3 * f, NTS + 3 * s) < p->min_dot) continue;
             double w = wt * irls(DT[s], H, UT + s, p);
             for (int a = 0; a < 3; a++) {
@@ -242,7 +275,8 @@ int sample_fit(double *P, const int *F, int nv, int nf, const double *VT, const 
         }
         if (!ok) break;
         if (frame_compare_run(FC, Pc, nv, F, nf, p->tol, &fd, NULL, NULL) < 0) goto done;
-        double Hc = fd.fit.max > fd.cover.max ? fd.fit.max : fd.cover.max;
+        double Hc;
+        if (kept_distance(&fd, Pc, F, nv, nf, VT, FT, nvt, nft, TT, p, &Hc) < 0) goto done;
         memcpy(Pp, Pc, (size_t)nv * 3 * sizeof *Pp);
         /* fewer flipped faces first (no farther than the start), then closer */
         if ((fd.flipped < flipsb && Hc <= H0) || (fd.flipped == flipsb && Hc < Hb)) {

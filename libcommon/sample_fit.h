@@ -58,7 +58,16 @@ struct sample_fit_params {
                          flipped face is halved before they keep their place (default 6) */
     double tol;       /* thin-part allowance of the flip test (flipped_face_flags), in
                          the points' units */
+    double overlay;   /* > 0: the target's samples lying over mesh that already fits
+                         (correspond_overlay with this ratio, tau SAMPLE_FIT_OVERLAY_TAU
+                         RMS distances of the mesh's samples: a cap mesh-clean laid
+                         across a hole of a face mask) neither pull the mesh nor count in
+                         the Hausdorff distance that decides what is kept
+                         (overlay_distance); nricp sets it for a source with parts
+                         (default 0: off) */
 };
+
+#define SAMPLE_FIT_OVERLAY_TAU 3
 
 void sample_fit_defaults(struct sample_fit_params *p);
 

@@ -28,10 +28,15 @@ test_expect_success '--start with the kept start gives the same bytes' '
 	nricp --start "$kept" h0.mesh scan.mesh >one.mesh &&
 	cmp auto.mesh one.mesh
 '
-test_expect_success '--start landmarks (the earlier default) is measured worse here' '
-	nricp --start landmarks h0.mesh scan.mesh >lm.mesh &&
-	e=$(truth_err lm.mesh h180.mesh) && echo "landmarks: $e" &&
-	a=$(truth_err auto.mesh h180.mesh) && test_le "$a" "$e"
+# the landmark start slides along the skull (edge stretch 0.085): its
+# registration scores worse than the unregistered frame 0 (Hausdorff 1.12%,
+# no stretch), so the key is frame 0 itself (nricp keeps a key's start where
+# it scores no worse; measured: 0.19% from the truth, the slid one 2.9%)
+test_expect_success '--start landmarks (the earlier default) slides: the start is kept instead' '
+	nricp -v --start landmarks h0.mesh scan.mesh >lm.mesh 2>errl &&
+	grep "start landmarks" errl && grep "the start kept" errl &&
+	m=$(anim-diff -s h0.mesh lm.mesh | awk "/^max/ { print \$2 }") && test_le "$m" 0 &&
+	e=$(truth_err lm.mesh h180.mesh) && echo "landmarks: $e" && test_le "$e" 0.01
 '
 test_expect_success '--paper: the thesis method runs (thin shell, Amberg, no fit) and is deterministic' '
 	nricp --paper -k 3 h0.mesh scan.mesh >p1.mesh && nricp --paper -k 3 h0.mesh scan.mesh >p2.mesh &&

@@ -7,6 +7,7 @@
 #include "clay_deform.h"
 #include "thin_shell.h"
 #include "closest_point.h"
+#include "correspond.h"
 #include "geometry.h"
 #include "landmarks.h"
 #include "landmark_auto.h"
@@ -111,6 +112,16 @@ static const char help[] =
 "                        with the lower Hausdorff distance + 1e-4 per flipped\n"
 "                        face; auto: only where the first ends farther than 1% of\n"
 "                        the diagonal or with more than 10 flipped faces (default)\n"
+"      --parts P         auto (default), yes or no: SOURCE has parts (open boundaries\n"
+"                        or several components: a face, eyes, teeth), so target\n"
+"                        surface lying over source that already fits (a cap\n"
+"                        mesh-clean closed a hole with) pulls nothing and is not\n"
+"                        measured, the fit's rest smoothing keeps rims and sizes,\n"
+"                        and small parts move rigidly\n"
+"      --overlay R       with parts: that test's ratio (default 0.5, 0 off)\n"
+"      --small-parts F   with parts: components within F of SOURCE's diagonal or\n"
+"                        vertex count, grouped when near, end rigid (default 0.1;\n"
+"                        0 off)\n"
 "      --nearest-vertex  baseline: correspond to target vertices, not closest points\n"
 "      --fit N           ARAP fit iterations after the schedule: unfolds what the\n"
 "                        affine maps folded (default 30, 0: pure Amberg)\n"
@@ -181,7 +192,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     enum { O_ALIGN = 256, O_AMAX, O_AMIN, O_BETA, O_GAMMA, O_ANGLE, O_DIST, O_BACK, O_INNER,
            O_EPS, O_SOUT, O_RAW, O_VERSION, O_INIT, O_INITK, O_NV, O_FIT, O_FITW, O_INITM, O_SEARCH, O_FITS, O_LMESH,
            O_NOAUTO, O_LMOUT, O_NOINIT, O_CHAIN, O_REST, O_CREST, O_START, O_PAPER, O_RIGID,
-           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES, O_UNFLIP, O_REFINE, O_SETTLE };
+           O_RIGIDN, O_UNTANGLE, O_FITREL, O_FITSR, O_COARSE, O_FINESTEPS, O_RIGIDC, O_PASSES, O_UNFLIP, O_REFINE, O_SETTLE, O_OVERLAY, O_PARTS, O_SMALL };
     static const struct option lo[] = {
         {"landmarks", 1, 0, 'l'}, {"align", 1, 0, O_ALIGN}, {"steps", 1, 0, 'k'},
         {"alpha-max", 1, 0, O_AMAX}, {"alpha-min", 1, 0, O_AMIN}, {"beta", 1, 0, O_BETA},
@@ -189,7 +200,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"backward", 1, 0, O_BACK}, {"max-inner", 1, 0, O_INNER}, {"eps", 1, 0, O_EPS}, {"fit", 1, 0, O_FIT}, {"fit-weight", 1, 0, O_FITW}, {"init-deform", 0, 0, O_INIT}, {"init-model", 1, 0, O_INITM}, {"search", 1, 0, O_SEARCH}, {"fit-smooth", 1, 0, O_FITS}, {"landmark-mesh", 1, 0, O_LMESH}, {"nearest-vertex", 0, 0, O_NV}, {"init-stiffness", 1, 0, O_INITK},
         {"start", 1, 0, O_START}, {"paper", 0, 0, O_PAPER}, {"rigid", 1, 0, O_RIGID},
         {"rigid-iters", 1, 0, O_RIGIDN}, {"untangle", 1, 0, O_UNTANGLE}, {"unflip", 1, 0, O_UNFLIP}, {"refine", 1, 0, O_REFINE}, {"settle", 1, 0, O_SETTLE}, {"fit-release", 1, 0, O_FITREL},
-        {"fit-smooth-retry", 1, 0, O_FITSR}, {"coarse", 1, 0, O_COARSE}, {"fine-steps", 1, 0, O_FINESTEPS}, {"rigid-const", 0, 0, O_RIGIDC}, {"passes", 1, 0, O_PASSES},
+        {"fit-smooth-retry", 1, 0, O_FITSR}, {"coarse", 1, 0, O_COARSE}, {"fine-steps", 1, 0, O_FINESTEPS}, {"rigid-const", 0, 0, O_RIGIDC}, {"passes", 1, 0, O_PASSES}, {"overlay", 1, 0, O_OVERLAY}, {"parts", 1, 0, O_PARTS}, {"small-parts", 1, 0, O_SMALL},
         {"chain", 0, 0, O_CHAIN}, {"rest", 1, 0, O_REST}, {"chain-rest", 1, 0, O_CREST},
         {"no-auto", 0, 0, O_NOAUTO}, {"landmarks-out", 1, 0, O_LMOUT}, {"no-init-deform", 0, 0, O_NOINIT},
         {"steps-out", 1, 0, O_SOUT}, {"output", 1, 0, 'o'}, {"raw", 0, 0, O_RAW},
@@ -249,6 +260,14 @@ static void parse_args(int argc, char **argv, struct options *o)
                 usage_error("--passes must be 1, 2 or auto");
             break;
         case O_FINESTEPS: o->p.fine_steps = arg_int(optarg, "--fine-steps"); break;
+        case O_OVERLAY: o->p.overlay = arg_double(optarg, "--overlay"); break;
+        case O_SMALL: o->p.small_parts = arg_double(optarg, "--small-parts"); break;
+        case O_PARTS:
+            if (!strcmp(optarg, "auto")) o->p.parts = -1;
+            else if (!strcmp(optarg, "yes")) o->p.parts = 1;
+            else if (!strcmp(optarg, "no")) o->p.parts = 0;
+            else usage_error("--parts must be auto, yes or no");
+            break;
         case O_REST: o->rest = optarg; break;
         case O_CREST:
             o->chain_rest_given = 1;
@@ -346,6 +365,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->fit_smooth_retry < 0 || o->fit_smooth_retry > 100)
         usage_error("--fit-smooth-retry must be in 0..100");
     if (!(o->p.search >= 0 && o->p.search <= 1)) usage_error("--search must be in [0, 1]");
+    if (!(o->p.overlay >= 0 && o->p.overlay <= 1)) usage_error("--overlay must be in [0, 1]");
+    if (!(o->p.small_parts >= 0 && o->p.small_parts <= 1)) usage_error("--small-parts must be in [0, 1]");
     if (!(o->p.fit_weight > 0) || o->p.fit_weight > 1e6)
         usage_error("--fit-weight must be in (0, 1e6]");
     if (!(o->p.eps >= 0)) usage_error("--eps must be >= 0");
@@ -361,6 +382,11 @@ static int on_step(void *ctx, int step, double alpha, double beta, int inner, in
     if (folded == -3) {
         info(1, "coarse level: %d vertices, %d faces (--coarse %g); the last %d steps on the "
              "source's %d vertices", inner, rejected, s->coarse, s->fine_steps, s->nv);
+        return 0;
+    }
+    if (folded == -5) {
+        info(1, "small parts: %d groups of them moved rigidly (--small-parts), %.2f s", inner,
+             now_seconds() - s->t0);
         return 0;
     }
     if (folded == -4) {
@@ -460,16 +486,27 @@ static int auto_landmarks(const double *V, const struct mesh *S, const struct me
     return 0;
 }
 
+/* with a SOURCE of parts (open boundaries or several components,
+ * correspond_parts): the overlay ratio of the scores' distance and of the
+ * refinement (0: a closed single surface, symmetric_distance as always) */
+static double parts_overlay;
+static int parts_on;      /* SOURCE has parts (--parts, or decided from it) */
+
 /* how well X (SOURCE's connectivity) lies on T: the symmetric Hausdorff
- * distance over T's diagonal and the flipped faces (mesh-metrics' test) */
+ * distance over T's diagonal (with parts, the target's samples lying over
+ * source that already fits left out: overlay_distance) and the flipped
+ * faces (mesh-metrics' test) */
 static void measure(const double *X, const struct mesh *S, const struct mesh *T, double *hrel,
                     int *flips)
 {
     struct closest_point_tree *TS = closest_point_tree_new(X, S->nv, S->F, S->nf);
     struct closest_point_tree *TT = closest_point_tree_new(T->V, T->nv, T->F, T->nf);
     double h, rms, diag = bbox_diagonal(T->V, T->nv);
-    if (!TS || !TT || symmetric_distance(X, S->nv, S->F, S->nf, TS, T->V, T->nv, T->F, T->nf, TT,
-                                         &h, &rms) < 0)
+    if (!TS || !TT ||
+        (parts_overlay > 0 ? overlay_distance(X, S->nv, S->F, S->nf, TS, T->V, T->nv, T->F, T->nf, TT,
+                                              parts_overlay, OVERLAY_TAU, &h, NULL)
+                           : symmetric_distance(X, S->nv, S->F, S->nf, TS, T->V, T->nv, T->F, T->nf, TT,
+                                                &h, &rms)) < 0)
         die("cannot measure the registration: %s", cm_errmsg());
     *hrel = h / diag;
     *flips = flipped_faces(X, S->F, S->nf, T->V, T->nv, T->F, T->nf, TT, FLIP_THIN_TOL * diag);
@@ -577,14 +614,41 @@ static void key_refine(const struct options *o, const struct mesh *S, const stru
     sample_fit_defaults(&sp);
     sp.iters = o->refine;
     sp.tol = FLIP_THIN_TOL * diag;
+    sp.overlay = parts_overlay;
     struct closest_point_tree *TT = closest_point_tree_new(T->V, T->nv, T->F, T->nf);
     if (!TT || sample_fit(X, S->F, S->nv, S->nf, T->V, T->F, T->nv, T->nf, TT, &sp, st) < 0)
         die("cannot refine the registration: %s", cm_errmsg());
     closest_point_tree_free(TT);
+    /* the small parts rigid again (nricp_small_parts) */
+    if (parts_on && o->p.small_parts > 0 &&
+        nricp_small_parts(S->V, S->F, S->nv, S->nf, o->p.small_parts, X) < 0)
+        die("cannot refine the registration: %s", cm_errmsg());
     info(1, "%s%srefined: Hausdorff %.3f%% -> %.3f%% of the diagonal, %d -> %d flipped faces, "
          "edge stretch %.3f, %.2f s", name ? name : "", name ? ": " : "", 100 * st[0] / diag,
          100 * st[1] / diag, (int)st[2], (int)st[3], nricp_stretch(S->V, X, S->F, S->nf),
          now_seconds() - t0);
+}
+
+/* A near-identical pose: the key X (#V by 3, in and out) against its
+ * start X0 (SOURCE, or with --chain the previous key) on T, by the score
+ * of the starts (distance + START_FLIP_COST per flipped face +
+ * START_STRETCH_COST times the edge stretch from SOURCE): where the start
+ * already lies on the target at least as well, the registration made
+ * nothing better and the start is kept (-v says so). */
+static void key_or_start(const struct mesh *S, const struct mesh *T, const char *name,
+                         const double *X0, double *X)
+{
+    double h0, h;
+    int f0, fl;
+    measure(X0, S, T, &h0, &f0);
+    measure(X, S, T, &h, &fl);
+    double s0 = h0 + START_FLIP_COST * f0 + START_STRETCH_COST * nricp_stretch(S->V, X0, S->F, S->nf);
+    double s1 = h + START_FLIP_COST * fl + START_STRETCH_COST * nricp_stretch(S->V, X, S->F, S->nf);
+    int keep = s0 <= s1;
+    info(1, "%s%sthe start scores %.4g (Hausdorff %.3f%%, %d flipped faces), the registration "
+         "%.4g (%.3f%%, %d): %s", name ? name : "", name ? ": " : "", s0, 100 * h0, f0, s1, 100 * h,
+         fl, keep ? "the start kept (already as close)" : "registration kept");
+    if (keep) memcpy(X, X0, (size_t)S->nv * 3 * sizeof *X);
 }
 
 /* --settle: the kept key X (#V by 3, in and out; with --chain every key,
@@ -673,6 +737,22 @@ int main(int argc, char **argv)
     struct mesh S, R = {0};
     if (mesh_read(o.src, &S) < 0) die("%s", cm_errmsg());
     check_surface(&S, o.src, 0);
+    {
+        int parts = o.p.parts;
+        if (parts < 0) {
+            struct topology tp;
+            if (topology_build(S.F, S.nf, S.nv, &tp) < 0) die("%s", cm_errmsg());
+            parts = correspond_parts(&tp, S.F);
+            topology_free(&tp);
+        }
+        parts_overlay = parts ? o.p.overlay : 0;
+        parts_on = parts;
+        o.p.parts = parts;    /* every registration the same */
+        if (parts && o.p.overlay > 0)
+            info(1, "%s has parts (open boundaries or several components): target surface lying "
+                 "over source that already fits is not pulled on nor measured (--overlay %g)",
+                 o.src, o.p.overlay);
+    }
     if (o.rest) {
         if (mesh_read(o.rest, &R) < 0) die("%s", cm_errmsg());
         if (R.nv != S.nv || R.nf != S.nf || memcmp(R.F, S.F, (size_t)S.nf * 3 * sizeof *S.F))
@@ -897,6 +977,8 @@ int main(int argc, char **argv)
       }
       if (o.refine > 0)
           key_refine(&o, &S, &T[k], o.chain ? o.targets[k] : NULL, K + (size_t)(k + 1) * S.nv * 3);
+      key_or_start(&S, &T[k], o.chain ? o.targets[k] : NULL, K + (size_t)k * S.nv * 3,
+                   K + (size_t)(k + 1) * S.nv * 3);
     }
     /* --settle: after the whole chain (every key started as before), each
      * key registered again from its own result, kept where closer */
