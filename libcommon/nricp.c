@@ -345,6 +345,11 @@ static int run_stages(const double *VS, const double *Rr, const int *FS, int nvs
     double *B0 = p->rigid > 0 ? malloc(((size_t)nvs * 12 + 1) * sizeof *B0) : NULL;
     double *PF = cm ? malloc(((size_t)cm->nv * 3 + 1) * sizeof *PF) : NULL;
     double *DS = malloc(((size_t)nvs + 1) * sizeof *DS);   /* each vertex's distance to the target */
+    if (!B || !Pold || !NS || !U || !UB || !UF || !TB || !TC || !TF || !uok || !tok || !DS ||
+        (p->rigid > 0 && (!Q || !B0)) || (cm && !PF)) {
+        cm_seterr("out of memory");
+        goto done;
+    }
     if (topology_build(FS, nfs, nvs, &ts) < 0) goto done;
     if (system_new(&S, &ts, nvs) < 0) goto done;
     for (int i = 0; i < nvs; i++) {
