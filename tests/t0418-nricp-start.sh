@@ -35,6 +35,9 @@ test_expect_success '--start with the kept start gives the same bytes' '
 test_expect_success '--start landmarks (the earlier default) slides: the start is kept instead' '
 	nricp -v --start landmarks h0.mesh scan.mesh >lm.mesh 2>errl &&
 	grep "start landmarks" errl && grep "the start kept" errl &&
+	nricp --start landmarks h0.mesh scan.mesh >lm2.mesh 2>errq &&
+	cmp lm.mesh lm2.mesh && test "$(wc -l <errq)" = 1 &&
+	grep "the start is written unchanged" errq &&
 	m=$(anim-diff -s h0.mesh lm.mesh | awk "/^max/ { print \$2 }") && test_le "$m" 0 &&
 	e=$(truth_err lm.mesh h180.mesh) && echo "landmarks: $e" && test_le "$e" 0.01
 '

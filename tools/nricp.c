@@ -648,7 +648,13 @@ static void key_or_start(const struct mesh *S, const struct mesh *T, const char 
     info(1, "%s%sthe start scores %.4g (Hausdorff %.3f%%, %d flipped faces), the registration "
          "%.4g (%.3f%%, %d): %s", name ? name : "", name ? ": " : "", s0, 100 * h0, f0, s1, 100 * h,
          fl, keep ? "the start kept (already as close)" : "registration kept");
-    if (keep) memcpy(X, X0, (size_t)S->nv * 3 * sizeof *X);
+    if (keep) {
+        /* not silent: the output is the start, not a registration */
+        warn("%s%sthe registration scored no better than its start (%.3f%% of the diagonal, %d "
+             "flipped faces, against %.3f%%, %d): the start is written unchanged",
+             name ? name : "", name ? ": " : "", 100 * h, fl, 100 * h0, f0);
+        memcpy(X, X0, (size_t)S->nv * 3 * sizeof *X);
+    }
 }
 
 /* --settle: the kept key X (#V by 3, in and out; with --chain every key,
