@@ -1,5 +1,6 @@
 /* correspond.c -- see correspond.h */
 #include "correspond.h"
+#include "cm_error.h"
 #include "geometry.h"
 #include <math.h>
 #include <stddef.h>
@@ -89,7 +90,7 @@ int correspond_parts(const struct topology *t, const int *F)
 {
     if (t->nboundary > 0) return 1;
     int *c = malloc(((size_t)t->nf + 1) * sizeof *c);
-    if (!c) return 1;
+    if (!c) return cm_seterr("out of memory (the components of %d faces)", t->nf);
     int n = connected_components(t, F, c);
     free(c);
     return n > 1;

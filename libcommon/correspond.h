@@ -62,7 +62,8 @@ double correspond_overlay_scale(const double *Q, const double *C, const unsigned
  * eyes) or several connected components (eyes, teeth beside the skin)?
  * The registrations' precautions for such sources (correspond_overlay,
  * arap_fit's rest_keep) apply only then: a closed single surface (the
- * camel) registers as before. */
+ * camel) registers as before.  Returns 1 (parts), 0 (none) or -1 (out of
+ * memory; cm_errmsg). */
 int correspond_parts(const struct topology *t, const int *F);
 
 #ifdef __cplusplus

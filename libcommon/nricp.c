@@ -487,8 +487,8 @@ done:
 
 /* The coarse level: SOURCE remeshed isotropically to p->coarse diagonals
  * (mesh_clean.h, CGAL), every fine vertex mapped to its closest point on it.
- * Returns 0, or 1 when the remeshing fails or does not coarsen (the schedule
- * then runs on SOURCE alone). */
+ * Returns 0, 1 when the remeshing fails or does not coarsen (the schedule
+ * then runs on SOURCE alone), or -1 out of memory (cm_errmsg). */
 static int coarse_build(const double *VS, const int *FS, int nvs, int nfs, double edge,
                         double **VC, int *nvc, int **FC, int *nfc, struct coarse_map *m)
 {
@@ -510,6 +510,12 @@ static int coarse_build(const double *VS, const int *FS, int nvs, int nfs, doubl
     m->FC = *FC;
     m->face = malloc(((size_t)nvs + 1) * sizeof *m->face);
     m->bary = malloc(((size_t)nvs * 3 + 1) * sizeof *m->bary);
+    if (!m->face || !m->bary) {
+        closest_point_tree_free(CT);
+        free(m->face); free(m->bary); m->face = NULL; m->bary = NULL;
+        free(*VC); free(*FC); *VC = NULL; *FC = NULL;
+        return cm_seterr("out of memory (the coarse level's map of %d vertices)", nvs);
+    }
     closest_points(CT, VS, nvs, NULL, m->face, m->bary, NULL);
     closest_point_tree_free(CT);
     return 0;
@@ -532,12 +538,15 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
     for (int d = 0; d < 3; d++) c[d] = 0.5 * (lo[d] + hi[d]);
     double *VS = malloc((size_t)nvs * 3 * sizeof *VS + 1), *VT = malloc((size_t)nvt * 3 * sizeof *VT + 1);
     double *LD = malloc((size_t)nl * 3 * sizeof *LD + 1);
+    double *RS = RS0 ? malloc((size_t)nvs * 3 * sizeof *RS + 1) : NULL;
+    if (!VS || !VT || !LD || (RS0 && !RS)) {
+        free(VS); free(VT); free(LD); free(RS);
+        return cm_seterr("out of memory (registering %d onto %d vertices)", nvs, nvt);
+    }
     for (int i = 0; i < nvs; i++) for (int d = 0; d < 3; d++) VS[3 * i + d] = (VS0[3 * i + d] - c[d]) / sc;
     for (int i = 0; i < nvt; i++) for (int d = 0; d < 3; d++) VT[3 * i + d] = (VT0[3 * i + d] - c[d]) / sc;
     for (int i = 0; i < nl; i++) for (int d = 0; d < 3; d++) LD[3 * i + d] = (lm_dst0[3 * i + d] - c[d]) / sc;
-    double *RS = NULL;
     if (RS0) {
-        RS = malloc((size_t)nvs * 3 * sizeof *RS + 1);
         for (int i = 0; i < nvs; i++) for (int d = 0; d < 3; d++) RS[3 * i + d] = (RS0[3 * i + d] - c[d]) / sc;
     }
 
@@ -552,6 +561,10 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
     int *FC = NULL, nvc = 0, nfc = 0;
     struct coarse_map cm = {0};
     const double *Rr = RS ? RS : VS;   /* rest shape of the ARAP term */
+    if (!X || !P || !NT || !lm_b || !lm_v) {
+        cm_seterr("out of memory (registering %d onto %d vertices)", nvs, nvt);
+        goto done;
+    }
     if (topology_build(FT, nft, nvt, &tt) < 0) goto done;
     TT = closest_point_tree_new(VT, nvt, FT, nft);
     if (!TT) goto done;
@@ -565,14 +578,17 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
         if (topology_build(FS, nfs, nvs, &tsrc) < 0) goto done;
         parts = correspond_parts(&tsrc, FS);
         topology_free(&tsrc);
+        if (parts < 0) goto done;
     }
     struct target_side ts = {VT, NT, FT, nvt, nft, &tt, TT, LD, nl, p, cb, ctx, sc, c, Xout, nvs,
                              parts ? p->overlay : 0};
     /* coarse to fine: the stiff steps on SOURCE remeshed coarser, the last
      * fine_steps on SOURCE itself, from the coarse maps blended */
     int kf = 0;
-    if (p->coarse > 0 && K > 1 &&
-        coarse_build(VS, FS, nvs, nfs, p->coarse, &VC, &nvc, &FC, &nfc, &cm) == 0) {
+    int coarse = p->coarse > 0 && K > 1 ? coarse_build(VS, FS, nvs, nfs, p->coarse, &VC, &nvc, &FC, &nfc, &cm)
+                                        : 1;
+    if (coarse < 0) goto done;
+    if (coarse == 0) {
         kf = K - (p->fine_steps < 0 ? 0 : p->fine_steps >= K ? K - 1 : p->fine_steps);
         /* landmarks: the coarse face point under each landmark vertex */
         for (int l = 0; l < nl; l++) {
@@ -591,6 +607,12 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
             int *fi = malloc(((size_t)nvc + 1) * sizeof *fi);
             double *bi = malloc(((size_t)nvc * 3 + 1) * sizeof *bi);
             RC = malloc(((size_t)nvc * 3 + 1) * sizeof *RC);
+            if (!fi || !bi || !RC) {
+                closest_point_tree_free(FTr);
+                free(fi); free(bi);
+                cm_seterr("out of memory (the coarse level's rest of %d vertices)", nvc);
+                goto done;
+            }
             closest_points(FTr, VC, nvc, NULL, fi, bi, NULL);
             closest_point_tree_free(FTr);
             for (int v = 0; v < nvc; v++)
@@ -605,6 +627,10 @@ int nricp_register(const double *VS0, const double *RS0, const int *FS, int nvs,
         if (cb) cb(ctx, 0, 0, 0, nvc, nfc, -3, NULL);
         XC = malloc(((size_t)nvc * 12 + 1) * sizeof *XC);
         PC = malloc(((size_t)nvc * 3 + 1) * sizeof *PC);
+        if (!XC || !PC) {
+            cm_seterr("out of memory (the coarse level's %d vertices)", nvc);
+            goto done;
+        }
         memcpy(PC, VC, (size_t)nvc * 3 * sizeof *PC);
         int r = run_stages(VC, Rc, FC, nvc, nfc, lm_v, lm_b, 3, &ts, 0, kf, &cm, PC, XC);
         if (r < 0) goto done;

@@ -750,6 +750,7 @@ int main(int argc, char **argv)
             if (topology_build(S.F, S.nf, S.nv, &tp) < 0) die("%s", cm_errmsg());
             parts = correspond_parts(&tp, S.F);
             topology_free(&tp);
+            if (parts < 0) die("%s: %s", o.src, cm_errmsg());
         }
         parts_overlay = parts ? o.p.overlay : 0;
         parts_on = parts;
