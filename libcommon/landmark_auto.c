@@ -1,10 +1,14 @@
 /* landmark_auto.c -- see landmark_auto.h */
 #include "landmark_auto.h"
 #include "cm_error.h"
+#include "clay_deform.h"
+#include "closest_point.h"
 #include "geodesic.h"
 #include "geometry.h"
+#include "procrustes.h"
 #include "topology.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,6 +25,7 @@ void landmark_auto_defaults(struct landmark_auto_params *p)
     p->core = 0;
     p->second_ratio = 1.5;
     p->disc_weight = 1;
+    p->verify = 0;
 }
 
 /* ---- a binary heap of (key, vertex) for the bounded Dijkstra */
@@ -256,6 +261,56 @@ static double disc_cost(const double *a, const double *b)
     return c;
 }
 
+/* How well the map m explains B: A's matched extremities aligned rigidly
+ * (no reflection) onto B's, then A deformed as rigidly as possible
+ * (clay_deform.h, 10 steps of 5 iterations, the volume kept when A is
+ * closed) until they sit on B's; the mean of the closest-point distances
+ * both ways, over sB, in *fit.  TB: B's closest-point tree.  Returns 0,
+ * or -1 (cm_errmsg: the deformation could not be set up). */
+static int map_fit(const double *VA, const int *FA, int nva, int nfa, int closed, const double *VB,
+                      int nvb, const struct closest_point_tree *TB, const int *EA, const int *EB,
+                      const int *m, int na, double sB, double *fit)
+{
+    int H[32], n = 0;
+    double P[96], Q[96], T[96], R[9], t[3];
+    for (int i = 0; i < na; i++)
+        if (m[i] >= 0) {
+            H[n] = EA[i];
+            memcpy(P + 3 * n, VA + 3 * EA[i], 3 * sizeof *P);
+            memcpy(Q + 3 * n, VB + 3 * EB[m[i]], 3 * sizeof *Q);
+            n++;
+        }
+    double *X0 = malloc(((size_t)nva * 3 + 1) * sizeof *X0), *X = malloc(((size_t)nva * 3 + 1) * sizeof *X);
+    double *D = malloc(((size_t)(nva > nvb ? nva : nvb) + 1) * sizeof *D);
+    struct clay_deform *cd = NULL;
+    struct closest_point_tree *TX = NULL;
+    int rc = -1;
+    if (!X0 || !X || !D) { cm_seterr("out of memory"); goto done; }
+    if (procrustes(P, Q, NULL, n, 0, R, t, NULL) < 0) goto done;
+    similarity_apply(R, t, 1, VA, nva, X0);
+    memcpy(X, X0, (size_t)nva * 3 * sizeof *X);
+    if (!(cd = clay_deform_new(X0, FA, nva, nfa, NULL, H, n, 100))) goto done;
+    for (int s = 1; s <= 10; s++) {
+        double a = s / 10.0;
+        for (int l = 0; l < n; l++)
+            for (int d = 0; d < 3; d++) T[3 * l + d] = (1 - a) * X0[3 * H[l] + d] + a * Q[3 * l + d];
+        if (clay_deform_solve(cd, T, 5, closed, X) < 0) goto done;
+    }
+    double sa = 0, sb = 0;
+    closest_points(TB, X, nva, NULL, NULL, NULL, D);
+    for (int v = 0; v < nva; v++) sa += D[v];
+    if (!(TX = closest_point_tree_new(X, nva, FA, nfa))) goto done;
+    closest_points(TX, VB, nvb, NULL, NULL, NULL, D);
+    for (int v = 0; v < nvb; v++) sb += D[v];
+    *fit = 0.5 * (sa / nva + sb / nvb) / sB;
+    rc = 0;
+done:
+    clay_deform_free(cd);
+    closest_point_tree_free(TX);
+    free(X0); free(X); free(D);
+    return rc;
+}
+
 void landmark_pairs_free(struct landmark_pairs *L)
 {
     free(L->a); free(L->b); free(L->kind);
@@ -357,6 +412,69 @@ int landmark_auto(const double *VA, const int *FA, int nva, int nfa,
             out->orient_mirror = o;
     }
     if (ib < 0) { cm_seterr("landmarks: fewer than 3 extremities of the two meshes match"); goto done; }
+    /* the candidates: the near-best map for each weight of the orientation,
+     * each tested by deformation; the best fit wins (see the header, 3.) */
+    if (p->verify) {
+        static const double wo[4] = {1, 0.5, 0.25, 0};
+        int cand[4], nc = 0;
+        for (int q = 0; q < 4; q++) {
+            double pk = -1e300;
+            int is = -1;
+            for (int s = 0; s < nbeam; s++) {
+                if (beam[s].score < (1 - p->margin) * best) break;
+                int k = 0;
+                for (int i = 0; i < na; i++) k += beam[s].m[i] >= 0;
+                if (k < 3) continue;
+                double v = beam[s].score / (best > 0 ? best : 1) +
+                           wo[q] * orientation(VA, EA, cA, VB, EB, cB, beam[s].m, na);
+                if (v > pk) { pk = v; is = s; }
+            }
+            int dup = is < 0;
+            for (int c = 0; c < nc; c++) dup |= cand[c] == is;
+            if (!dup) cand[nc++] = is;
+        }
+        double f[4];
+        int ok = nc > 1;
+        if (ok) {
+            struct topology tA = {0};
+            struct closest_point_tree *TB = NULL;
+            if (topology_build(FA, nfa, nva, &tA) < 0 || !(TB = closest_point_tree_new(VB, nvb, FB, nfb))) {
+                topology_free(&tA);
+                goto done;
+            }
+            int closed = tA.nboundary == 0 && tA.nnonmanifold == 0;
+            topology_free(&tA);
+            for (int c = 0; c < nc && ok; c++)
+                ok = map_fit(VA, FA, nva, nfa, closed, VB, nvb, TB, EA, EB, beam[cand[c]].m, na, sB, f + c) == 0;
+            closest_point_tree_free(TB);
+            if (!ok) {      /* kept: the map of score + orientation, said in why */
+                snprintf(out->why, sizeof out->why, "%s", cm_errmsg());
+                out->verified = -1;
+            }
+        }
+        if (ok) {
+            int b = 0, chosen = ib;
+            for (int c = 1; c < nc; c++) if (f[c] < f[b]) b = c;
+            ib = cand[b];
+            out->verified = nc;
+            out->fit = f[b];
+            out->fit_next = INFINITY;
+            for (int c = 0; c < nc; c++) if (c != b && f[c] < out->fit_next) out->fit_next = f[c];
+            out->changed = ib != chosen;
+            if (out->changed) {     /* the orientations of the chosen map and of the most mirrored other */
+                out->orient = orientation(VA, EA, cA, VB, EB, cB, beam[ib].m, na);
+                out->orient_mirror = -2;
+                for (int s = 0; s < nbeam; s++) {
+                    if (beam[s].score < (1 - p->margin) * best) break;
+                    int k = 0;
+                    for (int i = 0; i < na; i++) k += beam[s].m[i] >= 0;
+                    if (k < 3 || s == ib) continue;
+                    double o = orientation(VA, EA, cA, VB, EB, cB, beam[s].m, na);
+                    if (out->orient_mirror < -1 || o < out->orient_mirror) out->orient_mirror = o;
+                }
+            }
+        }
+    }
     int *m = beam[ib].m;
     /* drop matched extremities that disagree with the rest on average (a
      * spurious bump matched to some other bump) */

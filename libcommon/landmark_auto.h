@@ -18,6 +18,19 @@
  *    whose matched extremities keep their orientation wins: the signs of
  *    the triple products (x_i - c) . ((x_j - c) x (x_k - c)) over all
  *    triples, c the area centroid, weighted by the smaller volume.
+ *    That sign test is extrinsic: a limb swung across the body (a leg
+ *    lifted forward, a trunk swung aside) turns some triples over, and a
+ *    wrong map (the trunk taken for an ear) can agree better than the
+ *    right one.  With verify on, the orientation is not trusted alone:
+ *    the near-best maps chosen with weights 1, 1/2, 1/4 and 0
+ *    on the orientation are each tested by deformation -- A's matched tips
+ *    aligned rigidly (no reflection) onto B's, A deformed as rigidly as
+ *    possible until they sit there (clay_deform.h), then the mean
+ *    closest-point distance both ways -- and the map that fits B best
+ *    wins.  A mirrored map cannot be aligned without a reflection and fits
+ *    badly; a swapped limb leaves a limb where B has none.  Off by
+ *    default: on a narrow body (the camel) the deformation crosses the
+ *    legs about as cheaply as not (landmark-auto(1) has the figures).
  *    Pairs that disagree with the rest on average are dropped; then the
  *    leftovers get a second chance (second_ratio): a limb stretched far in
  *    one pose is not isometric to the other, but its tip is still the
@@ -48,6 +61,8 @@ struct landmark_auto_params {
                            r = 0.05, 0.1, 0.2 sqrt(area) of |log(a_A(r) / a_B(r))|, a(r)
                            the area within geodesic distance r of the extremity over the
                            whole area: a hoof is not a snout (default 1; 0: off) */
+    int verify;         /* 1: the near-best maps are tested by deformation (see 3.);
+                           0: the map with the best score + orientation (default) */
     double second_ratio;/* leftover extremities (a limb stretched far in one pose, not
                            isometric to the other): pair a leftover of A with one of B
                            whose mean mismatch to the matched ones is below penalty and
@@ -75,6 +90,14 @@ struct landmark_pairs {
     double cost;        /* mean |dA - dB| over matched extremity pairs, over sqrt(area of A) */
     double orient;      /* orientation agreement of the chosen map, -1..1 */
     double orient_mirror;/* that of the best mirrored competitor (-2: none) */
+    int verified;       /* maps tested by deformation (0: one candidate, or verify off;
+                           -1: the test could not run, e.g. a part without a tip for the
+                           deformation to hold: the map of score + orientation is kept,
+                           why says why) */
+    char why[160];
+    double fit, fit_next;/* the chosen map's deformation fit and the next best's, over
+                           sqrt(area of B) (when verified >= 2) */
+    int changed;        /* 1: the fit chose another map than score + orientation would */
 };
 
 /* Corresponding landmarks of A (VA, FA) and B (VB, FB).  Returns 0 or -1

@@ -17,8 +17,9 @@ static const char help[] =
 "poses (any connectivity): rows 'source_vertex target_vertex', the file nricp -l\n"
 "reads.  Extremities (tips of limbs, head, tail) are local maxima of the geodesic\n"
 "distance from both ends of the diameter; they are matched so that their geodesic\n"
-"distances agree, left and right by the orientation of the matched tips; then a\n"
-"point along each limb is added.\n"
+"distances agree, left and right by the orientation of the matched tips, and\n"
+"the near-best maps tested by deforming SOURCE onto TARGET; then a point along\n"
+"each limb is added.\n"
 "\n"
 "Options:\n"
 "      --radius R        local-maximum radius, fraction of sqrt(area) (default 0.1)\n"
@@ -31,6 +32,10 @@ static const char help[] =
 "                        (a hoof is not a snout; default 1, 0 off)\n"
 "      --second R        leftover tips (a limb stretched far in one pose) pair when\n"
 "                        each is the other's best by a factor R (default 1.5, 0 off)\n"
+"      --verify 0|1      1 (default): the near-best maps (orientation weighted 1,\n"
+"                        1/2, 1/4, 0) are each tested by an as-rigid-as-possible\n"
+"                        deformation of SOURCE onto TARGET, the best fit wins;\n"
+"                        0: score plus orientation alone (the earlier choice)\n"
 "      --core            also pair the cores (least sum of distances to the tips)\n"
 "      --extremities     only list SOURCE's extremities (one vertex per row)\n"
 "  -o, --output FILE     write to FILE (atomically) instead of stdout\n"
@@ -40,7 +45,7 @@ static const char help[] =
 "\n"
 "Example: landmark-auto a.mesh b.mesh > marks.txt && nricp -l marks.txt a.mesh b.mesh\n";
 
-enum { O_RADIUS = 256, O_PENALTY, O_MAX, O_LIMB, O_NOCORE, O_EXT, O_VERSION, O_DISC, O_SECOND };
+enum { O_RADIUS = 256, O_PENALTY, O_MAX, O_LIMB, O_NOCORE, O_EXT, O_VERSION, O_DISC, O_SECOND, O_VERIFY };
 
 int main(int argc, char **argv)
 {
@@ -49,7 +54,7 @@ int main(int argc, char **argv)
         {"radius", 1, 0, O_RADIUS}, {"penalty", 1, 0, O_PENALTY}, {"max", 1, 0, O_MAX},
         {"limb", 1, 0, O_LIMB}, {"core", 0, 0, O_NOCORE}, {"extremities", 0, 0, O_EXT},
         {"output", 1, 0, 'o'}, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
-        {"disc-weight", 1, 0, O_DISC}, {"second", 1, 0, O_SECOND},
+        {"disc-weight", 1, 0, O_DISC}, {"second", 1, 0, O_SECOND}, {"verify", 1, 0, O_VERIFY},
         {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
     struct landmark_auto_params p;
     landmark_auto_defaults(&p);
@@ -78,6 +83,10 @@ int main(int argc, char **argv)
         case O_NOCORE: p.core = 1; break;
         case O_DISC: p.disc_weight = arg_double(optarg, "--disc-weight"); break;
         case O_SECOND: p.second_ratio = arg_double(optarg, "--second"); break;
+        case O_VERIFY:
+            if (strcmp(optarg, "0") && strcmp(optarg, "1")) usage_error("--verify must be 0 or 1");
+            p.verify = optarg[0] == '1';
+            break;
         case O_EXT: only_ext = 1; break;
         case 'o': output = optarg; break;
         case 'v': verbose++; break;
@@ -118,11 +127,20 @@ int main(int argc, char **argv)
     info(1, "extremities: %d on %s, %d on %s; %d matched (%d by the second chance), distance mismatch %.3g sqrt(area), "
          "orientation %.2f (mirrored competitor %.2f)", L.na, argv[optind], L.nb, argv[optind + 1],
          L.matched, L.second, L.cost, L.orient, L.orient_mirror);
+    if (L.verified < 0)
+        warn("the near-best maps were not tested by deformation (%s): the map of score and "
+             "orientation alone is kept", L.why);
+    if (L.verified > 0)
+        info(1, "verified by deformation: %d candidate maps, the chosen fits TARGET to %.3g sqrt(area), "
+             "the next best %.3g%s", L.verified, L.fit, L.fit_next,
+             L.changed ? " (score and orientation alone would have chosen another)" : "");
     FILE *f = out_open(output);
     static const char *kinds[] = {"extremity", "limb", "core"};
     fprintf(f, "# landmark-auto %s -> %s: %d extremities matched of %d and %d, "
-            "mismatch %.3g, orientation %.2f\n", argv[optind], argv[optind + 1], L.matched, L.na,
+            "mismatch %.3g, orientation %.2f", argv[optind], argv[optind + 1], L.matched, L.na,
             L.nb, L.cost, L.orient);
+    if (L.verified) fprintf(f, ", fit %.3g of %d maps verified", L.fit, L.verified);
+    fprintf(f, "\n");
     for (int i = 0; i < L.n; i++) fprintf(f, "%d %d  # %s\n", L.a[i], L.b[i], kinds[L.kind[i]]);
     out_close(f);
     landmark_pairs_free(&L);

@@ -478,9 +478,13 @@ static int auto_landmarks(const double *V, const struct mesh *S, const struct me
             L->dst[l] = lpairs.b[l];
             memcpy(L->P + 3 * l, T->V + 3 * (size_t)lpairs.b[l], 3 * sizeof *L->P);
         }
+        if (lpairs.verified < 0)
+            warn("automatic landmarks: the near-best maps were not tested by deformation (%s): the "
+                 "map of score and orientation alone is kept", lpairs.why);
         info(1, "automatic landmarks: %d extremities matched (of %d and %d), %d pairs, "
-             "orientation %.2f, %.2f s", lpairs.matched, lpairs.na, lpairs.nb, L->n, lpairs.orient,
-             now_seconds() - ta);
+             "orientation %.2f, %d maps verified by deformation%s, %.2f s", lpairs.matched, lpairs.na,
+             lpairs.nb, L->n, lpairs.orient, lpairs.verified > 0 ? lpairs.verified : 0,
+             lpairs.changed ? " (another than score and orientation alone)" : "", now_seconds() - ta);
         landmark_pairs_free(&lpairs);
     }
     return 0;
