@@ -440,7 +440,36 @@ static int bisect(struct work *w, int f1, int f2, int a, int b)
     return 1;
 }
 
-static int split_pass(struct work *w, const struct compat_refine_params *pa, double frac, int *nsplit, int *nbsplit)
+/* the edge of face f whose bisection gives the new triangles the largest
+ * smallest angle over every shape (kdef on a tie or if none is valid) */
+static int lookahead_edge(const struct compat *c, const struct topology *t, int f, int kdef, const unsigned char *touched)
+{
+    const int *F = c->F + 3 * f;
+    int kbest = kdef;
+    double qbest = -2;
+    for (int k0 = 0; k0 < 3; k0++) {
+        int k = (kdef + k0) % 3;
+        int e = t->FE[3 * f + k];
+        int a = F[k], b = F[(k + 1) % 3], p = F[(k + 2) % 3], q = -1;
+        if (t->EFn[e] == 2) {
+            int f2 = t->EF[2 * e] == f ? t->EF[2 * e + 1] : t->EF[2 * e];
+            if (touched[f2]) continue;
+            q = third(c->F, f2, a, b);
+        } else if (t->EFn[e] != 1) continue;
+        double qk = INFINITY;
+        for (int s = 0; s < c->N && qk > qbest; s++) {
+            const double *X = c->X[s];
+            double m[2] = {0.5 * (X[2 * a] + X[2 * b]), 0.5 * (X[2 * a + 1] + X[2 * b + 1])};
+            double x = fmin(sin_min_valid(X + 2 * a, m, X + 2 * p), sin_min_valid(m, X + 2 * b, X + 2 * p));
+            if (q >= 0) x = fmin(x, fmin(sin_min_valid(X + 2 * b, m, X + 2 * q), sin_min_valid(m, X + 2 * a, X + 2 * q)));
+            qk = fmin(qk, x);
+        }
+        if (qk > qbest + 1e-12) { qbest = qk; kbest = k; }
+    }
+    return kbest;
+}
+
+static int split_pass(struct work *w, const struct compat_refine_params *pa, double frac, int look, int *nsplit, int *nbsplit)
 {
     double goal = pa->goal;
     int max_nv = pa->max_nv;
@@ -494,6 +523,7 @@ static int split_pass(struct work *w, const struct compat_refine_params *pa, dou
             double l = (v[0] - u[0]) * (v[0] - u[0]) + (v[1] - u[1]) * (v[1] - u[1]);
             if (l > lbest) { lbest = l; kbest = k; }
         }
+        if (look) kbest = lookahead_edge(c, &t, f, kbest, touched);
         int e = t.FE[3 * f + kbest];
         int a = F[kbest], b = F[(kbest + 1) % 3];
         int f2 = -1;
@@ -1676,7 +1706,7 @@ static int refine_round(struct compat_refiner *r)
      * the goal (compat_refine_params.split_share) */
     double frac = 1;
     if (r->pass && r->prounds > COMPAT_REFINE_FULL_SPLITS) frac = pa->split_share;
-    int n = split_pass(w, pa, frac, &st->splits, &st->bsplits);
+    int n = split_pass(w, pa, frac, r->pass == 2, &st->splits, &st->bsplits);
     if (n < 0) return -1;
     if (n == 0) { st->stop = COMPAT_REFINE_NOSPLIT; r->done = 1; return 0; }
     r->capped = c->nv >= pa->max_nv;   /* smoothed once more, then stop */
@@ -1708,28 +1738,12 @@ static int settle(struct compat_refiner *r)
     return 0;
 }
 
-int compat_refine_step(struct compat_refiner *r)
+/* back to the mesh after compat_refine_begin for the next pass */
+static int restart(struct compat_refiner *r, int pass)
 {
-    int k = refine_round(r);
-    struct compat_refine_stats *st = r->st;
-    if (k != 0 || r->pass || !r->start.nv || st->stop == COMPAT_REFINE_GOAL || st->stop == COMPAT_REFINE_ROUNDS)
-        return k;
-    /* the first pass ended below the goal: its result is kept aside and
-     * the refinement starts again from the beginning, splitting only the
-     * worst share of the bad triangles after the first rounds; the better
-     * of the two is the result (a tie keeps the first) */
     struct work *w = &r->w;
     struct compat *c = r->c;
-    st->stalled = r->stall;
-    if (settle(r) < 0) return -1;
-    int wf, ws, nb;
-    r->walt = worst_ratio(w, r->pa.goal, &wf, &ws, &nb);
-    if (r->walt < 0) return -1;
-    r->settled = 1;
-    if (r->walt >= 1) return 0;   /* the final polish reached the goal */
-    r->settled = 0;
-    if (best_take(w, r->nvin, &r->alt) < 0) return -1;
-    r->alt_stats = *st;
+    struct compat_refine_stats *st = r->st;
     best_restore(w, &r->start, &r->nvin);
     memcpy(w->id, r->start_id, c->nv * sizeof *w->id);
     memcpy(w->sig, r->start_sig, c->nv * sizeof *w->sig);
@@ -1746,13 +1760,45 @@ int compat_refine_step(struct compat_refiner *r)
     r->stall = r->capped = 0;
     r->full = 1;
     r->prounds = 0;
-    r->pass = 1;
+    r->pass = pass;
     r->done = r->st->rounds >= r->pa.rounds;
     st->stop = COMPAT_REFINE_ROUNDS;
     st->cycles = 0;
     st->restored = 0;
-    st->rerun = 1;
+    st->rerun = pass == 1 ? 1 : 3;
     return r->done ? 0 : 1;
+}
+
+int compat_refine_step(struct compat_refiner *r)
+{
+    int k = refine_round(r);
+    struct compat_refine_stats *st = r->st;
+    if (k != 0 || r->pass == 2 || (r->pass == 1 && !r->pa.lookahead) || !r->start.nv ||
+        st->stop == COMPAT_REFINE_GOAL || st->stop == COMPAT_REFINE_ROUNDS)
+        return k;
+    /* the first pass ended below the goal: its result is kept aside and
+     * the refinement starts again from the beginning, splitting only the
+     * worst share of the bad triangles after the first rounds; the better
+     * of the two is the result (a tie keeps the first).  With
+     * pa->lookahead, a second pass below the goal is followed the same way
+     * by a third that splits the edge each bad triangle is best split at
+     * over every pose, the best of the three kept. */
+    struct work *w = &r->w;
+    st->stalled = r->stall;
+    if (settle(r) < 0) return -1;
+    int wf, ws, nb;
+    double wk = worst_ratio(w, r->pa.goal, &wf, &ws, &nb);
+    if (wk < 0) return -1;
+    r->settled = 1;
+    if (wk >= 1) return 0;   /* the final polish reached the goal */
+    r->settled = 0;
+    if (r->pass == 0 || wk > r->walt) {   /* the best pass so far */
+        r->walt = wk;
+        if (best_take(w, r->nvin, &r->alt) < 0) return -1;
+        r->alt_stats = *st;
+        r->alt_stats.rerun = r->pass == 0 ? 2 : 1;
+    }
+    return restart(r, r->pass + 1);
 }
 
 void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad, int *fewest)
@@ -1778,6 +1824,52 @@ void compat_refine_progress(const struct compat_refiner *r, double *worst, int *
     if (fewest) *fewest = r->nbest;
 }
 
+/* back to the best earlier pass (r->alt): its stop reason, the counts of
+ * all passes.  0 or -1. */
+static int keep_alt(struct compat_refiner *r)
+{
+    struct compat_refine_stats *st = r->st;
+    best_restore(&r->w, &r->alt, &r->nvin);
+    int rounds = st->rounds, splits = st->splits, bsplits = st->bsplits, flips = st->flips, moves = st->moves,
+        collapses = st->collapses, coarsened = st->coarsened;
+    *st = r->alt_stats;
+    st->rounds = rounds; st->splits = splits; st->bsplits = bsplits; st->flips = flips;
+    st->moves = moves; st->collapses = collapses; st->coarsened = coarsened;
+    return 0;
+}
+
+/* below the goal: the global max-min polish of the poses, and flips,
+ * while that raises the worst angle (it only moves vertices where a
+ * pose's smallest angle rises, and flips only raise the worst angle, so
+ * the result is never worse than the mesh it starts from).  Returns the worst ratio to the
+ * goal after it, -1 on error. */
+static double final_gpolish(struct compat_refiner *r)
+{
+    struct compat *c = r->c;
+    struct compat_refine_stats *st = r->st;
+    struct work *w = &r->w;
+    double goal = r->pa.goal;
+    int wf, ws, nb;
+    double wk = worst_ratio(w, goal, &wf, &ws, &nb);
+    if (wk < 0) return -1;
+    if (wk < 1) st->gpolish[0] = st->gpolish[1] = compat_min_angle(c, NULL);
+    for (int it = 0; it < COMPAT_REFINE_GPOLISH && wk < 1; it++) {
+        int g = global_polish(c, w->bnd, w->seg, goal, r->pa.threads);
+        if (g < 0) return -1;
+        if (!g) break;
+        st->gpolish[1] = compat_min_angle(c, NULL);
+        int f0 = st->flips;
+        if (flips_until_done(c, &st->flips) < 0) return -1;
+        if (st->flips == f0) break;
+        double wn = worst_ratio(w, goal, &wf, &ws, &nb);
+        if (wn < 0) return -1;
+        st->gpolish[1] = compat_min_angle(c, NULL);
+        if (wn < wk + COMPAT_REFINE_GAIN / goal) break;
+        wk = wn;
+    }
+    return worst_ratio(w, goal, &wf, &ws, &nb);
+}
+
 int compat_refine_finish(struct compat_refiner *r)
 {
     struct compat *c = r->c;
@@ -1790,45 +1882,36 @@ int compat_refine_finish(struct compat_refiner *r)
         st->stalled = r->stall;
         if (settle(r) < 0) goto out;
     }
-    /* the second pass not better than the first: back to the first's */
+    /* a later pass not better than the best earlier one: back to that */
+    int gdone = 0;   /* the global polish done */
     if (r->pass) {
         int wf, ws, nb;
         double wk = worst_ratio(w, goal, &wf, &ws, &nb);
         if (wk < 0) goto out;
         if (r->walt >= wk) {
-            best_restore(w, &r->alt, &r->nvin);
-            int rounds = st->rounds, splits = st->splits, bsplits = st->bsplits, flips = st->flips, moves = st->moves,
-                collapses = st->collapses, coarsened = st->coarsened;
-            *st = r->alt_stats;   /* its stop reason; the counts are of both passes */
-            st->rounds = rounds; st->splits = splits; st->bsplits = bsplits; st->flips = flips;
-            st->moves = moves; st->collapses = collapses; st->coarsened = coarsened;
-            st->rerun = 2;
+            if (keep_alt(r) < 0) goto out;
+        } else if (r->pass == 2 && r->remesh && wk < 1) {
+            /* the third pass is better before the global polish; both are
+             * polished and the third kept only if still better after it
+             * (the polish can gain more on the other) */
+            struct best third;
+            struct compat_refine_stats st3;
+            memset(&third, 0, sizeof third);
+            double w3 = final_gpolish(r);
+            if (w3 < 0 || best_take(w, r->nvin, &third) < 0) { best_free(c->N, &third); goto out; }
+            st3 = *st;
+            if (keep_alt(r) < 0) { best_free(c->N, &third); goto out; }
+            double wa = final_gpolish(r);
+            if (wa < 0) { best_free(c->N, &third); goto out; }
+            if (w3 > wa) {
+                best_restore(w, &third, &r->nvin);
+                *st = st3;
+            }
+            best_free(c->N, &third);
+            gdone = 1;
         }
     }
-    /* below the goal: the global max-min polish of the poses, and flips,
-     * while that raises the worst angle (it only moves vertices where a
-     * pose's smallest angle rises, and flips only raise the worst angle,
-     * so the result is never worse than the mesh it starts from) */
-    if (r->remesh) {
-        int wf, ws, nb;
-        double wk = worst_ratio(w, goal, &wf, &ws, &nb);
-        if (wk < 0) goto out;
-        if (wk < 1) st->gpolish[0] = st->gpolish[1] = compat_min_angle(c, NULL);
-        for (int it = 0; it < COMPAT_REFINE_GPOLISH && wk < 1; it++) {
-            int g = global_polish(c, w->bnd, w->seg, goal, pa->threads);
-            if (g < 0) goto out;
-            if (!g) break;
-            st->gpolish[1] = compat_min_angle(c, NULL);
-            int f0 = st->flips;
-            if (flips_until_done(c, &st->flips) < 0) goto out;
-            if (st->flips == f0) break;
-            double wn = worst_ratio(w, goal, &wf, &ws, &nb);
-            if (wn < 0) goto out;
-            st->gpolish[1] = compat_min_angle(c, NULL);
-            if (wn < wk + COMPAT_REFINE_GAIN / goal) break;
-            wk = wn;
-        }
-    }
+    if (r->remesh && !gdone && final_gpolish(r) < 0) goto out;
     /* where the worst triangle is and how stretched the maps are there */
     r->wcur = worst_ratio(w, goal, &r->wf, &r->ws, &r->nbad);
     if (r->wcur < 0) goto out;

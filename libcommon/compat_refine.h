@@ -81,7 +81,8 @@ struct compat_refine_stats {
                           goal, 1 if the second pass (only the worst share
                           split) was run and kept, 2 if it was run and the
                           first pass kept (stop, stalled, cycles and
-                          restored are then of the first pass) */
+                          restored are then of the kept pass), 3 if the
+                          third pass (pa->lookahead) was run and kept */
     int restored;      /* 1 if the mesh went back to the best round (later
                           rounds only added vertices) */
     int cycles;        /* stalls answered by going back to the best round,
@@ -154,6 +155,14 @@ struct compat_refine_params {
                           smoothing has spread the stretch; splitting the
                           worst only leaves the smoothing, polish and
                           flips more rounds per vertex */
+    int lookahead;     /* (split_share < 1) 1: a second pass that ends
+                          below the goal is followed by a third, from the
+                          start again and with the same share, in which
+                          each triangle below the goal is bisected at the
+                          edge whose split gives the new triangles the
+                          largest smallest angle over every shape (not the
+                          longest edge in its worst shape); the best of the
+                          three passes is the result (a tie: the earlier) */
 };
 /* rounds of the second pass that split every triangle below the goal
  * before split_share applies */

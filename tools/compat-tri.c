@@ -95,8 +95,10 @@ static const char help[] =
 "      --split-share F   a --refine that ends below --min-angle is run again\n"
 "                        from its start, splitting after 3 rounds only the\n"
 "                        worst share F of the triangles below the goal each\n"
-"                        round; the better of the two is kept (default 0.2;\n"
-"                        1: one pass only, the refinement before)\n"
+"                        round, and if that too ends below it, a third time\n"
+"                        the same with each bad triangle split at the edge\n"
+"                        whose halves are best over every pose; the best\n"
+"                        pass is kept (default 0.2; 1: one pass only)\n"
 "      --threads N       the boundary matching, the triangulation's split\n"
 "                        search and the refinement's smoothing run on N\n"
 "                        threads (default 0: one per core); the output does\n"
@@ -558,7 +560,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
 {
     struct compat_refine_params pa = {o->min_angle * M_PI / 180, 0, o->max_nv ? o->max_nv : cpp->nv + 10 * cpp->nb, 200,
-                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share};
+                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share, 1};
     return pa;
 }
 
@@ -595,11 +597,18 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
                      rs->restored ? " (back to the best round's mesh)" : "");
         else if (rs->stop == COMPAT_REFINE_NOSPLIT) snprintf(why, sizeof why, "no split keeps every pose positive");
         else snprintf(why, sizeof why, "%d rounds used up", pa->rounds);
-        if (rs->rerun) {   /* the second pass of --split-share */
+        if (rs->rerun) {   /* the second and third passes of --split-share */
             size_t n = strlen(why);
-            snprintf(why + n, sizeof why - n, rs->rerun == 1 ? " in the second pass (from the start, --split-share %g), kept"
-                                                            : " in the first pass, kept (the second, --split-share %g, was not better)",
-                     pa->split_share);
+            const char *third = pa->lookahead ? ", and the third, splits chosen over every pose," : "";
+            if (rs->rerun == 3)
+                snprintf(why + n, sizeof why - n, " in the third pass (from the start, --split-share %g, each bad triangle "
+                         "split at the edge whose halves are best over every pose), kept", pa->split_share);
+            else if (rs->rerun == 1)
+                snprintf(why + n, sizeof why - n, " in the second pass (from the start, --split-share %g), kept%s",
+                         pa->split_share, pa->lookahead ? " (the third, splits chosen over every pose, was not better)" : "");
+            else
+                snprintf(why + n, sizeof why - n, " in the first pass, kept (the second, --split-share %g%s %s not better)",
+                         pa->split_share, third, pa->lookahead ? "were" : "was");
         }
         if (rs->gpolish[1] > rs->gpolish[0]) {   /* the global max-min polish of the result */
             size_t n = strlen(why);
