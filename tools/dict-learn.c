@@ -401,12 +401,13 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
 
 int main(int argc, char **argv)
 {
-    /* OpenBLAS's worker threads, idle between the few threaded calls
-     * (sketch finish, library, report), spin in sched_yield for 2^28
-     * cycles by default: 3-4% of the Monkey-size run's CPU (perf), taken
-     * from this program's own threads on 2 cores.  2^4 cycles: they sleep
-     * at once (the same numbers; read when OpenBLAS loads, so it takes
-     * effect through blas_tune's re-execution; a user's value is kept) */
+    /* OpenBLAS's worker threads, idle between the few threaded calls,
+     * spin in sched_yield for 2^28 cycles before they sleep.
+     * OPENBLAS_THREAD_TIMEOUT = 4 makes them sleep at once, but OpenBLAS
+     * reads it only when it loads: it acts only through blas_tune's
+     * re-execution (not when the caller chose OPENBLAS_CORETYPE, as the
+     * tests and benchmarks do; a streamed run then keeps BLAS on one
+     * thread, below).  A user's value is kept. */
     setenv("OPENBLAS_THREAD_TIMEOUT", "4", 0);
     blas_tune(argv);
     tool_init(argc, argv);
@@ -424,6 +425,14 @@ int main(int argc, char **argv)
     const void *map;
     size_t maplen;
     int streamed = read_anim(&o, &m, &wc, &S, &map, &maplen);
+    /* streamed, the BLAS calls are a few large ones (the sketch's finish,
+     * the pieces' solve) between phases whose threads are this program's
+     * own: on one BLAS thread OpenBLAS's workers never wake.  Woken, each
+     * spun in sched_yield after the call, and the caller yielded while
+     * waiting for a descheduled worker: 118k sched_yield calls at the
+     * Monkey size on 2 shared cores (1.7k on one thread; the same bytes:
+     * the threads split no inner dimension) */
+    if (streamed) blas_single_thread();
     stage(streamed ? "read + sketch" : "read");
     struct mesh fx = {0};
     if (o.fixed) {
