@@ -17,6 +17,7 @@
 #include "progress.h"
 #include "cm_error.h"
 #include <getopt.h>
+#include <malloc.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -410,6 +411,8 @@ int main(int argc, char **argv)
      * thread, below).  A user's value is kept. */
     setenv("OPENBLAS_THREAD_TIMEOUT", "4", 0);
     blas_tune(argv);
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
     tool_init(argc, argv);
     struct options o;
     parse_args(argc, argv, &o);
