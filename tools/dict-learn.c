@@ -300,6 +300,20 @@ static void add_frame_cut(struct mesh *m, int cut)
     m->nframes++;
 }
 
+/* Streamed, the BLAS calls are a few large ones (the sketch's finish, the
+ * pieces' solve) between phases whose threads are this program's own: on
+ * one BLAS thread, set when the sketch starts, OpenBLAS's workers are
+ * stopped before the read and never wake.  Woken, each spun in sched_yield
+ * after a call, and the caller yielded while waiting for a descheduled
+ * worker: 118k-148k sched_yield calls at the Monkey size on 2 shared cores
+ * (the same bytes: the threads split no inner dimension). */
+static int sketch_start(struct replib_sketch *S, int nv, const struct options *o, const struct columns *wc,
+                        size_t keep)
+{
+    blas_single_thread();
+    return replib_sketch_init(S, nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed);
+}
+
 static int read_anim(const struct options *o, struct mesh *m, struct columns *wc, struct replib_sketch *S,
                      const void **map, size_t *maplen)
 {
@@ -323,7 +337,7 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
         /* no copy: the frames are where they lie */
         size_t keep = (size_t)(o->memory * 1048576.0);
         if (r.nframes > 0 && (double)r.nframes * 12 * m->nv > o->memory * 1048576.0) keep = 0;
-        if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
+        if (sketch_start(S, m->nv, o, wc, keep) < 0)
             die("%s", cm_errmsg());
         S->expect = r.nframes > 0 ? r.nframes : 0;
         /* the file stays mapped until the pieces are built, and its frames
@@ -373,7 +387,7 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
              * result, without filling and freeing the budget) */
             size_t keep = (size_t)(o->memory * 1048576.0);
             if (r.nframes > 0 && (double)r.nframes * 12 * m->nv > o->memory * 1048576.0) keep = 0;
-            if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
+            if (sketch_start(S, m->nv, o, wc, keep) < 0)
                 die("%s", cm_errmsg());
             S->expect = r.nframes > 0 ? r.nframes : 0;
             for (int g = 0; g < f; g++)
@@ -432,14 +446,6 @@ int main(int argc, char **argv)
     const void *map;
     size_t maplen;
     int streamed = read_anim(&o, &m, &wc, &S, &map, &maplen);
-    /* streamed, the BLAS calls are a few large ones (the sketch's finish,
-     * the pieces' solve) between phases whose threads are this program's
-     * own: on one BLAS thread OpenBLAS's workers never wake.  Woken, each
-     * spun in sched_yield after the call, and the caller yielded while
-     * waiting for a descheduled worker: 118k sched_yield calls at the
-     * Monkey size on 2 shared cores (1.7k on one thread; the same bytes:
-     * the threads split no inner dimension) */
-    if (streamed) blas_single_thread();
     stage(streamed ? "read + sketch" : "read");
     struct mesh fx = {0};
     if (o.fixed) {
