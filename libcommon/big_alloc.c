@@ -6,7 +6,7 @@
 
 void *big_alloc(size_t bytes)
 {
-    if (bytes < ((size_t)32 << 20)) return malloc(bytes);
+    if (bytes < ((size_t)2 << 20)) return malloc(bytes);
     void *p = NULL;
     size_t align = (size_t)2 << 20;
     if (posix_memalign(&p, align, (bytes + align - 1) / align * align) != 0) return NULL;
@@ -18,7 +18,7 @@ void *big_alloc(size_t bytes)
 
 void *big_calloc(size_t bytes)
 {
-    if (bytes < ((size_t)32 << 20)) return calloc(1, bytes ? bytes : 1);
+    if (bytes < ((size_t)2 << 20)) return calloc(1, bytes ? bytes : 1);
     size_t align = (size_t)2 << 20, len = (bytes + align - 1) / align * align;
     void *p = big_alloc(bytes);
     if (p && madvise(p, len, MADV_DONTNEED) != 0) memset(p, 0, bytes);

@@ -29,7 +29,14 @@ void blas_tune(char **argv)
     unsetenv("OPENBLAS_CORETYPE");      /* exec failed: carry on as we are */
 }
 
+/* OpenBLAS's pthread server (exported; absent from other builds: weak) */
+extern int blas_thread_shutdown_(void) __attribute__((weak));
+
 void blas_single_thread(void)
 {
-    if (!getenv("OPENBLAS_NUM_THREADS") && !getenv("OMP_NUM_THREADS")) openblas_set_num_threads(1);
+    if (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) return;
+    openblas_set_num_threads(1);
+    /* the workers OpenBLAS started when it loaded: stopped (no call starts
+     * them again on one thread) */
+    if (blas_thread_shutdown_) blas_thread_shutdown_();
 }

@@ -25,7 +25,10 @@ void blas_tune(char **argv);
  * vertices (CHOLMOD's supernodes are small) OpenBLAS's worker threads
  * mostly spin in sched_yield: one thread costs no wall time and saves a
  * third to a half of the CPU time (clay-deform on a 3520-face tube: 4.4-4.9
- * s CPU -> 2.7 s, 2.2-2.5 s wall either way). */
+ * s CPU -> 2.7 s, 2.2-2.5 s wall either way).  The worker threads OpenBLAS
+ * started when it loaded are stopped (its pthread build's
+ * blas_thread_shutdown_; nothing elsewhere): idle, they spin in sched_yield
+ * for 2^28 cycles before they sleep. */
 void blas_single_thread(void);
 
 /* The kernel OpenBLAS uses ("SkylakeX", "Prescott", ...). */

@@ -1,6 +1,7 @@
 /* chainlabel.c -- exact DP, alpha-expansion and swap on chain labelings.
  * See chainlabel.h for the energy. */
 #include "chainlabel.h"
+#include "big_alloc.h"
 #include "graphcut.h"
 #include "cm_error.h"
 #include <math.h>
@@ -65,7 +66,7 @@ double chain_dp(const struct chain *p, int *l)
     int n = p->n, d = p->d;
     double *V = malloc(sizeof(double) * d);
     double *Vn = malloc(sizeof(double) * d);
-    double *hs = malloc(sizeof(double) * (size_t)n * d);   /* h of every frame, for the backtrack */
+    double *hs = big_alloc(sizeof(double) * (size_t)n * d);   /* h of every frame, for the backtrack */
     if (!V || !Vn || !hs) {
         free(V); free(Vn); free(hs);
         cm_seterr("chain_dp: out of memory (%d frames, %d labels)", n, d);

@@ -819,11 +819,12 @@ static int work_init(struct work *w, const struct replib_data *D, int d)
     memset(w, 0, sizeof *w);
     w->d = d;
     size_t N = D->N, n = D->n;
-    w->P = malloc(sizeof(double) * N * d);
+    /* the n by d arrays on huge pages (big_alloc.h) */
+    w->P = big_alloc(sizeof(double) * N * d);
     w->Q = malloc(sizeof(double) * (size_t)d * d);
-    w->U = malloc(sizeof(double) * n * d);
+    w->U = big_alloc(sizeof(double) * n * d);
     w->T = malloc(sizeof(double) * (size_t)d * d);
-    w->H = calloc(n * d, sizeof(double));
+    w->H = big_calloc(sizeof(double) * n * d);
     w->c = calloc(n, sizeof(double));
     w->qd = malloc(sizeof(double) * d);
     if (D->K) w->C = malloc(sizeof(double) * (size_t)d * N);
@@ -1019,7 +1020,7 @@ static int best_costs(const struct replib_data *D, double mu, struct work *w, in
 {
     size_t np = (size_t)D->N * w->d, nq = (size_t)w->d * w->d, nr = D->K ? 0 : (size_t)w->d * D->zdim;
     if (!w->Qb) {
-        w->Pspare = malloc(sizeof(double) * np);
+        w->Pspare = big_alloc(sizeof(double) * np);
         w->Qb = malloc(sizeof(double) * nq);
         w->lwb = malloc(sizeof(int) * D->n);
         w->Rwb = nr ? malloc(sizeof(double) * nr) : NULL;

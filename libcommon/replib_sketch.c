@@ -131,18 +131,74 @@ static inline void vadd4(double *restrict y, const double *restrict x0, const do
     for (int i = 0; i < n; i++) y[i] = (((y[i] + s0 * x0[i]) + s1 * x1[i]) + s2 * x2[i]) + s3 * x3[i];
 }
 
+/* The same three with the frames read where they lie: z = x - r, or
+ * sw (x - r) with weights (sw not NULL), formed as center_row forms it, so
+ * the same sums as on the stored rows */
+#define ZX(x, i) (sw ? sw[i] * ((x)[i] - r[i]) : (x)[i] - r[i])
+static inline void vaddx(double *restrict y, const mapped_double *restrict x0, const double *restrict r,
+                         const double *restrict sw, int n, double sg)
+{
+    for (int i = 0; i < n; i++) y[i] += sg * ZX(x0, i);
+}
+
+static inline void vadd2x(double *restrict y, const mapped_double *restrict x0, const mapped_double *restrict x1,
+                          const double *restrict r, const double *restrict sw, int n, double s0, double s1)
+{
+    for (int i = 0; i < n; i++) y[i] = (y[i] + s0 * ZX(x0, i)) + s1 * ZX(x1, i);
+}
+
+static inline void vadd4x(double *restrict y, const mapped_double *restrict x0, const mapped_double *restrict x1,
+                          const mapped_double *restrict x2, const mapped_double *restrict x3,
+                          const double *restrict r, const double *restrict sw, int n,
+                          double s0, double s1, double s2, double s3)
+{
+    for (int i = 0; i < n; i++)
+        y[i] = (((y[i] + s0 * ZX(x0, i)) + s1 * ZX(x1, i)) + s2 * ZX(x2, i)) + s3 * ZX(x3, i);
+}
+
 /* W += Psi_b Z_b for the batch, by strips of columns: each row of W takes
  * its frames of the batch in order (pl: the frames of row i are
  * pl[po[i] .. po[i+1]-1], 2 frame + (sign < 0)), so every value of W sums
  * its frames in frame order whatever the batching, and the row's strip
  * stays in L1 while the batch's strip is in L2 */
-struct wjob { struct replib_sketch *S; const double *zb; const int *po, *pl; int nb; };
+struct wjob { struct replib_sketch *S; const double *zb; const mapped_double *const *xs; const int *po, *pl; int nb; };
+
+/* the same, the batch's frames read where they lie (xs: nb pointers) */
+SKETCH_SIMD
+static void w_update_strips_x(struct wjob *j)
+{
+    struct replib_sketch *S = j->S;
+    int m3 = S->m3, s = S->s;
+    const mapped_double *const *xs = j->xs;
+    for (int t0 = 0; t0 < m3; t0 += STRIP) {
+        int len = m3 - t0 < STRIP ? m3 - t0 : STRIP;
+        const double *r = S->ref + t0, *sw = S->sw ? S->sw + t0 : NULL;
+        for (int i = 0; i < s; i++) {
+            double *w = S->W + (size_t)i * m3 + t0;
+            int q = j->po[i], q1 = j->po[i + 1];
+            for (; q + 4 <= q1; q += 4) {
+                const int *e = j->pl + q;
+                vadd4x(w, xs[e[0] >> 1] + t0, xs[e[1] >> 1] + t0, xs[e[2] >> 1] + t0, xs[e[3] >> 1] + t0, r, sw, len,
+                       e[0] & 1 ? -1.0 : 1.0, e[1] & 1 ? -1.0 : 1.0, e[2] & 1 ? -1.0 : 1.0, e[3] & 1 ? -1.0 : 1.0);
+            }
+            for (; q + 2 <= q1; q += 2) {
+                const int *e = j->pl + q;
+                vadd2x(w, xs[e[0] >> 1] + t0, xs[e[1] >> 1] + t0, r, sw, len, e[0] & 1 ? -1.0 : 1.0, e[1] & 1 ? -1.0 : 1.0);
+            }
+            for (; q < q1; q++) {
+                int e = j->pl[q];
+                vaddx(w, xs[e >> 1] + t0, r, sw, len, e & 1 ? -1.0 : 1.0);
+            }
+        }
+    }
+}
 
 SKETCH_SIMD
 static void w_update_strips(struct wjob *j)
 {
     struct replib_sketch *S = j->S;
     int m3 = S->m3, s = S->s;
+    if (j->xs) { w_update_strips_x(j); return; }
     for (int t0 = 0; t0 < m3; t0 += STRIP) {
         int len = m3 - t0 < STRIP ? m3 - t0 : STRIP;
         for (int i = 0; i < s; i++) {
@@ -247,11 +303,53 @@ static void y_lanes(struct replib_sketch *S, const double *zb, int nb, int f0, d
     }
 }
 
+/* y_lanes on frames read where they lie (xs: nb pointers into one mapping,
+ * each less than 2^31 bytes past xs[0]): coordinate t of the 32 frames
+ * gathered by byte offsets, then z = x - ref (times sw with weights), the
+ * operations of center_row, so the same Y. */
+__attribute__((target("avx512f")))
+static void y_lanes_x(struct replib_sketch *S, const mapped_double *const *xs, int nb, int f0, double *yt)
+{
+    int m3 = S->m3, k = S->k, zeta = S->zeta;
+    const double *ref = S->ref, *sw = S->sw;
+    for (int b0 = 0; b0 < nb; b0 += 32) {
+        int idx[32];
+        const char *x0 = (const char *)(const void *)xs[b0];
+        for (int c = 0; c < 32; c++)        /* spare lanes: a copy */
+            idx[c] = b0 + c < nb ? (int)((const char *)(const void *)xs[b0 + c] - x0) : 0;
+        __m256i v0 = _mm256_loadu_si256((const __m256i *)idx), v1 = _mm256_loadu_si256((const __m256i *)(idx + 8));
+        __m256i v2 = _mm256_loadu_si256((const __m256i *)(idx + 16)), v3 = _mm256_loadu_si256((const __m256i *)(idx + 24));
+        memset(yt, 0, sizeof(double) * 32 * (size_t)k);
+        const int *om = S->om;
+        const __m512d one = _mm512_set1_pd(1.0), mone = _mm512_set1_pd(-1.0);
+        for (int t = 0; t < m3; t++, om += zeta) {
+            const char *xt = x0 + 8 * (size_t)t;
+            __m512d r = _mm512_set1_pd(ref[t]);
+            __m512d z0 = _mm512_sub_pd(_mm512_i32gather_pd(v0, xt, 1), r), z1 = _mm512_sub_pd(_mm512_i32gather_pd(v1, xt, 1), r);
+            __m512d z2 = _mm512_sub_pd(_mm512_i32gather_pd(v2, xt, 1), r), z3 = _mm512_sub_pd(_mm512_i32gather_pd(v3, xt, 1), r);
+            if (sw) {
+                __m512d w = _mm512_set1_pd(sw[t]);
+                z0 = _mm512_mul_pd(w, z0); z1 = _mm512_mul_pd(w, z1); z2 = _mm512_mul_pd(w, z2); z3 = _mm512_mul_pd(w, z3);
+            }
+            for (int i = 0; i < zeta; i++) {
+                double *y = yt + (size_t)(om[i] >> 1) * 32;
+                __m512d sg = om[i] & 1 ? mone : one;
+                _mm512_storeu_pd(y, _mm512_add_pd(_mm512_loadu_pd(y), _mm512_mul_pd(sg, z0)));
+                _mm512_storeu_pd(y + 8, _mm512_add_pd(_mm512_loadu_pd(y + 8), _mm512_mul_pd(sg, z1)));
+                _mm512_storeu_pd(y + 16, _mm512_add_pd(_mm512_loadu_pd(y + 16), _mm512_mul_pd(sg, z2)));
+                _mm512_storeu_pd(y + 24, _mm512_add_pd(_mm512_loadu_pd(y + 24), _mm512_mul_pd(sg, z3)));
+            }
+        }
+        for (int c = 0; c < 32 && b0 + c < nb; c++)
+            for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b0 + c) * k + j] = yt[(size_t)j * 32 + c];
+    }
+}
+
 /* The batch zb (nb frames from f0) into the sketches: Y_b = Z_b Omega
  * (on the batch transposed by tiles) here, and W += Psi_b Z_b on a second
  * thread meanwhile (they write disjoint arrays; each is summed in a fixed
  * order: the bytes do not depend on the threads). */
-static int flush_batch(struct replib_sketch *S, const double *zb, int nb, int f0)
+static int flush_batch(struct replib_sketch *S, const double *zb, const mapped_double *const *xs, int nb, int f0)
 {
     int m3 = S->m3, k = S->k, zp = S->zpsi, s = S->s;
     if (nb == 0) return 0;
@@ -273,13 +371,15 @@ static int flush_batch(struct replib_sketch *S, const double *zb, int nb, int f0
         }
     for (int i = s; i > 0; i--) po[i] = po[i - 1];
     po[0] = 0;
-    struct wjob job = {S, zb, po, pl, nb};
+    struct wjob job = {S, zb, xs, po, pl, nb};
     pthread_t th;
     int threaded = pthread_create(&th, NULL, w_update, &job) == 0;
     if (!threaded) w_update(&job);
     double *zt = S->zt, *yt = S->yt;
-    if (sketch_lanes() && (size_t)BATCH * m3 <= 2147483647) {
-        y_lanes(S, zb, nb, f0, yt);
+    if (sketch_lanes() && (xs ? (uintptr_t)(const void *)xs[nb - 1] - (uintptr_t)(const void *)xs[0] <= 2147483647u - 8 * (size_t)m3
+                              : (size_t)BATCH * m3 <= 2147483647)) {
+        if (xs) y_lanes_x(S, xs, nb, f0, yt);
+        else y_lanes(S, zb, nb, f0, yt);
         if (threaded) pthread_join(th, NULL);
         free(pc); free(po); free(pl); free(cnt); free(list);
         return 0;
@@ -292,7 +392,10 @@ static int flush_batch(struct replib_sketch *S, const double *zb, int nb, int f0
             for (int b0 = 0; b0 < nb; b0 += 16) {
                 int u1 = u0 + 16 < t1 ? u0 + 16 : t1, b1 = b0 + 16 < nb ? b0 + 16 : nb;
                 for (int t = u0; t < u1; t++)
-                    for (int b = b0; b < b1; b++) zt[(size_t)(t - t0) * nb + b] = zb[(size_t)b * m3 + t];
+                    for (int b = b0; b < b1; b++) {
+                        const double *r = S->ref, *sw = S->sw;
+                        zt[(size_t)(t - t0) * nb + b] = xs ? ZX(xs[b], t) : zb[(size_t)b * m3 + t];
+                    }
             }
         y_tile(S, zt, t0, t1, nb, yt, cnt, list);
     }
@@ -309,6 +412,7 @@ static int flush_batch(struct replib_sketch *S, const double *zb, int nb, int f0
 struct flusher {
     struct replib_sketch *S;
     const double *zb;
+    const mapped_double *const *xs;
     int nb, f0, rc;
     char msg[512];
     pthread_t th;
@@ -317,7 +421,7 @@ struct flusher {
 static void *flusher_main(void *arg)
 {
     struct flusher *F = arg;
-    F->rc = flush_batch(F->S, F->zb, F->nb, F->f0);
+    F->rc = flush_batch(F->S, F->zb, F->xs, F->nb, F->f0);
     if (F->rc < 0) snprintf(F->msg, sizeof F->msg, "%s", cm_errmsg());
     return NULL;
 }
@@ -342,24 +446,34 @@ static int flush(struct replib_sketch *S)
     if (nb == 0) return 0;
     if (flush_wait(S) < 0) return -1;
     const double *zb = S->zb + (size_t)S->zhalf * BATCH * S->m3;
+    const mapped_double *const *xs = S->inplace ? S->xp + f0 : NULL;
     S->zhalf ^= 1;
     S->nb = 0;
     struct flusher *F = calloc(1, sizeof *F);
     if (F) {
-        F->S = S; F->zb = zb; F->nb = nb; F->f0 = f0;
+        F->S = S; F->zb = zb; F->xs = xs; F->nb = nb; F->f0 = f0;
         if (pthread_create(&F->th, NULL, flusher_main, F) == 0) { S->flusher = F; return 0; }
         free(F);
     }
-    return flush_batch(S, zb, nb, f0);
+    return flush_batch(S, zb, xs, nb, f0);
+}
+
+/* The per-frame arrays, for the frames announced (S->expect) at once, then
+ * doubled: first allocated on huge pages (big_alloc), moved by realloc
+ * only past the announced count (each 4 KB page faulted in costs 10-12 us
+ * on this paravirtualized guest; the Monkey's bases are 10 MB) */
+static void *grow_array(void *p, size_t bytes)
+{
+    return p ? realloc(p, bytes) : big_alloc(bytes);
 }
 
 static int grow(struct replib_sketch *S)
 {
-    int nc = S->cap ? 2 * S->cap : 1024;
-    double *Y = realloc(S->Y, sizeof(double) * (size_t)nc * S->k);
+    int nc = S->cap ? 2 * S->cap : S->expect > 0 ? S->expect : 1024;
+    double *Y = grow_array(S->Y, sizeof(double) * (size_t)nc * S->k);
     if (!Y) return -1;
     S->Y = Y;
-    double *xo = realloc(S->xbase, sizeof(double) * (size_t)(nc / REPLIB_KEEP_CHUNK + 1) * S->m3);
+    double *xo = grow_array(S->xbase, sizeof(double) * (size_t)(nc / REPLIB_KEEP_CHUNK + 1) * S->m3);
     if (!xo) return -1;
     S->xbase = xo;
     unsigned char *c = realloc(S->cut, nc);
@@ -600,9 +714,14 @@ static void keeper_start(struct replib_sketch *S)
 /* z (m) = sw (x - ref) (sw may be NULL: 1); returns |z|^2 (eight partial
  * sums: vectorized), not finite if a value of x is not */
 SKETCH_SIMD
+static double center_norm(const mapped_double *restrict x, const mapped_double *restrict ref,
+                          const double *restrict sw, int m);
+
+SKETCH_SIMD
 static double center_row(const mapped_double *restrict x, const mapped_double *restrict ref,
                          const double *restrict sw, int m, double *restrict z)
 {
+    if (!z) return center_norm(x, ref, sw, m);
     double acc[8] = {0};
     int t = 0;
     if (sw) for (int i = 0; i < m; i++) z[i] = sw[i] * (x[i] - ref[i]);
@@ -615,6 +734,27 @@ static double center_row(const mapped_double *restrict x, const mapped_double *r
     return s;
 }
 
+/* center_row's |z|^2 without storing z (the same z, the same sums) */
+SKETCH_SIMD
+static double center_norm(const mapped_double *restrict x, const mapped_double *restrict ref,
+                          const double *restrict sw, int m)
+{
+    double acc[8] = {0};
+    int t = 0;
+    for (; t + 8 <= m; t += 8)
+        for (int j = 0; j < 8; j++) {
+            double z = sw ? sw[t + j] * (x[t + j] - ref[t + j]) : x[t + j] - ref[t + j];
+            acc[j] += z * z;
+        }
+    double s = 0;
+    for (; t < m; t++) {
+        double z = sw ? sw[t] * (x[t] - ref[t]) : x[t] - ref[t];
+        s += z * z;
+    }
+    for (int j = 0; j < 8; j++) s += acc[j];
+    return s;
+}
+
 /* byref: x stays where it is (replib_sketch_add_ref) */
 static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, int byref)
 {
@@ -623,7 +763,11 @@ static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, 
     else if (S->xref != byref)
         return cm_seterr("replib_sketch: frame %d added %s reference, the earlier ones %s", f,
                          byref ? "by" : "not by", byref ? "not" : "by");
-    double zz = center_row(x, f ? S->ref : x, S->sw, m3, S->zb + ((size_t)S->zhalf * BATCH + S->nb) * m3);
+    /* frames that stay mapped until finish are summed where they lie (no
+     * copy into zb: 61 MB fewer to fault in at the Monkey size) */
+    if (f == 0) S->inplace = byref && !S->release;
+    double zz = center_row(x, f ? S->ref : x, S->sw, m3,
+                           S->inplace ? NULL : S->zb + ((size_t)S->zhalf * BATCH + S->nb) * m3);
     if (!(zz <= 1.7976931348623157e308))     /* a coordinate is not finite (or the squares overflow) */
         for (int t = 0; t < m3; t++)
             if (!isfinite(x[t])) return cm_seterr("frame %d: vertex %d: coordinate is not finite", f, t / 3);
@@ -632,6 +776,7 @@ static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, 
         if (flush_wait(S) < 0) return -1;
         if (grow(S) < 0) return cm_seterr("replib_sketch: out of memory at frame %d", f);
     }
+    if (byref) S->xp[f] = x;        /* before the chunk or batch it ends is handed over */
     if (f == 0) {
         memcpy(S->ref, (const void *)x, sizeof(double) * m3);
         S->xstep = replib_input_step(S->ref, m3);
@@ -665,8 +810,7 @@ static int sketch_add(struct replib_sketch *S, const mapped_double *x, int cut, 
                  * helper encodes chunk c - 1 from the other half; by
                  * reference, the helper reads the frames where they are */
                 double *kb = NULL;
-                if (byref) S->xp[f] = x;
-                else {
+                if (!byref) {
                     kb = S->kb + (size_t)(f / REPLIB_KEEP_CHUNK % 2) * REPLIB_KEEP_CHUNK * m3;
                     memcpy(kb + (size_t)(f % REPLIB_KEEP_CHUNK) * m3, (const void *)x, sizeof(double) * m3);
                 }

@@ -88,6 +88,8 @@ struct replib_sketch {
                                    zero and fill).  A value off the grid: finish keeps the frames
                                    in Xk after all, encoded from where they lie (the same result) */
     int offgrid;                /* decode: a value was found off the grid or out of range */
+    int inplace;                /* 1: frames added by reference and not released (S->release = 0)
+                                   are summed into Y and W where they lie, not copied into zb */
     uint64_t seed;
     double zn;                  /* |Z|_F^2 */
     double float_err;           /* max |kept(x - x_0) - (x - x_0)| over kept frames (model units) */

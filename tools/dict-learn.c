@@ -17,6 +17,7 @@
 #include "progress.h"
 #include "cm_error.h"
 #include <getopt.h>
+#include <malloc.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -299,6 +300,20 @@ static void add_frame_cut(struct mesh *m, int cut)
     m->nframes++;
 }
 
+/* Streamed, the BLAS calls are a few large ones (the sketch's finish, the
+ * pieces' solve) between phases whose threads are this program's own: on
+ * one BLAS thread, set when the sketch starts, OpenBLAS's workers are
+ * stopped before the read and never wake.  Woken, each spun in sched_yield
+ * after a call, and the caller yielded while waiting for a descheduled
+ * worker: 118k-148k sched_yield calls at the Monkey size on 2 shared cores
+ * (the same bytes: the threads split no inner dimension). */
+static int sketch_start(struct replib_sketch *S, int nv, const struct options *o, const struct columns *wc,
+                        size_t keep)
+{
+    blas_single_thread();
+    return replib_sketch_init(S, nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed);
+}
+
 static int read_anim(const struct options *o, struct mesh *m, struct columns *wc, struct replib_sketch *S,
                      const void **map, size_t *maplen)
 {
@@ -322,7 +337,7 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
         /* no copy: the frames are where they lie */
         size_t keep = (size_t)(o->memory * 1048576.0);
         if (r.nframes > 0 && (double)r.nframes * 12 * m->nv > o->memory * 1048576.0) keep = 0;
-        if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
+        if (sketch_start(S, m->nv, o, wc, keep) < 0)
             die("%s", cm_errmsg());
         S->expect = r.nframes > 0 ? r.nframes : 0;
         /* the file stays mapped until the pieces are built, and its frames
@@ -372,7 +387,7 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
              * result, without filling and freeing the budget) */
             size_t keep = (size_t)(o->memory * 1048576.0);
             if (r.nframes > 0 && (double)r.nframes * 12 * m->nv > o->memory * 1048576.0) keep = 0;
-            if (replib_sketch_init(S, m->nv, o->rank, o->weights ? wc->x : NULL, keep, (uint64_t)o->seed) < 0)
+            if (sketch_start(S, m->nv, o, wc, keep) < 0)
                 die("%s", cm_errmsg());
             S->expect = r.nframes > 0 ? r.nframes : 0;
             for (int g = 0; g < f; g++)
@@ -401,14 +416,21 @@ static int read_anim(const struct options *o, struct mesh *m, struct columns *wc
 
 int main(int argc, char **argv)
 {
-    /* OpenBLAS's worker threads, idle between the few threaded calls
-     * (sketch finish, library, report), spin in sched_yield for 2^28
-     * cycles by default: 3-4% of the Monkey-size run's CPU (perf), taken
-     * from this program's own threads on 2 cores.  2^4 cycles: they sleep
-     * at once (the same numbers; read when OpenBLAS loads, so it takes
-     * effect through blas_tune's re-execution; a user's value is kept) */
+    /* OpenBLAS's worker threads, idle between the few threaded calls,
+     * spin in sched_yield for 2^28 cycles before they sleep.
+     * OPENBLAS_THREAD_TIMEOUT = 4 makes them sleep at once, but OpenBLAS
+     * reads it only when it loads: it acts only through blas_tune's
+     * re-execution (not when the caller chose OPENBLAS_CORETYPE, as the
+     * tests and benchmarks do; a streamed run then keeps BLAS on one
+     * thread, below).  A user's value is kept. */
     setenv("OPENBLAS_THREAD_TIMEOUT", "4", 0);
     blas_tune(argv);
+    /* arrays below 32 MB freed (a label step's tables, a library step's
+     * matrices, the incremental products) stay with malloc for the next
+     * ones instead of going back to the kernel and faulting in again: a 4 KB
+     * fault costs 10-12 us on this paravirtualized guest (big_alloc.h) */
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
     tool_init(argc, argv);
     struct options o;
     parse_args(argc, argv, &o);

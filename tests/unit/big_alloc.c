@@ -1,7 +1,7 @@
 /* big_alloc: big_calloc is zero-filled at every size, also where the
  * allocator hands back memory that was just written and freed (the pages
  * dropped with MADV_DONTNEED read as zeros); big_alloc's arrays are
- * 2 MB-aligned from 32 MB on; mapped_release leaves a file mapping's data
+ * 2 MB-aligned from 2 MB on; mapped_release leaves a file mapping's data
  * readable */
 #include "big_alloc.h"
 #include "mapped_frames.h"
@@ -22,8 +22,8 @@ static int all_zero(const unsigned char *p, size_t n)
 
 int main(void)
 {
-    size_t sizes[] = {1, 4096, (size_t)1 << 20, ((size_t)32 << 20) + 12345, (size_t)64 << 20};
-    for (int k = 0; k < 5; k++) {
+    size_t sizes[] = {1, 4096, (size_t)1 << 20, ((size_t)2 << 20) + 12345, ((size_t)32 << 20) + 12345, (size_t)64 << 20};
+    for (int k = 0; k < 6; k++) {
         size_t n = sizes[k];
         int zero = 1;
         for (int round = 0; round < 3; round++) {
@@ -41,6 +41,9 @@ int main(void)
     }
     void *a = big_alloc((size_t)40 << 20);
     ok(a && ((uintptr_t)a & (((uintptr_t)2 << 20) - 1)) == 0, "big_alloc(40 MB) is 2 MB-aligned");
+    free(a);
+    a = big_alloc((size_t)3 << 20);
+    ok(a && ((uintptr_t)a & (((uintptr_t)2 << 20) - 1)) == 0, "big_alloc(3 MB) is 2 MB-aligned");
     free(a);
 
     /* mapped_release on a file mapping: the data read again after it */
