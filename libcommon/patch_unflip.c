@@ -30,7 +30,7 @@ struct work {
     int nv, nf, nvt, nft;
     const struct closest_point_tree *TT;
     const struct topology *t;
-    double tol, h0, wdata, lambda, wfacep;
+    double tol, h0, allow, wdata, lambda, wfacep;
     unsigned char *flip;          /* #F current flags (updated when a patch is kept) */
     int *lid;                     /* #V global -> local, -1 */
     unsigned char *fin;           /* #F: face in the patch */
@@ -264,6 +264,67 @@ static void target_frames(struct work *w, const double *x)
     }
 }
 
+/* x (3 nfree; in: the solved free vertices, out: moved onto the target)
+ * projected on the target by closest points, no patch face turned over by
+ * that move: closest-point projection is not injective where the target is
+ * thin and creased (a fetlock), and projecting every vertex fully folded
+ * patches the solve had untangled (camel 01 -> 03, Sandybridge's kernel: a
+ * patch solved with no flipped face had 7, 6 and 4 after it).  The
+ * vertices of a face flipped after the move and not before it move half as
+ * far, PROJECT_HALVINGS times, then stay where the solve put them; the flip
+ * test is per face, so no face ends flipped that the solve left unflipped.
+ * FG: the patch faces (global ids); P: the whole pose, its free vertices
+ * set to x (w->fsub the patch faces' flags).  Returns the patch's flipped
+ * faces, or -1 (cm_errmsg set). */
+#define PROJECT_HALVINGS 6
+static int project_guarded(struct work *w, double *x, const int *FG, double *P)
+{
+    int nfree = w->nfree, npf = w->npf, after = -1;
+    double *xs = malloc(((size_t)nfree * 3 + 1) * sizeof *xs);
+    double *xp = malloc(((size_t)nfree * 3 + 1) * sizeof *xp);
+    int *nh = calloc((size_t)nfree + 1, sizeof *nh);
+    unsigned char *fs = malloc((size_t)npf + 1), *mk = calloc((size_t)nfree + 1, 1);
+    if (!xs || !xp || !nh || !fs || !mk) {
+        cm_seterr("out of memory");
+        goto done;
+    }
+    memcpy(xs, x, (size_t)nfree * 3 * sizeof *x);
+    for (int l = 0; l < nfree; l++) memcpy(P + 3 * w->verts[l], xs + 3 * l, 3 * sizeof *P);
+    if (flipped_face_flags(P, FG, npf, w->VT, w->nvt, w->FT, w->nft, w->TT, w->tol, fs) < 0) {
+        cm_seterr("out of memory");
+        goto done;
+    }
+    closest_points(w->TT, xs, nfree, xp, NULL, NULL, NULL);
+    for (;;) {
+        for (int l = 0; l < nfree; l++) {
+            double t = nh[l] > PROJECT_HALVINGS ? 0 : ldexp(1, -nh[l]);
+            for (int d = 0; d < 3; d++) x[3 * l + d] = xs[3 * l + d] + t * (xp[3 * l + d] - xs[3 * l + d]);
+            memcpy(P + 3 * w->verts[l], x + 3 * l, 3 * sizeof *P);
+        }
+        after = flipped_face_flags(P, FG, npf, w->VT, w->nvt, w->FT, w->nft, w->TT, w->tol, w->fsub);
+        if (after < 0) {
+            cm_seterr("out of memory");
+            goto done;
+        }
+        int held = 0;
+        for (int q = 0; q < npf; q++)
+            if (w->fsub[q] && !fs[q])
+                for (int k = 0; k < 3; k++) {
+                    int l = w->FS[3 * q + k];
+                    if (l < nfree && nh[l] <= PROJECT_HALVINGS && !mk[l]) mk[l] = held = 1;
+                }
+        if (!held) break;
+        for (int l = 0; l < nfree; l++)
+            if (mk[l]) {
+                nh[l]++;
+                mk[l] = 0;
+            }
+    }
+done:
+    free(xs); free(xp); free(nh); free(fs); free(mk);
+    return after;
+}
+
 static void clear_patch(struct work *w, int nloc, int npf)
 {
     for (int l = 0; l < nloc; l++) w->lid[w->verts[l]] = -1;
@@ -393,10 +454,8 @@ static int solve_patch(struct work *w, const int *free_v, int nfree, double *P, 
             Eprev = energy(w, x, NULL, NULL);
             if (dmin > 0 && outer > 3 && sigma <= 0.1) break;
         }
-        /* onto the target */
-        closest_points(w->TT, x, nfree, x, NULL, NULL, NULL);
-        for (int l = 0; l < nfree; l++) memcpy(P + 3 * w->verts[l], x + 3 * l, 3 * sizeof *P);
-        int after = flipped_face_flags(P, FG, npf, w->VT, w->nvt, w->FT, w->nft, w->TT, w->tol, w->fsub);
+        /* onto the target, no face turned over by that move */
+        int after = project_guarded(w, x, FG, P);
         if (after < 0) { rc = -1; break; }
         double worst = 0, fitw = 0;
         if (after < best || (after == best && after < before)) {
@@ -431,7 +490,8 @@ static int solve_patch(struct work *w, const int *free_v, int nfree, double *P, 
                 }
             }
             double dd = worst > fitw ? worst : fitw;
-            if (dd <= w->h0 + 1e-9 * sqrt(l2) && (after < best || dd < bestd)) {
+            double lim = w->allow > w->h0 ? w->allow : w->h0;
+            if (dd <= lim + 1e-9 * sqrt(l2) && (after < best || dd < bestd)) {
                 best = after;
                 bestd = dd;
                 memcpy(Pbest, x, (size_t)nfree * 3 * sizeof *x);
@@ -503,7 +563,7 @@ int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
         if (t.EFn[e] != 2) fixed[t.E[2 * e]] = fixed[t.E[2 * e + 1]] = 1;
     for (int i = 0; i < nv; i++) w.lid[i] = -1;
     w.R = R; w.VT = VT; w.NT = NT; w.F = F; w.FT = FT; w.nv = nv; w.nf = nf; w.nvt = nvt; w.nft = nft;
-    w.TT = TT; w.t = &t; w.tol = p->tol; w.wdata = p->wdata; w.lambda = p->lambda; w.wfacep = p->wface; w.wbackp = p->wback;
+    w.TT = TT; w.t = &t; w.tol = p->tol; w.allow = p->allow; w.wdata = p->wdata; w.lambda = p->lambda; w.wfacep = p->wface; w.wbackp = p->wback;
     int nfl = flipped_face_flags(P, F, nf, VT, nvt, FT, nft, TT, p->tol, w.flip);
     if (nfl < 0) goto done;
     if (stats) { stats[0] = stats[1] = nfl; stats[2] = stats[3] = 0; }

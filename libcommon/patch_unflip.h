@@ -24,13 +24,17 @@
  *     their closest point of the patch (wback), so that ironing the pleat out
  *     does not uncover the target's crease; tangent planes and closest
  *     points are updated every outer iteration;
- *   - the free vertices are projected onto the target.
+ *   - the free vertices are projected onto the target, except where that
+ *     move would turn a face over that the solve left unflipped (closest
+ *     points fold a thin, creased part such as a fetlock): the vertices of
+ *     such a face move half as far, up to 6 times, then stay off it.
  * Three strengths of the backward pull are tried (wback times 1, 0.1, 10);
  * kept is the one with the fewest flipped faces, and only where that is
  * fewer than the patch had and no target vertex near the patch, and no
  * sample (centroid, edge midpoints) of a patch face, lies farther from the
- * other surface than the symmetric Hausdorff distance before: the
- * Hausdorff distance cannot grow.
+ * other surface than the symmetric Hausdorff distance before (or than
+ * `allow`, where that is larger): by default the Hausdorff distance cannot
+ * grow.
  */
 #ifndef CM_PATCH_UNFLIP_H
 #define CM_PATCH_UNFLIP_H
@@ -58,6 +62,12 @@ struct patch_unflip_params {
                         faces after the solve, at up to 16 s each) */
     double tol;      /* thin-part allowance of the flip test (flipped_face_flags), in
                         the points' units (e.g. FLIP_THIN_TOL diagonals) */
+    double allow;    /* a kept patch's samples may lie up to this far from the other
+                        surface where that is farther than the symmetric Hausdorff
+                        distance before, in the points' units (default 0: no farther
+                        than before; nricp's last unflip allows its acceptance
+                        distance, 1% of the diagonal: a pleat at a camel fetlock laid
+                        flat bridges the crease it had folded into) */
 };
 
 void patch_unflip_defaults(struct patch_unflip_params *p);
