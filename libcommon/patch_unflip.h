@@ -82,6 +82,22 @@ int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
                  const struct closest_point_tree *TT, const struct patch_unflip_params *p,
                  int stats[4]);
 
+/* The same solve on the patches around the faces seed (#F) flags, not the
+ * flipped ones: a patch is kept where no face of it is flipped that was
+ * not and the largest distance of its samples and of the target vertices
+ * near it (the test above) is lower than the symmetric Hausdorff distance
+ * before, so the distance there drops and nowhere grows.  For the samples
+ * that stay farthest because moving them would fold a face (an edge
+ * standing across a crease the target folds into, at a camel fetlock: the
+ * refinement's foldover guard holds it), since the solve lays the patch
+ * down on the target with no face folded.  p->rounds: 1 is the one
+ * meaningful value (the seed does not change).  Returns as patch_unflip;
+ * stats[3]: patches kept. */
+int patch_refit(double *P, const double *R, const int *F, int nv, int nf,
+                const double *VT, const int *FT, int nvt, int nft,
+                const struct closest_point_tree *TT, const struct patch_unflip_params *p,
+                const unsigned char *seed, int stats[4]);
+
 #ifdef __cplusplus
 }
 #endif
