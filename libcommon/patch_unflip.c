@@ -30,7 +30,8 @@ struct work {
     int nv, nf, nvt, nft;
     const struct closest_point_tree *TT;
     const struct topology *t;
-    double tol, h0, wdata, lambda, wfacep;
+    double tol, h0, allow, wdata, lambda, wfacep;
+    int refit;                    /* patch_refit: seeded patches, kept where closer */
     unsigned char *flip;          /* #F current flags (updated when a patch is kept) */
     int *lid;                     /* #V global -> local, -1 */
     unsigned char *fin;           /* #F: face in the patch */
@@ -264,6 +265,67 @@ static void target_frames(struct work *w, const double *x)
     }
 }
 
+/* x (3 nfree; in: the solved free vertices, out: moved onto the target)
+ * projected on the target by closest points, no patch face turned over by
+ * that move: closest-point projection is not injective where the target is
+ * thin and creased (a fetlock), and projecting every vertex fully folded
+ * patches the solve had untangled (camel 01 -> 03, Sandybridge's kernel: a
+ * patch solved with no flipped face had 7, 6 and 4 after it).  The
+ * vertices of a face flipped after the move and not before it move half as
+ * far, PROJECT_HALVINGS times, then stay where the solve put them; the flip
+ * test is per face, so no face ends flipped that the solve left unflipped.
+ * FG: the patch faces (global ids); P: the whole pose, its free vertices
+ * set to x (w->fsub the patch faces' flags).  Returns the patch's flipped
+ * faces, or -1 (cm_errmsg set). */
+#define PROJECT_HALVINGS 6
+static int project_guarded(struct work *w, double *x, const int *FG, double *P)
+{
+    int nfree = w->nfree, npf = w->npf, after = -1;
+    double *xs = malloc(((size_t)nfree * 3 + 1) * sizeof *xs);
+    double *xp = malloc(((size_t)nfree * 3 + 1) * sizeof *xp);
+    int *nh = calloc((size_t)nfree + 1, sizeof *nh);
+    unsigned char *fs = malloc((size_t)npf + 1), *mk = calloc((size_t)nfree + 1, 1);
+    if (!xs || !xp || !nh || !fs || !mk) {
+        cm_seterr("out of memory");
+        goto done;
+    }
+    memcpy(xs, x, (size_t)nfree * 3 * sizeof *x);
+    for (int l = 0; l < nfree; l++) memcpy(P + 3 * w->verts[l], xs + 3 * l, 3 * sizeof *P);
+    if (flipped_face_flags(P, FG, npf, w->VT, w->nvt, w->FT, w->nft, w->TT, w->tol, fs) < 0) {
+        cm_seterr("out of memory");
+        goto done;
+    }
+    closest_points(w->TT, xs, nfree, xp, NULL, NULL, NULL);
+    for (;;) {
+        for (int l = 0; l < nfree; l++) {
+            double t = nh[l] > PROJECT_HALVINGS ? 0 : ldexp(1, -nh[l]);
+            for (int d = 0; d < 3; d++) x[3 * l + d] = xs[3 * l + d] + t * (xp[3 * l + d] - xs[3 * l + d]);
+            memcpy(P + 3 * w->verts[l], x + 3 * l, 3 * sizeof *P);
+        }
+        after = flipped_face_flags(P, FG, npf, w->VT, w->nvt, w->FT, w->nft, w->TT, w->tol, w->fsub);
+        if (after < 0) {
+            cm_seterr("out of memory");
+            goto done;
+        }
+        int held = 0;
+        for (int q = 0; q < npf; q++)
+            if (w->fsub[q] && !fs[q])
+                for (int k = 0; k < 3; k++) {
+                    int l = w->FS[3 * q + k];
+                    if (l < nfree && nh[l] <= PROJECT_HALVINGS && !mk[l]) mk[l] = held = 1;
+                }
+        if (!held) break;
+        for (int l = 0; l < nfree; l++)
+            if (mk[l]) {
+                nh[l]++;
+                mk[l] = 0;
+            }
+    }
+done:
+    free(xs); free(xp); free(nh); free(fs); free(mk);
+    return after;
+}
+
 static void clear_patch(struct work *w, int nloc, int npf)
 {
     for (int l = 0; l < nloc; l++) w->lid[w->verts[l]] = -1;
@@ -367,7 +429,7 @@ static int solve_patch(struct work *w, const int *free_v, int nfree, double *P, 
     for (int q = 0; q < npf; q++) memcpy(FG + 3 * q, F + 3 * w->faces[q], 3 * sizeof *F);
     /* the pull of the covered target: three strengths tried, the best kept */
     static const double wmul[3] = {1, 0.1, 10};
-    int best = before;
+    int best = before, found = 0;
     double bestd = INFINITY;
     for (int tr = 0; tr < 3; tr++) {
         w->wback = wmul[tr] * w->wbackp * (area / npf) / l2;
@@ -393,13 +455,12 @@ static int solve_patch(struct work *w, const int *free_v, int nfree, double *P, 
             Eprev = energy(w, x, NULL, NULL);
             if (dmin > 0 && outer > 3 && sigma <= 0.1) break;
         }
-        /* onto the target */
-        closest_points(w->TT, x, nfree, x, NULL, NULL, NULL);
-        for (int l = 0; l < nfree; l++) memcpy(P + 3 * w->verts[l], x + 3 * l, 3 * sizeof *P);
-        int after = flipped_face_flags(P, FG, npf, w->VT, w->nvt, w->FT, w->nft, w->TT, w->tol, w->fsub);
+        /* onto the target, no face turned over by that move */
+        int after = project_guarded(w, x, FG, P);
         if (after < 0) { rc = -1; break; }
         double worst = 0, fitw = 0;
-        if (after < best || (after == best && after < before)) {
+        /* unflip: fewer flipped faces; refit: none more */
+        if (w->refit ? after <= best : after < best || (after == best && after < before)) {
             /* the target vertices around the patch: none farther than h0 */
             double o[3] = {0, 0, 0}, rad = 0;
             for (int l = 0; l < nloc; l++)
@@ -431,16 +492,19 @@ static int solve_patch(struct work *w, const int *free_v, int nfree, double *P, 
                 }
             }
             double dd = worst > fitw ? worst : fitw;
-            if (dd <= w->h0 + 1e-9 * sqrt(l2) && (after < best || dd < bestd)) {
+            double lim = w->allow > w->h0 ? w->allow : w->h0;
+            int near = w->refit ? dd < w->h0 - 1e-9 * sqrt(l2) : dd <= lim + 1e-9 * sqrt(l2);
+            if (near && (after < best || dd < bestd)) {
+                found = 1;
                 best = after;
                 bestd = dd;
                 memcpy(Pbest, x, (size_t)nfree * 3 * sizeof *x);
                 memcpy(fbest, w->fsub, (size_t)npf);
             }
         }
-        if (best == 0) break;
+        if (!w->refit && best == 0) break;
     }
-    if (rc == 0 && best < before) {
+    if (rc == 0 && found) {
         for (int l = 0; l < nfree; l++) memcpy(P + 3 * w->verts[l], Pbest + 3 * l, 3 * sizeof *P);
         for (int q = 0; q < npf; q++) w->flip[w->faces[q]] = fbest[q];
         rc = 1;
@@ -452,10 +516,10 @@ out:
     return rc;
 }
 
-int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
-                 const double *VT, const int *FT, int nvt, int nft,
-                 const struct closest_point_tree *TT, const struct patch_unflip_params *p,
-                 int stats[4])
+static int run(double *P, const double *R, const int *F, int nv, int nf,
+               const double *VT, const int *FT, int nvt, int nft,
+               const struct closest_point_tree *TT, const struct patch_unflip_params *p,
+               const unsigned char *seed, int stats[4])
 {
     int rc = -1, tried = 0, kept = 0;
     struct topology t = {0};
@@ -503,11 +567,12 @@ int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
         if (t.EFn[e] != 2) fixed[t.E[2 * e]] = fixed[t.E[2 * e + 1]] = 1;
     for (int i = 0; i < nv; i++) w.lid[i] = -1;
     w.R = R; w.VT = VT; w.NT = NT; w.F = F; w.FT = FT; w.nv = nv; w.nf = nf; w.nvt = nvt; w.nft = nft;
-    w.TT = TT; w.t = &t; w.tol = p->tol; w.wdata = p->wdata; w.lambda = p->lambda; w.wfacep = p->wface; w.wbackp = p->wback;
+    w.refit = seed != NULL;
+    w.TT = TT; w.t = &t; w.tol = p->tol; w.allow = p->allow; w.wdata = p->wdata; w.lambda = p->lambda; w.wfacep = p->wface; w.wbackp = p->wback;
     int nfl = flipped_face_flags(P, F, nf, VT, nvt, FT, nft, TT, p->tol, w.flip);
     if (nfl < 0) goto done;
     if (stats) { stats[0] = stats[1] = nfl; stats[2] = stats[3] = 0; }
-    if (nfl == 0 || nfl > p->max_flipped * nf) { rc = 0; goto done; }
+    if ((!seed && nfl == 0) || nfl > p->max_flipped * nf) { rc = 0; goto done; }
     double rms;
     TS = closest_point_tree_new(P, nv, F, nf);
     if (!TS || symmetric_distance(P, nv, F, nf, TS, VT, nvt, FT, nft, TT, &w.h0, &rms) < 0) goto done;
@@ -516,7 +581,7 @@ int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
     for (int round = 0; round < p->rounds; round++) {
         int rings = p->rings + round, left = 0;
         for (int f = 0; f < nf; f++) left += w.flip[f];
-        if (left == 0) break;
+        if (left == 0 && !seed) break;
         if (round > 0) {
             closest_point_tree_free(TS);
             TS = closest_point_tree_new(P, nv, F, nf);
@@ -527,7 +592,7 @@ int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
         memset(done_v, 0, (size_t)nv);
         /* the region: flipped faces' vertices and `rings` rings, in connected pieces */
         for (int f = 0; f < nf; f++)
-            if (w.flip[f]) for (int c = 0; c < 3; c++) in[F[3 * f + c]] = 1;
+            if (seed ? seed[f] : w.flip[f]) for (int c = 0; c < 3; c++) in[F[3 * f + c]] = 1;
         for (int g = 0; g < rings; g++) {
             memcpy(tmp, in, (size_t)nv);
             for (int i = 0; i < nv; i++)
@@ -566,4 +631,20 @@ done:
     free(w.Dinv); free(w.A); free(w.CF); free(w.MF);
     free(w.tmark); free(w.bt); free(w.bf); free(w.bb); free(w.Xl);
     return rc;
+}
+
+int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
+                 const double *VT, const int *FT, int nvt, int nft,
+                 const struct closest_point_tree *TT, const struct patch_unflip_params *p,
+                 int stats[4])
+{
+    return run(P, R, F, nv, nf, VT, FT, nvt, nft, TT, p, NULL, stats);
+}
+
+int patch_refit(double *P, const double *R, const int *F, int nv, int nf,
+                const double *VT, const int *FT, int nvt, int nft,
+                const struct closest_point_tree *TT, const struct patch_unflip_params *p,
+                const unsigned char *seed, int stats[4])
+{
+    return run(P, R, F, nv, nf, VT, FT, nvt, nft, TT, p, seed, stats);
 }

@@ -24,13 +24,17 @@
  *     their closest point of the patch (wback), so that ironing the pleat out
  *     does not uncover the target's crease; tangent planes and closest
  *     points are updated every outer iteration;
- *   - the free vertices are projected onto the target.
+ *   - the free vertices are projected onto the target, except where that
+ *     move would turn a face over that the solve left unflipped (closest
+ *     points fold a thin, creased part such as a fetlock): the vertices of
+ *     such a face move half as far, up to 6 times, then stay off it.
  * Three strengths of the backward pull are tried (wback times 1, 0.1, 10);
  * kept is the one with the fewest flipped faces, and only where that is
  * fewer than the patch had and no target vertex near the patch, and no
  * sample (centroid, edge midpoints) of a patch face, lies farther from the
- * other surface than the symmetric Hausdorff distance before: the
- * Hausdorff distance cannot grow.
+ * other surface than the symmetric Hausdorff distance before (or than
+ * `allow`, where that is larger): by default the Hausdorff distance cannot
+ * grow.
  */
 #ifndef CM_PATCH_UNFLIP_H
 #define CM_PATCH_UNFLIP_H
@@ -58,6 +62,12 @@ struct patch_unflip_params {
                         faces after the solve, at up to 16 s each) */
     double tol;      /* thin-part allowance of the flip test (flipped_face_flags), in
                         the points' units (e.g. FLIP_THIN_TOL diagonals) */
+    double allow;    /* a kept patch's samples may lie up to this far from the other
+                        surface where that is farther than the symmetric Hausdorff
+                        distance before, in the points' units (default 0: no farther
+                        than before; nricp's last unflip allows its acceptance
+                        distance, 1% of the diagonal: a pleat at a camel fetlock laid
+                        flat bridges the crease it had folded into) */
 };
 
 void patch_unflip_defaults(struct patch_unflip_params *p);
@@ -71,6 +81,22 @@ int patch_unflip(double *P, const double *R, const int *F, int nv, int nf,
                  const double *VT, const int *FT, int nvt, int nft,
                  const struct closest_point_tree *TT, const struct patch_unflip_params *p,
                  int stats[4]);
+
+/* The same solve on the patches around the faces seed (#F) flags, not the
+ * flipped ones: a patch is kept where no face of it is flipped that was
+ * not and the largest distance of its samples and of the target vertices
+ * near it (the test above) is lower than the symmetric Hausdorff distance
+ * before, so the distance there drops and nowhere grows.  For the samples
+ * that stay farthest because moving them would fold a face (an edge
+ * standing across a crease the target folds into, at a camel fetlock: the
+ * refinement's foldover guard holds it), since the solve lays the patch
+ * down on the target with no face folded.  p->rounds: 1 is the one
+ * meaningful value (the seed does not change).  Returns as patch_unflip;
+ * stats[3]: patches kept. */
+int patch_refit(double *P, const double *R, const int *F, int nv, int nf,
+                const double *VT, const int *FT, int nvt, int nft,
+                const struct closest_point_tree *TT, const struct patch_unflip_params *p,
+                const unsigned char *seed, int stats[4]);
 
 #ifdef __cplusplus
 }

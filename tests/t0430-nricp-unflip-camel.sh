@@ -22,8 +22,9 @@ test_expect_success 'camel 03 -> 04: fewer flipped faces, no farther' '
 	test_le "$(awk "{ print \$3 }" mu.txt)" "$(awk "{ printf \"%.12g\", \$3 + 1e-9 }" mo.txt)"
 '
 # the issue's goal for key poses three apart, with the default options:
-# below 2% with at most 10 flipped faces (measured 1.17% with 3; 37
-# flipped before --unflip, the fetlock pleats); about a minute of CPU
+# below 2% with at most 10 flipped faces (measured 1.17% with 3 at stop
+# 33, 1.072% with none since the guarded projection and the last repair;
+# 37 flipped before --unflip, the fetlock pleats); about 40 s of CPU
 test_expect_success 'camel 01 -> 04 by default: below 2% with at most 10 flipped faces' '
 	nricp c01.mesh c04.mesh >d14.mesh &&
 	mesh-metrics --no-header -r c04.mesh d14.mesh >m14.txt && cat m14.txt &&
@@ -32,8 +33,9 @@ test_expect_success 'camel 01 -> 04 by default: below 2% with at most 10 flipped
 '
 # the issue's goal for key poses two apart: below 1% with no flipped face,
 # by default (before --refine: 1.01% with 1 flipped face, a face standing
-# off the target at a fetlock; measured with it 0.89% and none); about 45 s
-# of CPU
+# off the target at a fetlock; measured with it 0.89% and none, since the
+# guarded projection and the last repair 0.617% and none; t0435: the
+# other kernels); about 20 s of CPU
 test_expect_success 'camel 01 -> 03 by default: below 1% with no flipped face' '
 	nricp c01.mesh c03.mesh >d13.mesh &&
 	mesh-metrics --no-header -r c03.mesh d13.mesh >m13.txt && cat m13.txt &&
