@@ -266,6 +266,33 @@ static int sketch_lanes(void)
     return __builtin_cpu_supports("avx512f") && !(e && !strcmp(e, "0"));
 }
 
+/* the 32 lanes z0..z3 (coordinate t of 32 frames) added into Y's 32
+ * transposed rows (yt: k by 32) with the signs of row t of Omega (om:
+ * zeta nonzeros, 2 column + (sign < 0)) */
+__attribute__((target("avx512f")))
+static inline void lanes_add(double *yt, const int *om, int zeta, __m512d z0, __m512d z1, __m512d z2,
+                             __m512d z3)
+{
+    const __m512d one = _mm512_set1_pd(1.0), mone = _mm512_set1_pd(-1.0);
+    for (int i = 0; i < zeta; i++) {
+        double *y = yt + (size_t)(om[i] >> 1) * 32;
+        __m512d sg = om[i] & 1 ? mone : one;
+        _mm512_storeu_pd(y, _mm512_add_pd(_mm512_loadu_pd(y), _mm512_mul_pd(sg, z0)));
+        _mm512_storeu_pd(y + 8, _mm512_add_pd(_mm512_loadu_pd(y + 8), _mm512_mul_pd(sg, z1)));
+        _mm512_storeu_pd(y + 16, _mm512_add_pd(_mm512_loadu_pd(y + 16), _mm512_mul_pd(sg, z2)));
+        _mm512_storeu_pd(y + 24, _mm512_add_pd(_mm512_loadu_pd(y + 24), _mm512_mul_pd(sg, z3)));
+    }
+}
+
+/* the transposed rows yt of frames f0 + b0 .. (at most 32, fewer at the
+ * batch's end: nb) into Y */
+static void lanes_store(struct replib_sketch *S, const double *yt, int nb, int f0, int b0)
+{
+    int k = S->k;
+    for (int c = 0; c < 32 && b0 + c < nb; c++)
+        for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b0 + c) * k + j] = yt[(size_t)j * 32 + c];
+}
+
 /* Y_b = Z_b Omega with AVX-512, without transposing the batch: 32 frames
  * in the lanes of four vectors (coordinate t gathered from their 32 rows,
  * each row read once, front to back), and coordinate t's zeta nonzeros of
@@ -285,21 +312,12 @@ static void y_lanes(struct replib_sketch *S, const double *zb, int nb, int f0, d
         __m256i v2 = _mm256_loadu_si256((const __m256i *)(idx + 16)), v3 = _mm256_loadu_si256((const __m256i *)(idx + 24));
         memset(yt, 0, sizeof(double) * 32 * (size_t)k);
         const int *om = S->om;
-        const __m512d one = _mm512_set1_pd(1.0), mone = _mm512_set1_pd(-1.0);
         for (int t = 0; t < m3; t++, om += zeta) {
             __m512d z0 = _mm512_i32gather_pd(v0, zb + t, 8), z1 = _mm512_i32gather_pd(v1, zb + t, 8);
             __m512d z2 = _mm512_i32gather_pd(v2, zb + t, 8), z3 = _mm512_i32gather_pd(v3, zb + t, 8);
-            for (int i = 0; i < zeta; i++) {
-                double *y = yt + (size_t)(om[i] >> 1) * 32;
-                __m512d sg = om[i] & 1 ? mone : one;
-                _mm512_storeu_pd(y, _mm512_add_pd(_mm512_loadu_pd(y), _mm512_mul_pd(sg, z0)));
-                _mm512_storeu_pd(y + 8, _mm512_add_pd(_mm512_loadu_pd(y + 8), _mm512_mul_pd(sg, z1)));
-                _mm512_storeu_pd(y + 16, _mm512_add_pd(_mm512_loadu_pd(y + 16), _mm512_mul_pd(sg, z2)));
-                _mm512_storeu_pd(y + 24, _mm512_add_pd(_mm512_loadu_pd(y + 24), _mm512_mul_pd(sg, z3)));
-            }
+            lanes_add(yt, om, zeta, z0, z1, z2, z3);
         }
-        for (int c = 0; c < 32 && b0 + c < nb; c++)
-            for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b0 + c) * k + j] = yt[(size_t)j * 32 + c];
+        lanes_store(S, yt, nb, f0, b0);
     }
 }
 
@@ -321,7 +339,6 @@ static void y_lanes_x(struct replib_sketch *S, const mapped_double *const *xs, i
         __m256i v2 = _mm256_loadu_si256((const __m256i *)(idx + 16)), v3 = _mm256_loadu_si256((const __m256i *)(idx + 24));
         memset(yt, 0, sizeof(double) * 32 * (size_t)k);
         const int *om = S->om;
-        const __m512d one = _mm512_set1_pd(1.0), mone = _mm512_set1_pd(-1.0);
         for (int t = 0; t < m3; t++, om += zeta) {
             const char *xt = x0 + 8 * (size_t)t;
             __m512d r = _mm512_set1_pd(ref[t]);
@@ -331,17 +348,9 @@ static void y_lanes_x(struct replib_sketch *S, const mapped_double *const *xs, i
                 __m512d w = _mm512_set1_pd(sw[t]);
                 z0 = _mm512_mul_pd(w, z0); z1 = _mm512_mul_pd(w, z1); z2 = _mm512_mul_pd(w, z2); z3 = _mm512_mul_pd(w, z3);
             }
-            for (int i = 0; i < zeta; i++) {
-                double *y = yt + (size_t)(om[i] >> 1) * 32;
-                __m512d sg = om[i] & 1 ? mone : one;
-                _mm512_storeu_pd(y, _mm512_add_pd(_mm512_loadu_pd(y), _mm512_mul_pd(sg, z0)));
-                _mm512_storeu_pd(y + 8, _mm512_add_pd(_mm512_loadu_pd(y + 8), _mm512_mul_pd(sg, z1)));
-                _mm512_storeu_pd(y + 16, _mm512_add_pd(_mm512_loadu_pd(y + 16), _mm512_mul_pd(sg, z2)));
-                _mm512_storeu_pd(y + 24, _mm512_add_pd(_mm512_loadu_pd(y + 24), _mm512_mul_pd(sg, z3)));
-            }
+            lanes_add(yt, om, zeta, z0, z1, z2, z3);
         }
-        for (int c = 0; c < 32 && b0 + c < nb; c++)
-            for (int j = 0; j < k; j++) S->Y[(size_t)(f0 + b0 + c) * k + j] = yt[(size_t)j * 32 + c];
+        lanes_store(S, yt, nb, f0, b0);
     }
 }
 
