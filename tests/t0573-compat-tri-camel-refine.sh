@@ -25,15 +25,15 @@ corr() {
 test_expect_success 'setup: five gallop frames traced from the side (camel_traced_poses)' '
 	camel_traced_poses
 '
-test_expect_success 'poses 1 2, seven landmarks, -m off (the given rows, arc length between): worst angle >= 9.5 deg with <= 600 vertices (measured 9.96 deg, 374; before the stall detection 8.98 deg, 1277 vertices, 65% of the triangles under 20 deg)' '
+test_expect_success 'poses 1 2, seven landmarks, -m off (the given rows, arc length between): worst angle >= 12 deg with <= 700 vertices (measured 12.66 deg, 679, by the third --split-share pass, which ends at its vertex cap; before it 9.96 deg, 374; before the stall detection 8.98 deg, 1277 vertices, 65% of the triangles under 20 deg)' '
 	corr "1 2 3 4 5 6 7" "1 2" >c12 &&
 	compat-tri -m off -v -c c12 camel1.rings camel2.rings >m12.mesh 2>m12.log &&
 	test_le 1e-12 $(min_area m12.mesh) &&
-	test_le 9.5 $(worst_angle m12.mesh) &&
-	test_le $(mesh_vertices m12.mesh) 600
+	test_le 12 $(worst_angle m12.mesh) &&
+	test_le $(mesh_vertices m12.mesh) 700
 '
-test_expect_success '-v says why the refinement stopped below the goal (a stall, and what ended the rounds after it; which --split-share pass was kept, what the global max-min polish raised), where, and how stretched the maps are there' '
-	grep -E "refinement stopped below the goal of 20 deg: neither the worst angle nor the number of triangles below the goal improved in [0-9]+ rounds(, then the best round polished and refined again: [^;(]*)? ?(\(back to the best round.s mesh\))?( in the (first|second) pass[^;]*)?(; the global max-min polish raised the worst angle from [0-9.]+ deg)?; worst angle [0-9.]+ deg; the poses. maps are stretched [0-9.]+x at \(" m12.log
+test_expect_success '-v says why the refinement stopped below the goal (a stall or the vertex cap, and what ended the rounds after it; which --split-share pass was kept, what the global max-min polish raised), where, and how stretched the maps are there' '
+	grep -E "refinement stopped below the goal of 20 deg: (neither the worst angle nor the number of triangles below the goal improved in [0-9]+ rounds|--max-vertices [0-9]+ reached)(, then the best round polished and refined again: [^;(]*)? ?(\(back to the best round.s mesh\))?( in the (first|second|third) pass[^;]*)?(; the global max-min polish raised the worst angle from [0-9.]+ deg)?; worst angle [0-9.]+ deg; the poses. maps are stretched [0-9.]+x at \(" m12.log
 '
 # camel 5's outline has one diagonal pixel contact, which img2rings chamfers
 # since 2026-11-26 (one point 0.25 px lower): measured 20.01 deg, 491
