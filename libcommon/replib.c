@@ -1452,7 +1452,7 @@ struct dcols_job {
     const int *g;
     int L;
     const double *Zc;
-    const double *ZcT;          /* zdim by 8: Zc transposed, zero-padded (dots_avx512), or NULL */
+    const double *ZcT;          /* zdim by 8: Zc transposed, zero-padded (dots_fma), or NULL */
     double *dist;
     const int *rows;            /* with ZcT: only these nrows frames (dcols_pruned), or NULL: all */
     int nrows;
@@ -1461,12 +1461,17 @@ struct dcols_job {
 /* dist[c n + f] = z_f . zc_c for the rows f = rows[i] of Z, i in [i0, i1)
  * (rows NULL: f = i; n: the row stride of dist, > every f), c < L <= 8: the
  * candidates in the 8 lanes of a vector, the coordinates in order, one
- * fused multiply-add each from 0: the operations of OpenBLAS's AVX-512 and
- * AVX2 DGEMM kernels for an inner dimension they do not split (<= 256:
- * checked bitwise, the same numbers), without packing Z for every call
- * (1.7x faster for the 7 candidates of a greedy start at 2,653 x 128).
- * Each row's sums are its own, so which rows are taken together does not
- * change a bit. */
+ * fused multiply-add each from 0.  Every entry is its own chain of fused
+ * multiply-adds in coordinate order, so the lane width does not change a
+ * bit: dots_avx512 (one 8-lane vector per row) and dots_avx2 (two 4-lane
+ * halves) give the same numbers, and which rows are taken together does
+ * not change a bit either.  These are also the operations of OpenBLAS's
+ * SkylakeX DGEMM kernel for an inner dimension it does not split (<= 256:
+ * checked bitwise), but not of its Haswell kernel (1,319 of 1.86M values
+ * differ in the last bit at the Monkey size): the distances of dcols are
+ * the same on every FMA machine whatever kernel OpenBLAS picked.  Without
+ * packing Z for every call: 1.7x faster than DGEMM for the 7 candidates of
+ * a greedy start at 2,653 x 128. */
 __attribute__((target("avx512f,fma")))
 static void dots_avx512(const double *Z, int zd, const int *rows, int i0, int i1, const double *ZcT, int L, int n,
                         double *dist)
@@ -1501,6 +1506,34 @@ static void dots_avx512(const double *Z, int zd, const int *rows, int i0, int i1
 #undef ROW_
 }
 
+__attribute__((target("avx2,fma")))
+static void dots_avx2(const double *Z, int zd, const int *rows, int i0, int i1, const double *ZcT, int L, int n,
+                      double *dist)
+{
+    double t[8] __attribute__((aligned(32)));
+    for (int i = i0; i < i1; i++) {
+        int f = rows ? rows[i] : i;
+        const double *z0 = Z + (size_t)f * zd;
+        __m256d lo = _mm256_setzero_pd(), hi = lo;
+        for (int k = 0; k < zd; k++) {
+            __m256d a = _mm256_set1_pd(z0[k]);
+            lo = _mm256_fmadd_pd(a, _mm256_load_pd(ZcT + (size_t)k * 8), lo);
+            if (L > 4) hi = _mm256_fmadd_pd(a, _mm256_load_pd(ZcT + (size_t)k * 8 + 4), hi);
+        }
+        _mm256_store_pd(t, lo); _mm256_store_pd(t + 4, hi);
+        for (int c = 0; c < L; c++) dist[(size_t)c * n + f] = t[c];
+    }
+}
+
+/* dots_avx512 or dots_avx2, whichever the CPU has (dots_ok) */
+static int dots_wide = -1;      /* 1: AVX-512, 0: AVX2, -1: not yet asked */
+static void dots_fma(const double *Z, int zd, const int *rows, int i0, int i1, const double *ZcT, int L, int n,
+                     double *dist)
+{
+    if (dots_wide) dots_avx512(Z, zd, rows, i0, i1, ZcT, L, n, dist);
+    else dots_avx2(Z, zd, rows, i0, i1, ZcT, L, n, dist);
+}
+
 static void dcols_block(void *ctx, int i)
 {
     const struct dcols_job *j = ctx;
@@ -1511,7 +1544,7 @@ static void dcols_block(void *ctx, int i)
         int i0 = 0, i1 = j->nrows;
         if (i >= 0) chunk_rows(j->nrows, i, &i0, &i1);
         if (i1 <= i0) return;
-        dots_avx512(D->Z, zd, j->rows, i0, i1, j->ZcT, L, n, j->dist);
+        dots_fma(D->Z, zd, j->rows, i0, i1, j->ZcT, L, n, j->dist);
         for (int c = 0; c < L; c++) {
             double *dc = j->dist + (size_t)c * n, zg = D->zz[j->g[c]];
             for (int r = i0; r < i1; r++) {
@@ -1528,7 +1561,7 @@ static void dcols_block(void *ctx, int i)
         for (int c = 0; c < L; c++)
             memcpy(j->dist + (size_t)c * n + f0, D->K + (size_t)j->g[c] * D->N + f0, sizeof(double) * (f1 - f0));
     } else if (j->ZcT) {
-        dots_avx512(D->Z, zd, NULL, f0, f1, j->ZcT, L, n, j->dist);
+        dots_fma(D->Z, zd, NULL, f0, f1, j->ZcT, L, n, j->dist);
     } else {
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasTrans, L, f1 - f0, zd, 1.0, j->Zc, zd, D->Z + (size_t)f0 * zd, zd,
                     0.0, j->dist + f0, n);
@@ -1542,22 +1575,24 @@ static void dcols_block(void *ctx, int i)
     }
 }
 
-/* the kernel above is used only where OpenBLAS runs its SkylakeX kernels
- * (the ones it was checked against; e.g. not the Prescott fallback of
- * STOPMO_BLAS_TUNE=0, whose products round differently: there the BLAS
- * call, as before) */
-extern char *openblas_get_corename(void);
-static int dots_avx512_ok(void)
+/* dots_fma runs wherever the CPU has FMA and AVX2 or AVX-512, whatever
+ * OpenBLAS's kernel (elsewhere dcols is the BLAS call: e.g. a CPU without
+ * FMA); STOPMO_NO_AVX512 set (not 0) takes the AVX2 twin on an AVX-512
+ * CPU, which must give the same bytes (t0327) */
+static int dots_ok(void)
 {
     static int ok = -1;     /* set once, before the workers start (seeding runs on them: see replib_learn) */
     if (ok < 0) {
-        const char *c = openblas_get_corename();
-        ok = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma") && c && !strcasecmp(c, "skylakex");
+        __builtin_cpu_init();
+        int fma = __builtin_cpu_supports("fma");
+        const char *e = getenv("STOPMO_NO_AVX512");     /* the AVX2 twin on an AVX-512 CPU (tests) */
+        dots_wide = fma && __builtin_cpu_supports("avx512f") && !(e && *e && strcmp(e, "0"));
+        ok = dots_wide || (fma && __builtin_cpu_supports("avx2"));
     }
     return ok;
 }
 
-/* ZcT (zdim by 8, 64-byte aligned, zero-padded) for dots_avx512 with the
+/* ZcT (zdim by 8, 64-byte aligned, zero-padded) for dots_fma with the
  * L <= 8 rows g of Z, or NULL (allocation) */
 static double *candidates_t(const struct replib_data *D, const int *g, int L)
 {
@@ -1573,7 +1608,7 @@ static int dcols(const struct replib_data *D, struct team *t, const int *g, int 
 {
     int zd = D->zdim;
     double *Zc = NULL, *ZcT = NULL;
-    if (!D->K && L <= 8 && zd <= REPLIB_TEAM_MAXK && dots_avx512_ok()) {
+    if (!D->K && L <= 8 && zd <= REPLIB_TEAM_MAXK && dots_ok()) {
         if (!(ZcT = candidates_t(D, g, L))) return -1;
     } else if (!D->K) {
         Zc = malloc(sizeof(double) * (size_t)L * zd);
@@ -1641,20 +1676,20 @@ static int prune_frames(const struct replib_data *D, const int *g, int L, const 
  * |z_f - z_c| >= |z_c - z_o| - |z_f - z_o|, so that |z_c - z_o|^2 - E >=
  * 4 (mind[f] + E) implies |z_f - z_c|^2 >= mind[f] + E (Elkan 2003).  The
  * distances |z_c - z_o| to the centres come first (a few rows); the
- * frames left are measured by the same kernel (dots_avx512: each row's
+ * frames left are measured by the same kernel (dots_fma: each row's
  * sums are its own), so every entry the caller reads from a measured frame
  * has the bits dcols gives it.  Measured at the Monkey size (2,653 frames,
  * d = 150): two thirds of the frames are not measured in the greedy
  * starts, half of them in the split/merge proposals (norm bound only: the
  * pieces are not frames).  mind (n): the thresholds (not finite: the
  * frame is measured); owner (n, or NULL): the centre row of each frame's
- * mind (< N), or -1.  Only where dcols uses dots_avx512 (else it is
+ * mind (< N), or -1.  Only where dcols uses dots_fma (else it is
  * dcols).  Returns 0 or -1 (allocation). */
 static int dcols_pruned(const struct replib_data *D, struct team *t, const int *g, int L, const double *mind,
                         const int *owner, double *dist)
 {
     int n = D->n, N = D->N, zd = D->zdim;
-    if (D->K || L > 8 || zd > REPLIB_TEAM_MAXK || !dots_avx512_ok()) return dcols(D, t, g, L, dist);
+    if (D->K || L > 8 || zd > REPLIB_TEAM_MAXK || !dots_ok()) return dcols(D, t, g, L, dist);
     double *ZcT = candidates_t(D, g, L);
     int *slot = malloc(sizeof(int) * N), *orow = malloc(sizeof(int) * N), *need = malloc(sizeof(int) * n);
     double *dco = malloc(sizeof(double) * (size_t)8 * (N + 1)), *nf = malloc(sizeof(double) * 2 * n);
@@ -1669,8 +1704,8 @@ static int dcols_pruned(const struct replib_data *D, struct team *t, const int *
     for (int i = 0; i < N; i++) slot[i] = -1;
     for (int f = 0; f < n && owner; f++)
         if (owner[f] >= 0 && slot[owner[f]] < 0) { slot[owner[f]] = no; orow[no++] = owner[f]; }
-    /* dots_avx512 writes row o's products to dco[c (N + 1) + o] */
-    if (no > 0) dots_avx512(D->Z, zd, orow, 0, no, ZcT, L, N + 1, dco);
+    /* dots_fma writes row o's products to dco[c (N + 1) + o] */
+    if (no > 0) dots_fma(D->Z, zd, orow, 0, no, ZcT, L, N + 1, dco);
     for (int c = 0; c < L; c++) {
         for (int k = 0; k < no; k++) {
             int o = orow[k];
@@ -2214,7 +2249,7 @@ static int learn_run(const struct replib_data *D, const struct replib_opts *o, s
      * iteration products are small); results do not depend on the order */
     int blas_threads = openblas_get_num_threads();
     openblas_set_num_threads(1);
-    dots_avx512_ok();           /* its lazy answer, before the workers read it */
+    dots_ok();                  /* its lazy answer, before the workers read it */
     for (int t = 0; t < nth; t++) {
         wk[t] = (struct worker){D, o, out, restarts, &next, &lock, nth > 1 ? &team : NULL, 0, {0}};
         if (t == nth - 1) {

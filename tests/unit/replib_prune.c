@@ -3,7 +3,7 @@
  * change nothing: the same labels, the same library bit for bit and the
  * same energy as measuring every frame (replib_opts.no_prune), on the
  * direct back end (where the bounds apply: reduced coordinates of at most
- * 256 columns, OpenBLAS on its SkylakeX kernels), lambda 0 and > 0, cuts,
+ * 256 columns, a CPU with FMA and AVX2 or AVX-512), lambda 0 and > 0, cuts,
  * weights, fixed pieces (centres that are not frames), 1 and 2 threads,
  * frame counts past the threads' help threshold (512); and far-apart
  * clusters, where most frames are skipped, next to overlapping ones. */
@@ -20,8 +20,8 @@ int main(int argc, char **argv)
 {
     (void)argc;
     blas_tune(argv);        /* the kernels the bounds run with (re-executes once) */
-    diag("OpenBLAS kernel %s (the bounds apply on SkylakeX only; elsewhere both runs measure every frame)",
-         blas_corename());
+    diag("OpenBLAS kernel %s (the bounds apply on any kernel of a CPU with FMA and AVX2 or AVX-512; "
+         "elsewhere both runs measure every frame)", blas_corename());
     struct rng r;
     rng_seed(&r, 23);
     int same_labels = 1, same_lib = 1, same_energy = 1, cases = 0;
