@@ -917,6 +917,10 @@ int main(int argc, char **argv)
      * pass's automatic landmarks while the second runs */
     const int npass = o.passes ? o.passes : 3;     /* 0: auto; the third only as below */
     double *Xp = npass > 1 ? malloc((size_t)S.nv * 3 * sizeof *Xp) : NULL;
+    /* the second pass's starts by kind (START_*), for the third: the same
+     * start from the same result and landmarks, so not made twice */
+    double *VS2 = npass > 2 ? malloc((size_t)4 * S.nv * 3 * sizeof *VS2) : NULL;
+    int vs2_ok[4];
     double *X2 = npass > 1 ? malloc((size_t)S.nv * 3 * sizeof *X2) : NULL;
     /* --steps-out: the first pass's steps while the second runs */
     double *Fp = npass > 1 && o.steps_out ? malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *Fp) : NULL;
@@ -924,6 +928,7 @@ int main(int argc, char **argv)
     for (int k = 0; k < o.ntargets; k++) {
       double score0 = 0;
       int bestc0 = START_NONE;
+      memset(vs2_ok, 0, sizeof vs2_ok);
       int passk = 0, bfl0 = 0;      /* the pass kept, its flipped faces and distance */
       double bh0 = 0;
       struct landmarks L0 = {0};
@@ -974,7 +979,17 @@ int main(int argc, char **argv)
             if (cand[c] == START_SHELL) oc.init_deform = oc.init_shell = 1;
             if (cand[c] == START_NONE) oc.init_deform = 0;
             double t0 = now_seconds();
-            double *VS = key_start(&oc, &S, start, Lc);
+            double *VS;
+            if (pass == 2 && vs2_ok[cand[c]]) {
+                VS = malloc((size_t)S.nv * 3 * sizeof *VS);
+                memcpy(VS, VS2 + (size_t)cand[c] * S.nv * 3, (size_t)S.nv * 3 * sizeof *VS);
+            } else {
+                VS = key_start(&oc, &S, start, Lc);
+                if (pass == 1 && VS2) {
+                    memcpy(VS2 + (size_t)cand[c] * S.nv * 3, VS, (size_t)S.nv * 3 * sizeof *VS);
+                    vs2_ok[cand[c]] = 1;
+                }
+            }
             for (int rv = 0; rv < nrest * nrel; rv++) {
                 int r = rv / nrel, v = rv % nrel;
                 const double *rest = r ? NULL : rest_first;
@@ -1151,6 +1166,7 @@ int main(int argc, char **argv)
     for (int k = 0; k < o.ntargets && o.settle > 0; k++)
         key_settle(&o, &S, &T[k], o.chain ? o.targets[k] : NULL, &st, K + (size_t)(k + 1) * S.nv * 3);
     free(Xp);
+    free(VS2);
     free(X2);
     free(Fp);
     free(Xc);
