@@ -187,8 +187,10 @@ struct options {
     int settle_given;
     int passes_given;      /* --passes on the command line */
     int passes;            /* 2: each key registered again from its result, the better kept;
-                              0 (auto): only where the first ends farther than
-                              START_ACCEPT or with more than START_FLIPS flipped faces */
+                              3: and a third time from the first result with the rest
+                              shape SOURCE; 0 (auto): the second only where the first
+                              ends farther than START_ACCEPT or with more than
+                              START_FLIPS flipped faces, the third where both do */
     struct nricp_params p;
 };
 
