@@ -49,9 +49,22 @@ test_expect_success '--steps-out: the steps of the kept pass, the same result as
 	else cmp st.mesh st1.mesh
 	fi
 '
-test_expect_success 'usage: --passes 1, 2 or auto' '
+# the third pass: from the first result again, the fit's rest shape
+# SOURCE (a first result that stretched the skin somewhere is, as the
+# second pass's rest, kept stretched there; nricp(1))
+test_expect_success '--passes 3: a third pass with the rest shape SOURCE, the lowest score kept' '
+	nricp -v -k 4 --fit 6 --passes 3 src.mesh g.mesh >three.mesh 2>err3 && cat err3 &&
+	grep "so far the \(first\|second\) pass (score .*): once more from the first.s result, the rest shape SOURCE" err3 &&
+	grep "kept the \(first\|second\|third\) pass (score" err3 &&
+	a=$(score two.mesh) && b=$(score three.mesh) && echo "two passes $a, three $b" &&
+	test_le "$b" "$(awk "BEGIN { print $a + 1e-6 }")" &&
+	nricp -k 4 --fit 6 --passes 3 --steps-out st3.mesh src.mesh g.mesh >s3.mesh &&
+	cmp three.mesh s3.mesh &&
+	test "$(mesh-info st3.mesh | awk "/^frames/ { print \$2 }")" = 5
+'
+test_expect_success 'usage: --passes 1, 2, 3 or auto' '
 	test_must_fail_usage nricp --passes 0 src.mesh g.mesh &&
-	test_must_fail_usage nricp --passes 3 src.mesh g.mesh &&
+	test_must_fail_usage nricp --passes 4 src.mesh g.mesh &&
 	test_must_fail_usage nricp --passes x src.mesh g.mesh
 '
 test_done
