@@ -926,6 +926,7 @@ int main(int argc, char **argv)
     double *X2 = npass > 1 ? malloc((size_t)S.nv * 3 * sizeof *X2) : NULL;
     /* --steps-out: the first pass's steps while the second runs */
     double *Fp = npass > 1 && o.steps_out ? malloc((size_t)(o.p.steps + 1) * S.nv * 3 * sizeof *Fp) : NULL;
+    if (npass > 1 && (!Xp || !X2 || (o.steps_out && !Fp))) die("out of memory");
     int np = 0;
     for (int k = 0; k < o.ntargets; k++) {
       double score0 = 0;
@@ -984,6 +985,7 @@ int main(int argc, char **argv)
             double *VS;
             if (pass == 2 && vs2_ok[cand[c]]) {
                 VS = malloc((size_t)S.nv * 3 * sizeof *VS);
+                if (!VS) die("out of memory");
                 memcpy(VS, VS2 + (size_t)cand[c] * S.nv * 3, (size_t)S.nv * 3 * sizeof *VS);
             } else {
                 VS = key_start(&oc, &S, start, Lc);
