@@ -163,6 +163,18 @@ struct compat_refine_params {
                           largest smallest angle over every shape (not the
                           longest edge in its worst shape); the best of the
                           three passes is the result (a tie: the earlier) */
+    double slide;      /* (pa->mips > 0; one outer ring whose c->bidx is
+                          set) > 0: in the max-min polish an outline vertex
+                          that is neither a given point (c->bpin) nor made by
+                          a split may slide along its own shape's input
+                          outline (c->B), shape by shape, as long as each
+                          of its two outline edges stays within slide times
+                          the shape's bounding-box diagonal of the input
+                          points it spans (compat_simplify's measure) and
+                          crosses no other outline edge; 0: they stay.
+                          Only in the passes run again (split_share) unless
+                          slide_first */
+    int slide_first;   /* 1: also in the first pass */
 };
 /* rounds of the second pass that split every triangle below the goal
  * before split_share applies */
