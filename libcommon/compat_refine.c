@@ -1118,7 +1118,7 @@ static int polish_slide(const struct pose_jobs *pj, int s, int v)
     double q;
     SLIDE_Q(q);
     if (!(q > 0)) return 0;
-    double x0[2] = {x[0], x[1]}, save[2 * 2 * SLIDE_CHAIN];
+    double save[2 * 2 * SLIDE_CHAIN];
     for (int i = 0; i < nch; i++) { save[2 * i] = X[2 * ch[i]]; save[2 * i + 1] = X[2 * ch[i] + 1]; }
     double L = 0.5 * (hypot(X[2 * ap] - x[0], X[2 * ap + 1] - x[1]) + hypot(X[2 * an] - x[0], X[2 * an + 1] - x[1]));
     if (nch) L /= 1 + nch / 2.0;
@@ -1176,7 +1176,6 @@ static int polish_slide(const struct pose_jobs *pj, int s, int v)
         else h *= 0.5;
     }
     #undef SLIDE_Q
-    (void)x0;
     return moved;
 }
 

@@ -52,7 +52,9 @@
  *              triangles are positive in every shape.  Boundary edges are
  *              split too: the new vertex lies on the outline segment in
  *              every shape, so the outline is unchanged.
- * Input boundary vertices and interior points never move.  Angles at a boundary corner whose
+ * Input boundary vertices and interior points never move, except (with
+ * pa->slide) outline vertices that are not given points, which slide along
+ * their own shape's input outline in the polish, within the tolerance.  Angles at a boundary corner whose
  * opening is below twice the goal count as good when they are all the
  * corner can give (its opening divided by its triangle count).
  * Deterministic: no randomness, fixed visiting order.

@@ -470,6 +470,7 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
     }
     free(given);
     compat_simplify(cp, o->err, keep);
+    if (!cp->bidx && cp->nb > 3) die("out of memory");
     if (cp->bidx) {
         cp->bpin = malloc(cp->nb ? cp->nb : 1);
         if (!cp->bpin) die("out of memory");
