@@ -107,6 +107,11 @@ struct work {
                              outline edge, the outline vertices at the ends
                              of the input segment it lies on (it may slide
                              along it, shape by shape); -1 -1 otherwise */
+    double *stol;         /* N: pa->slide in each shape's units (NULL: no
+                             outline vertex slides along its input outline;
+                             a sliding vertex has seg[2v] = -2 - its index
+                             in c->B) */
+    int slide_now;        /* the passes that let them slide (stol set) */
     double *pose_cost;    /* 3 by N: CPU seconds of each pose's last smoothing job of each
                              kind (run_poses): a round's MIPS and smoothing, its polish,
                              the final smoothing and polish */
@@ -637,6 +642,8 @@ struct pose_jobs {
     const struct topology *t;
     const unsigned char *bnd, *seed;
     const int *seg;
+    const int *bsucc;     /* next outline vertex (for the sliding ones) */
+    const double *stol;   /* work.stol */
     int mips, smooth, polish; /* sweeps of each part of pose_job (0: none) */
     double goal;
     int threads;          /* compat_refine_params.threads */
@@ -961,6 +968,217 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
     return moved;
 }
 
+/* ---- outline vertices that slide along their input outline ---- */
+
+/* position of the parameter u (index into B, M points, cyclic) */
+static void bpoint(const double *B, int M, double u, double *p)
+{
+    int i = (int)floor(u);
+    double t = u - i;
+    i %= M;
+    if (i < 0) i += M;
+    const double *a = B + 2 * i, *b = B + 2 * ((i + 1) % M);
+    p[0] = a[0] + t * (b[0] - a[0]);
+    p[1] = a[1] + t * (b[1] - a[1]);
+}
+
+static double pseg_dist(const double *p, const double *a, const double *b)
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
+    double t = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
+    if (t < 0) t = 0;
+    if (t > 1) t = 1;
+    return hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+}
+
+/* parameter of the point p of the polyline B near index home: the segment
+ * nearest home (searching outwards) that p lies on (to rounding) */
+static double bparam(const double *B, int M, int home, const double *p, double eps)
+{
+    for (int d = 0; d <= M / 2; d++)
+        for (int sg = 0; sg < (d ? 2 : 1); sg++) {
+            int i = ((home + (sg ? -d : d)) % M + M) % M;
+            const double *a = B + 2 * i, *b = B + 2 * ((i + 1) % M);
+            if (pseg_dist(p, a, b) > eps) continue;
+            double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
+            double t = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
+            return i + fmin(fmax(t, 0), 1);
+        }
+    return -1;
+}
+
+/* the parameter arc length d (signed) along B from u, clamped to [lo, hi] */
+static double bseglen(const double *B, int M, double i)
+{
+    int k = (((int)i % M) + M) % M;
+    const double *a = B + 2 * k, *b = B + 2 * ((k + 1) % M);
+    return hypot(b[0] - a[0], b[1] - a[1]);
+}
+
+static double bwalk(const double *B, int M, double u, double d, double lo, double hi)
+{
+    if (d > 0) {
+        for (;;) {
+            double i = floor(u), L = bseglen(B, M, i), room = (1 - (u - i)) * L;
+            if (room >= d) { if (L > 0) u += d / L; break; }
+            d -= room; u = i + 1;
+            if (u >= hi) return hi;
+        }
+    } else {
+        d = -d;
+        for (;;) {
+            double i = ceil(u) - 1, L = bseglen(B, M, i), room = (u - i) * L;
+            if (room >= d) { if (L > 0) u -= d / L; break; }
+            d -= room; u = i;
+            if (u <= lo) return lo;
+        }
+    }
+    return u > hi ? hi : u < lo ? lo : u;
+}
+
+/* the chord from parameter ua to ub (ua < ub) within tol of every point of
+ * B strictly between them */
+static int chord_ok(const double *B, int M, double ua, double ub, double tol)
+{
+    double pa[2], pb[2];
+    bpoint(B, M, ua, pa);
+    bpoint(B, M, ub, pb);
+    for (int i = (int)floor(ua) + 1; i < ub; i++)
+        if (pseg_dist(B + 2 * (((i % M) + M) % M), pa, pb) > tol) return 0;
+    return 1;
+}
+
+/* do the segments p-q and a-b cross or touch (exact), a-b sharing no
+ * endpoint with p-q */
+static int seg_touch(const double *p, const double *q, const double *a, const double *b)
+{
+    int o1 = orient2_sign(p, q, a), o2 = orient2_sign(p, q, b);
+    int o3 = orient2_sign(a, b, p), o4 = orient2_sign(a, b, q);
+    if (o1 * o2 > 0 || o3 * o4 > 0) return 0;
+    if (o1 == 0 && o2 == 0) {   /* collinear: overlapping boxes */
+        for (int d = 0; d < 2; d++)
+            if (fmax(p[d], q[d]) < fmin(a[d], b[d]) || fmax(a[d], b[d]) < fmin(p[d], q[d])) return 0;
+    }
+    return 1;
+}
+
+/* Max-min polish of an outline vertex v of shape s that slides along the
+ * shape's input outline (pj->seg[2v] <= -2), between the input outline
+ * vertices before and after it (ap, an).  Outline vertices made by splits
+ * between ap and v (and v and an) lie on the edge's segment; they keep
+ * their fraction of it, so they move with v.  The pattern search of
+ * polish_vertex on the arc length maximises the smallest angle over the
+ * stars of every vertex that moves; each step is kept only if those stars
+ * stay positive (exact), both outline edges ap-v and v-an stay within the
+ * tolerance of the input points they span and cross no other outline
+ * edge.  Returns 1 if v moved. */
+#define SLIDE_CHAIN 64
+static int polish_slide(const struct pose_jobs *pj, int s, int v)
+{
+    struct compat *c = pj->c;
+    const struct topology *t = pj->t;
+    const int *seg = pj->seg;
+    double *X = c->X[s], *x = X + 2 * v;
+    int M = c->nm, nx = pj->bsucc[v], pv = -1;
+    const double *B = c->B[s];
+    for (int i = t->VVs[v]; i < t->VVs[v + 1]; i++)
+        if (pj->bnd[t->VV[i]] && pj->bsucc[t->VV[i]] == v) pv = t->VV[i];
+    if (pv < 0 || nx < 0) return 0;
+    int ap = seg[2 * pv] >= 0 ? seg[2 * pv] : pv, an = seg[2 * nx] >= 0 ? seg[2 * nx + 1] : nx;
+    if (ap >= c->nb || an >= c->nb || ap == an || seg[2 * ap] >= 0 || seg[2 * an] >= 0) return 0;
+    /* the split vertices on ap-v and v-an and their fractions */
+    int ch[2 * SLIDE_CHAIN], side[2 * SLIDE_CHAIN], nch = 0;
+    double fr[2 * SLIDE_CHAIN];
+    for (int sd = 0; sd < 2; sd++) {
+        int from = sd ? v : ap, to = sd ? an : v;
+        const double *A = X + 2 * from, *Bq = X + 2 * to;
+        double dx = Bq[0] - A[0], dy = Bq[1] - A[1], L2 = dx * dx + dy * dy;
+        if (!(L2 > 0)) return 0;
+        for (int u = pj->bsucc[from], k = 0; u != to; u = pj->bsucc[u], k++) {
+            if (u < 0 || k >= SLIDE_CHAIN || seg[2 * u] < 0) return 0;
+            ch[nch] = u; side[nch] = sd;
+            fr[nch++] = ((X[2 * u] - A[0]) * dx + (X[2 * u + 1] - A[1]) * dy) / L2;
+        }
+    }
+    double eps = 1e-9 * pj->stol[s] + 1e-12;
+    int hv = -2 - seg[2 * v];
+    int hp = seg[2 * ap] <= -2 ? -2 - seg[2 * ap] : c->bidx[ap];
+    int hn = seg[2 * an] <= -2 ? -2 - seg[2 * an] : c->bidx[an];
+    double uv = bparam(B, M, hv, x, eps), up = bparam(B, M, hp, X + 2 * ap, eps), un = bparam(B, M, hn, X + 2 * an, eps);
+    if (uv < 0 || up < 0 || un < 0) return 0;
+    /* unwrap: up < uv < un */
+    while (up > uv) up -= M;
+    while (un < uv) un += M;
+    if (!(up < uv && uv < un) || un - up >= M) return 0;
+    /* the smallest angle over the stars of v and the chain at their positions in X */
+    #define SLIDE_Q(q_) do { \
+        q_ = star_quality(c, t, s, v, x); \
+        for (int i_ = 0; i_ < nch && q_ > 0; i_++) q_ = fmin(q_, star_quality(c, t, s, ch[i_], X + 2 * ch[i_])); \
+    } while (0)
+    double q;
+    SLIDE_Q(q);
+    if (!(q > 0)) return 0;
+    double save[2 * 2 * SLIDE_CHAIN];
+    for (int i = 0; i < nch; i++) { save[2 * i] = X[2 * ch[i]]; save[2 * i + 1] = X[2 * ch[i] + 1]; }
+    double L = 0.5 * (hypot(X[2 * ap] - x[0], X[2 * ap + 1] - x[1]) + hypot(X[2 * an] - x[0], X[2 * an + 1] - x[1]));
+    if (nch) L /= 1 + nch / 2.0;
+    double u = uv, p[2] = {x[0], x[1]};
+    int moved = 0;
+    double lo = up + 1e-6, hi = un - 1e-6;
+    for (double h = 0.2 * L; h > 1e-3 * L;) {
+        double bq = q, bu = u, bp[2] = {0, 0};
+        int found = 0;
+        for (int k = 0; k < 2; k++) {
+            double cu = bwalk(B, M, u, k ? -h : h, lo, hi), cp[2];
+            if (cu == u || !(cu > up && cu < un)) continue;
+            bpoint(B, M, cu, cp);
+            /* v and the chain there */
+            x[0] = cp[0]; x[1] = cp[1];
+            for (int i = 0; i < nch; i++) {
+                const double *A = side[i] ? cp : X + 2 * ap, *Bq = side[i] ? X + 2 * an : cp;
+                X[2 * ch[i]] = A[0] + fr[i] * (Bq[0] - A[0]);
+                X[2 * ch[i] + 1] = A[1] + fr[i] * (Bq[1] - A[1]);
+            }
+            double cq;
+            SLIDE_Q(cq);
+            int ok = cq > bq * (1 + 1e-9) && chord_ok(B, M, up, cu, pj->stol[s]) && chord_ok(B, M, cu, un, pj->stol[s]);
+            /* no other outline edge touched by the two new edges */
+            for (int a = 0; a < c->nv && ok; a++) {
+                int b = pj->bnd[a] ? pj->bsucc[a] : -1;
+                if (b < 0 || a == v || b == v) continue;
+                int inch = 0;
+                for (int i = 0; i < nch && !inch; i++) inch = a == ch[i] || b == ch[i];
+                if (inch) continue;
+                const double *A = X + 2 * a, *Bq = X + 2 * b;
+                if (a != ap && b != ap && seg_touch(X + 2 * ap, cp, A, Bq)) ok = 0;
+                else if (a != an && b != an && seg_touch(cp, X + 2 * an, A, Bq)) ok = 0;
+            }
+            if (ok) { bq = cq; bu = cu; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; }
+            /* back to the current position */
+            x[0] = p[0]; x[1] = p[1];
+            for (int i = 0; i < nch; i++) {
+                const double *A = side[i] ? p : X + 2 * ap, *Bq = side[i] ? X + 2 * an : p;
+                X[2 * ch[i]] = A[0] + fr[i] * (Bq[0] - A[0]);
+                X[2 * ch[i] + 1] = A[1] + fr[i] * (Bq[1] - A[1]);
+            }
+            if (!moved)   /* exactly where they were */
+                for (int i = 0; i < nch; i++) { X[2 * ch[i]] = save[2 * i]; X[2 * ch[i] + 1] = save[2 * i + 1]; }
+        }
+        if (found) {
+            q = bq; u = bu; p[0] = bp[0]; p[1] = bp[1]; moved = 1;
+            x[0] = p[0]; x[1] = p[1];
+            for (int i = 0; i < nch; i++) {
+                const double *A = side[i] ? p : X + 2 * ap, *Bq = side[i] ? X + 2 * an : p;
+                X[2 * ch[i]] = A[0] + fr[i] * (Bq[0] - A[0]);
+                X[2 * ch[i] + 1] = A[1] + fr[i] * (Bq[1] - A[1]);
+            }
+        }
+        else h *= 0.5;
+    }
+    #undef SLIDE_Q
+    return moved;
+}
+
 /* Polish of pose s: the movable vertices of triangles whose smallest
  * angle in that pose is below goal (and their neighbours) get
  * polish_vertex, in up to pj->polish sweeps while something moves; the
@@ -984,7 +1202,9 @@ static void polish_job(void *ctx, int s)
         if (!any) break;
         int m = 0;
         for (int v = 0; v < c->nv; v++) {
-            if (!dy[v] || (pj->bnd[v] && !(pj->seg && pj->seg[2 * v] >= 0)) || t->VFs[v + 1] == t->VFs[v]) continue;
+            if (!dy[v] || t->VFs[v + 1] == t->VFs[v]) continue;
+            if (pj->bnd[v] && pj->stol && pj->seg[2 * v] <= -2) { m += polish_slide(pj, s, v); continue; }
+            if (pj->bnd[v] && !(pj->seg && pj->seg[2 * v] >= 0)) continue;
             m += polish_vertex(c, t, s, v, pj->seg);
         }
         pj->moves[s] += m;
@@ -1011,12 +1231,13 @@ static void pose_job(void *ctx, int s)
  * smoothing, NULL: all; the MIPS and candidate smoothing visit only them
  * and whatever their moves disturb; cost: N, each pose's CPU seconds in
  * the last call, updated).  Returns the number of moves, -1 on error. */
-static int smooth_poses(struct compat *c, const unsigned char *bnd, const int *seg, const unsigned char *seed,
+static int smooth_poses(struct compat *c, const struct work *w, const unsigned char *seed,
                         double goal, int mips, int smooth, int polish, int threads, double *cost)
 {
     struct topology t;
     if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
-    struct pose_jobs pj = {.c = c, .t = &t, .bnd = bnd, .seed = seed, .seg = seg, .mips = mips, .smooth = smooth,
+    struct pose_jobs pj = {.c = c, .t = &t, .bnd = w->bnd, .seed = seed, .seg = w->seg, .bsucc = w->bsucc,
+                           .stol = w->slide_now ? w->stol : NULL, .mips = mips, .smooth = smooth,
                            .polish = polish, .goal = goal, .threads = threads, .cost = cost};
     int moves = run_poses(&pj);
     topology_free(&t);
@@ -1451,7 +1672,7 @@ static void refiner_free(struct compat_refiner *r)
     best_free(r->c->N, &r->start);
     best_free(r->c->N, &r->alt);
     free(r->start_id); free(r->start_sig);
-    free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->pose_cost); free(w->id); free(w->sig);
+    free(w->bnd); free(w->bsucc); free(w->seg); free(w->diag); free(w->stol); free(w->pose_cost); free(w->id); free(w->sig);
     free(r->sig); free(r->seed);
     free(r);
 }
@@ -1488,6 +1709,20 @@ struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat
         w->sig[v] = 0;
     }
     w->nextid = c->nv;
+    if (pa->slide > 0 && pa->mips > 0 && c->bidx && c->B && c->nrings == 0 && c->npts == 0 && c->nb >= 3) {
+        /* outline vertices that slide along their input outline */
+        w->stol = malloc(c->N * sizeof *w->stol);
+        if (!w->stol) { cm_seterr("out of memory"); goto fail; }
+        for (int s = 0; s < c->N; s++) {
+            double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+            for (int i = 0; i < c->nm; i++)
+                for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], c->B[s][2 * i + d]); hi[d] = fmax(hi[d], c->B[s][2 * i + d]); }
+            w->stol[s] = pa->slide * hypot(hi[0] - lo[0], hi[1] - lo[1]);
+        }
+        for (int v = 0; v < c->nb; v++)
+            if (!(c->bpin && c->bpin[v])) w->seg[2 * v] = -2 - c->bidx[v];
+        w->slide_now = pa->slide_first;
+    }
     {
         struct topology t;
         if (topology_build(c->F, c->nf, c->nv, &t) < 0) goto fail;
@@ -1595,7 +1830,7 @@ static int final_polish(struct compat_refiner *r)
             st->coarsened += m;
         }
         /* the candidate smoothing, then (with MIPS) the polish */
-        int m1 = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, pa->mips > 0 ? 4 : 0, pa->threads, w->pose_cost + 2 * c->N);
+        int m1 = smooth_poses(c, w, NULL, goal, 0, 8, pa->mips > 0 ? 4 : 0, pa->threads, w->pose_cost + 2 * c->N);
         if (m1 < 0) return -1;
         st->moves += m1;
         m += m1;
@@ -1627,12 +1862,12 @@ static int refine_round(struct compat_refiner *r)
         star_sigs(w, r->sig);
         for (int v = 0; v < c->nv; v++) r->seed[v] = r->sig[v] != w->sig[v];
     }
-    int m = smooth_poses(c, w->bnd, w->seg, r->seed, goal, pa->mips > 0 ? pa->mips : 0, 8, 0, pa->threads, w->pose_cost);
+    int m = smooth_poses(c, w, r->seed, goal, pa->mips > 0 ? pa->mips : 0, 8, 0, pa->threads, w->pose_cost);
     if (m < 0) return -1;
     st->moves += m;
     if (pa->mips > 0) {
         if (flips_until_done(c, &st->flips) < 0) return -1;
-        m = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 0, 4, pa->threads, w->pose_cost + c->N);
+        m = smooth_poses(c, w, NULL, goal, 0, 0, 4, pa->threads, w->pose_cost + c->N);
         if (m < 0) return -1;
         st->moves += m;
     }
@@ -1641,7 +1876,7 @@ static int refine_round(struct compat_refiner *r)
     int tc = pa->mips > 0 ? 0 : transfer(c, w->bnd, goal, &st->moves);
     if (tc < 0) return -1;
     if (tc > 0) {   /* whole shapes moved */
-        m = smooth_poses(c, w->bnd, w->seg, NULL, goal, 0, 8, 0, pa->threads, w->pose_cost + 2 * c->N);
+        m = smooth_poses(c, w, NULL, goal, 0, 8, 0, pa->threads, w->pose_cost + 2 * c->N);
         if (m < 0) return -1;
         st->moves += m;
     }
@@ -1761,6 +1996,7 @@ static int restart(struct compat_refiner *r, int pass)
     r->full = 1;
     r->prounds = 0;
     r->pass = pass;
+    w->slide_now = w->stol && (pass >= 1 || r->pa.slide_first);
     r->done = r->st->rounds >= r->pa.rounds;
     st->stop = COMPAT_REFINE_ROUNDS;
     st->cycles = 0;

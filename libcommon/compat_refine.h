@@ -52,7 +52,9 @@
  *              triangles are positive in every shape.  Boundary edges are
  *              split too: the new vertex lies on the outline segment in
  *              every shape, so the outline is unchanged.
- * Input boundary vertices and interior points never move.  Angles at a boundary corner whose
+ * Input boundary vertices and interior points never move, except (with
+ * pa->slide) outline vertices that are not given points, which slide along
+ * their own shape's input outline in the polish, within the tolerance.  Angles at a boundary corner whose
  * opening is below twice the goal count as good when they are all the
  * corner can give (its opening divided by its triangle count).
  * Deterministic: no randomness, fixed visiting order.
@@ -163,6 +165,18 @@ struct compat_refine_params {
                           largest smallest angle over every shape (not the
                           longest edge in its worst shape); the best of the
                           three passes is the result (a tie: the earlier) */
+    double slide;      /* (pa->mips > 0; one outer ring whose c->bidx is
+                          set) > 0: in the max-min polish an outline vertex
+                          that is neither a given point (c->bpin) nor made by
+                          a split may slide along its own shape's input
+                          outline (c->B), shape by shape, as long as each
+                          of its two outline edges stays within slide times
+                          the shape's bounding-box diagonal of the input
+                          points it spans (compat_simplify's measure) and
+                          crosses no other outline edge; 0: they stay.
+                          Only in the passes run again (split_share) unless
+                          slide_first */
+    int slide_first;   /* 1: also in the first pass */
 };
 /* rounds of the second pass that split every triangle below the goal
  * before split_share applies */

@@ -51,6 +51,7 @@ void compat_free(struct compat *c)
     }
     free(c->X); free(c->B); free(c->F);
     free(c->ring_start); free(c->ring_parent); free(c->pt_ring);
+    free(c->bidx); free(c->bpin);
     memset(c, 0, sizeof *c);
 }
 
@@ -116,6 +117,8 @@ int compat_match(int N, double *const *P, const int *n, const int *corr, int nco
         }
     }
     c->N = N;
+    c->bidx = NULL;
+    c->bpin = NULL;
     c->X = calloc(N, sizeof *c->X);
     c->B = calloc(N, sizeof *c->B);
     if (!c->X || !c->B) return cm_seterr("out of memory");
@@ -354,6 +357,11 @@ int compat_simplify(struct compat *c, double err, const unsigned char *keep)
             if (alive[i]) { c->X[s][2 * k] = c->B[s][2 * i]; c->X[s][2 * k + 1] = c->B[s][2 * i + 1]; k++; }
     }
     c->nv = c->nb = m;
+    free(c->bidx);
+    c->bidx = malloc((m ? m : 1) * sizeof *c->bidx);
+    if (c->bidx)
+        for (int i = 0, k = 0; i < M; i++)
+            if (alive[i]) c->bidx[k++] = i;
     free(map); free(prv); free(nxt); free(cost); free(dg); free(alive); free(area);
     return m;
 }

@@ -65,6 +65,12 @@ struct compat {
     int *ring_parent; /* nrings: enclosing ring, -1 for a piece */
     int npts;
     int *pt_ring;     /* npts: the piece (outer ring) holding each point */
+    /* one outer ring (set by compat_simplify; NULL otherwise): bidx[v] is
+     * the index in B of boundary vertex v (0..nb-1); bpin (nb flags, set by
+     * the caller, NULL: none) marks the given correspondence points, which
+     * never slide along the outline (compat_refine_params.slide) */
+    int *bidx;
+    unsigned char *bpin;
 };
 
 /* Room for nv vertices in every shape's X (grows c->cap by doubling;

@@ -99,6 +99,14 @@ static const char help[] =
 "                        the same with each bad triangle split at the edge\n"
 "                        whose halves are best over every pose; the best\n"
 "                        pass is kept (default 0.2; 1: one pass only)\n"
+"      --slide WHEN      in the max-min polish of --refine, outline vertices\n"
+"                        that are not given points slide along their own\n"
+"                        pose's input outline (within -e, pose by pose):\n"
+"                        'rerun' (default: in the passes of --split-share run\n"
+"                        again after a first pass below the goal; a mesh at\n"
+"                        the goal after its first pass is unchanged), 'all'\n"
+"                        (every pass) or 'off' (outline vertices stay where\n"
+"                        the matching put them)\n"
 "      --threads N       the boundary matching, the triangulation's split\n"
 "                        search and the refinement's smoothing run on N\n"
 "                        threads (default 0: one per core); the output does\n"
@@ -130,6 +138,7 @@ struct options {
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
     double min_angle, split_share;
+    int slide;        /* --slide: 0 off, 1 in the passes run again, 2 in every pass */
     int nshapes;
     char **shapes;
     char *log;             /* non-NULL: build_single's -v lines go here (LOG_SIZE bytes) */
@@ -160,9 +169,10 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'X'}, {"threads", 1, 0, 'T'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
         {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'},
-        {"split-share", 1, 0, 'H'}, {0, 0, 0, 0}};
+        {"split-share", 1, 0, 'H'}, {"slide", 1, 0, 'L'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 0.2;
+    o->slide = 1;
     o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 10;
     int c;
     while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:m:vh", lo, NULL)) != -1) {
@@ -192,6 +202,12 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'a': o->min_angle = arg_double(optarg, "--min-angle"); break;
         case 'X': o->max_nv = arg_int(optarg, "--max-vertices"); break;
         case 'H': o->split_share = arg_double(optarg, "--split-share"); break;
+        case 'L':
+            if (!strcmp(optarg, "off")) o->slide = 0;
+            else if (!strcmp(optarg, "rerun")) o->slide = 1;
+            else if (!strcmp(optarg, "all")) o->slide = 2;
+            else usage_error("--slide must be 'off', 'rerun' or 'all'");
+            break;
         case 'T': o->threads = arg_int(optarg, "--threads"); break;
         case 'R': o->raw = 1; break;
         case 'm':
@@ -420,19 +436,47 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
     int rev = compat_corr_order(N, n, corr, ncorr);
     if (rev < 0) die("cannot read '%s': %s", o->corr, cm_errmsg());
     if (rev) binfo(o, "%s: points run clockwise along the outlines; using them in reverse order", o->corr);
+    /* the given rows never slide along the outline (--slide) */
+    int ngiven = ncorr, *given = malloc(((size_t)ncorr + 1) * N * sizeof *given);
+    if (!given) die("out of memory");
+    memcpy(given, corr, (size_t)ncorr * N * sizeof *given);
     if (o->match >= 0) corr = match_points(o, N, P, n, flipped, corr, &ncorr, want, nwant);
     else write_points(o, N, n, flipped, corr, ncorr);
     const char *corr_name = o->match >= 0 ? "the matched points" : o->corr;
     if (compat_match(N, P, n, corr, ncorr, cp, &keep) < 0) {
         cm_seterr("cannot read '%s': %s", corr_name, cm_errmsg());
-        free(keep); free(corr); free(want); columns_free(&C);
+        free(keep); free(corr); free(want); free(given); columns_free(&C);
         free(P); free(n); free(flipped);
         return -1;
     }
     int M = cp->nb;
     cp->split_mode = o->split;
     cp->threads = o->threads;
+    /* B indices of the given rows: the points of P they name, in every shape */
+    unsigned char *pinB = calloc(M ? M : 1, 1);
+    if (!pinB) die("out of memory");
+    for (int k = 0; k < ngiven; k++) {
+        int found = 0;
+        for (int i = 0; i < M && !found; i++) {
+            if (!keep || !keep[i]) continue;
+            int all = 1;
+            for (int s = 0; s < N && all; s++) {
+                const double *q = P[s] + 2 * given[(size_t)k * N + s];
+                all = cp->B[s][2 * i] == q[0] && cp->B[s][2 * i + 1] == q[1];
+            }
+            if (all) pinB[i] = found = 1;
+        }
+        if (!found) die("internal error: given row %d is not a point of the matched outline", k + 1);
+    }
+    free(given);
     compat_simplify(cp, o->err, keep);
+    if (!cp->bidx && cp->nb > 3) die("out of memory");
+    if (cp->bidx) {
+        cp->bpin = malloc(cp->nb ? cp->nb : 1);
+        if (!cp->bpin) die("out of memory");
+        for (int v = 0; v < cp->nb; v++) cp->bpin[v] = pinB[cp->bidx[v]];
+    }
+    free(pinB);
     /* the outline actually kept, against the input rings */
     double hmax = 0;
     int hs = 0;
@@ -560,7 +604,9 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
 {
     struct compat_refine_params pa = {o->min_angle * M_PI / 180, 0, o->max_nv ? o->max_nv : cpp->nv + 10 * cpp->nb, 200,
-                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share, 1};
+                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share, 1, 0, 0};
+    pa.slide = o->slide ? o->err : 0;
+    pa.slide_first = o->slide == 2;
     return pa;
 }
 
@@ -1124,6 +1170,19 @@ int main(int argc, char **argv)
         compat_pose_quality(&cp, s, &mn, &u10, &u20);
         info(1, "pose %d (%s): worst angle %.2f deg, %.1f%% of triangles under 10 deg, %.1f%% under 20, "
                 "%d vertices, %d triangles", s, o.shapes[s], mn * 180 / M_PI, 100 * u10, 100 * u20, cp.nv, cp.nf);
+    }
+    if (!multi && o.refine && o.slide && o.err > 0) {   /* the outline after the slides (--slide), against the input */
+        double hmax = 0;
+        int hs = 0;
+        for (int s = 0; s < N; s++) {
+            double h = compat_outline_error(&cp, s, R[s].P, rings_count(&R[s], 0));
+            if (h > hmax) { hmax = h; hs = s; }
+        }
+        if (hmax > o.err * (1 + 1e-6))
+            die("the outline of %s is %.3g of the diagonal off its input after the refinement's slides (tolerance %g)",
+                o.shapes[hs], hmax, o.err);
+        info(1, "outline after the refinement (--slide): within %.3g of the diagonal of the input (two-sided, largest in %s)",
+             hmax, o.shapes[hs]);
     }
     double minarea, q = compat_min_angle(&cp, &minarea);
     if (!(minarea > 0))
