@@ -982,15 +982,6 @@ static void bpoint(const double *B, int M, double u, double *p)
     p[1] = a[1] + t * (b[1] - a[1]);
 }
 
-static double pseg_dist(const double *p, const double *a, const double *b)
-{
-    double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
-    double t = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
-    if (t < 0) t = 0;
-    if (t > 1) t = 1;
-    return hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
-}
-
 /* parameter of the point p of the polyline B near index home: the segment
  * nearest home (searching outwards) that p lies on (to rounding) */
 static double bparam(const double *B, int M, int home, const double *p, double eps)
@@ -999,7 +990,7 @@ static double bparam(const double *B, int M, int home, const double *p, double e
         for (int sg = 0; sg < (d ? 2 : 1); sg++) {
             int i = ((home + (sg ? -d : d)) % M + M) % M;
             const double *a = B + 2 * i, *b = B + 2 * ((i + 1) % M);
-            if (pseg_dist(p, a, b) > eps) continue;
+            if (compat_seg_dist(p, a, b) > eps) continue;
             double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
             double t = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
             return i + fmin(fmax(t, 0), 1);
@@ -1044,7 +1035,7 @@ static int chord_ok(const double *B, int M, double ua, double ub, double tol)
     bpoint(B, M, ua, pa);
     bpoint(B, M, ub, pb);
     for (int i = (int)floor(ua) + 1; i < ub; i++)
-        if (pseg_dist(B + 2 * (((i % M) + M) % M), pa, pb) > tol) return 0;
+        if (compat_seg_dist(B + 2 * (((i % M) + M) % M), pa, pb) > tol) return 0;
     return 1;
 }
 

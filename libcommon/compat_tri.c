@@ -238,7 +238,6 @@ int compat_corr_order(int N, const int *n, int *corr, int ncorr)
     return 1;
 }
 
-static double seg_dist(const double *p, const double *a, const double *b);
 
 /* distance from p to the closed polyline R (n points), or any value <=
  * floor once one segment is that close (the caller keeps a maximum that is
@@ -251,7 +250,7 @@ static double ring_dist(const double *p, const double *R, int n, double floor, i
     int h0 = *hint;
     for (int k = 0; k < n; k++) {
         int i = (h0 + k) % n;
-        double x = seg_dist(p, R + 2 * i, R + 2 * ((i + 1) % n));
+        double x = compat_seg_dist(p, R + 2 * i, R + 2 * ((i + 1) % n));
         if (x < d) { d = x; *hint = i; }
         if (d <= floor) break;
     }
@@ -279,7 +278,7 @@ double compat_outline_error(const struct compat *c, int s, const double *P, int 
 /* ------------------------------------------------------------------ */
 /* simplification */
 
-static double seg_dist(const double *p, const double *a, const double *b)
+double compat_seg_dist(const double *p, const double *a, const double *b)
 {
     double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
     double t = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
@@ -311,7 +310,7 @@ int compat_simplify(struct compat *c, double err, const unsigned char *keep)
         else for (int s_ = 0; s_ < N; s_++) { \
             const double *A_ = c->B[s_] + 2 * a_, *B_ = c->B[s_] + 2 * b_; \
             for (int j_ = (a_ + 1) % M; j_ != b_; j_ = (j_ + 1) % M) { \
-                double d_ = seg_dist(c->B[s_] + 2 * j_, A_, B_) / dg[s_]; \
+                double d_ = compat_seg_dist(c->B[s_] + 2 * j_, A_, B_) / dg[s_]; \
                 if (d_ > e_) e_ = d_; } } \
         cost[i] = e_; } while (0)
     for (int i = 0; i < M; i++) COST(i);

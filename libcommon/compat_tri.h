@@ -102,6 +102,9 @@ int compat_corr_order(int N, const int *n, int *corr, int ncorr);
  * boundary to the ring at 16 points per boundary edge. */
 double compat_outline_error(const struct compat *c, int s, const double *P, int n);
 
+/* Distance from the point p (2) to the segment a-b (2 each, 2D). */
+double compat_seg_dist(const double *p, const double *a, const double *b);
+
 /* Greedy compatible simplification of the boundary; err: threshold as a
  * fraction of each shape's bounding-box diagonal; keep: M flags of points
  * never removed.  Returns the new boundary size. */

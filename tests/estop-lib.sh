@@ -35,3 +35,16 @@ nosed_egg() {
 		printf "%.17g %.17g %.17g\n", xx, y, zz - 0.1; next }
 	{ print }' "$1"
 }
+
+# test_kernel K FLAG TITLE BODY: BODY with OPENBLAS_CORETYPE=K where
+# /proc/cpuinfo has FLAG, else skipped (the registration's nonlinear steps
+# turn the last bits in which OpenBLAS's CPU kernels round into other
+# poses: nricp(1) REPRODUCIBILITY)
+test_kernel() {
+	if grep -qw "$2" /proc/cpuinfo 2>/dev/null; then
+		test_expect_success "$3 (OPENBLAS_CORETYPE=$1)" "OPENBLAS_CORETYPE=$1 && export OPENBLAS_CORETYPE && $4"
+	else
+		test_count=$((test_count + 1))
+		say "ok $test_count # skip $3 (OPENBLAS_CORETYPE=$1: the CPU has no $2)"
+	fi
+}

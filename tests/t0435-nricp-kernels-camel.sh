@@ -7,16 +7,7 @@ need_shared_data scans/camel-gallop-04.off
 # The registration's nonlinear steps turn the last bits in which OpenBLAS's
 # CPU kernels round into other poses (nricp(1) REPRODUCIBILITY); t0430
 # checks the goals with the suite's kernel (Haswell), this file with two
-# others, each where the CPU runs it.  test_kernel K FLAG TITLE BODY: BODY
-# with OPENBLAS_CORETYPE=K where /proc/cpuinfo has FLAG, else skipped.
-test_kernel() {
-	if grep -qw "$2" /proc/cpuinfo 2>/dev/null; then
-		test_expect_success "$3 (OPENBLAS_CORETYPE=$1)" "OPENBLAS_CORETYPE=$1 && export OPENBLAS_CORETYPE && $4"
-	else
-		test_count=$((test_count + 1))
-		say "ok $test_count # skip $3 (OPENBLAS_CORETYPE=$1: the CPU has no $2)"
-	fi
-}
+# others, each where the CPU runs it (test_kernel: estop-lib.sh).
 
 test_expect_success 'setup: clean camel scans 01, 03 and 04' '
 	camel_scans 01 03 04

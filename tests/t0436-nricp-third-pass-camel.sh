@@ -4,17 +4,6 @@ test_description='nricp camel 03 -> 01 on three OpenBLAS kernels: the third pass
 . "$TEST_DIRECTORY/estop-lib.sh"
 need_shared_data scans/camel-gallop-03.off
 
-# as t0435: test_kernel K FLAG TITLE BODY runs BODY with OPENBLAS_CORETYPE=K
-# where /proc/cpuinfo has FLAG, else skips it
-test_kernel() {
-	if grep -qw "$2" /proc/cpuinfo 2>/dev/null; then
-		test_expect_success "$3 (OPENBLAS_CORETYPE=$1)" "OPENBLAS_CORETYPE=$1 && export OPENBLAS_CORETYPE && $4"
-	else
-		test_count=$((test_count + 1))
-		say "ok $test_count # skip $3 (OPENBLAS_CORETYPE=$1: the CPU has no $2)"
-	fi
-}
-
 test_expect_success 'setup: clean camel scans 01 and 03' '
 	camel_scans 01 03
 '
