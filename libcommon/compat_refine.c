@@ -1039,20 +1039,6 @@ static int chord_ok(const double *B, int M, double ua, double ub, double tol)
     return 1;
 }
 
-/* do the segments p-q and a-b cross or touch (exact), a-b sharing no
- * endpoint with p-q */
-static int seg_touch(const double *p, const double *q, const double *a, const double *b)
-{
-    int o1 = orient2_sign(p, q, a), o2 = orient2_sign(p, q, b);
-    int o3 = orient2_sign(a, b, p), o4 = orient2_sign(a, b, q);
-    if (o1 * o2 > 0 || o3 * o4 > 0) return 0;
-    if (o1 == 0 && o2 == 0) {   /* collinear: overlapping boxes */
-        for (int d = 0; d < 2; d++)
-            if (fmax(p[d], q[d]) < fmin(a[d], b[d]) || fmax(a[d], b[d]) < fmin(p[d], q[d])) return 0;
-    }
-    return 1;
-}
-
 /* Max-min polish of an outline vertex v of shape s that slides along the
  * shape's input outline (pj->seg[2v] <= -2), between the input outline
  * vertices before and after it (ap, an).  Outline vertices made by splits
@@ -1141,8 +1127,8 @@ static int polish_slide(const struct pose_jobs *pj, int s, int v)
                 for (int i = 0; i < nch && !inch; i++) inch = a == ch[i] || b == ch[i];
                 if (inch) continue;
                 const double *A = X + 2 * a, *Bq = X + 2 * b;
-                if (a != ap && b != ap && seg_touch(X + 2 * ap, cp, A, Bq)) ok = 0;
-                else if (a != an && b != an && seg_touch(cp, X + 2 * an, A, Bq)) ok = 0;
+                if (a != ap && b != ap && segments_meet(X + 2 * ap, cp, A, Bq)) ok = 0;
+                else if (a != an && b != an && segments_meet(cp, X + 2 * an, A, Bq)) ok = 0;
             }
             if (ok) { bq = cq; bu = cu; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; }
             /* back to the current position */
