@@ -63,6 +63,44 @@ static void z_rows(const struct replib_data *D, const double *sw, int i0, int nb
     }
 }
 
+/* The Gram matrix K = Z Z^T (upper triangle) of the centred, weighted rows,
+ * by blocks of GRAM_COLS columns: K is the sum over column blocks c of
+ * Z[:, c] Z[:, c]^T, so each block of Z is made in a buffer of N x GRAM_COLS
+ * that stays in cache and is added by one SYRK.  Z (N x 3#V) is never held
+ * whole: on a 335 x 3510 facecap part that saves writing (and first touching)
+ * 9.4 MB, a third of the preparation.  single: SSYRK into a float K, then
+ * widened (gram == 2).  Returns -1 when out of memory. */
+#define GRAM_COLS 256
+static int gram_by_columns(struct replib_data *D, const double *sw, int single)
+{
+    int n = D->n, N = D->N, m3 = D->m3;
+    const double *mu = D->mean;
+    double *B = single ? NULL : malloc(sizeof(double) * (size_t)N * GRAM_COLS);
+    float *Bf = single ? malloc(sizeof(float) * (size_t)N * GRAM_COLS) : NULL;
+    float *Kf = single ? calloc((size_t)N * N, sizeof(float)) : NULL;
+    if (single ? !Bf || !Kf : !B) { free(B); free(Bf); free(Kf); return -1; }
+    for (int c0 = 0; c0 < m3; c0 += GRAM_COLS) {
+        int cb = m3 - c0 < GRAM_COLS ? m3 - c0 : GRAM_COLS;
+        for (int g = 0; g < N; g++) {
+            const double *x = (g < n ? D->X + (size_t)g * m3 : D->Rfix + (size_t)(g - n) * m3) + c0;
+            double *b = B + (size_t)g * cb;
+            float *bf = Bf + (size_t)g * cb;
+            for (int k = 0; k < cb; k++) {
+                double z = sw ? sw[c0 + k] * (x[k] - mu[c0 + k]) : x[k] - mu[c0 + k];
+                if (single) bf[k] = (float)z; else b[k] = z;
+            }
+        }
+        if (single)
+            cblas_ssyrk(CblasRowMajor, CblasUpper, CblasNoTrans, N, cb, 1.0f, Bf, cb, c0 ? 1.0f : 0.0f, Kf, N);
+        else
+            cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, N, cb, 1.0, B, cb, c0 ? 1.0 : 0.0, D->K, N);
+    }
+    if (single)
+        for (size_t k = 0; k < (size_t)N * N; k++) D->K[k] = Kf[k];
+    free(B); free(Bf); free(Kf);
+    return 0;
+}
+
 /* The low-rank test streams Z by blocks of rows (never the whole N x 3#V). */
 double replib_input_step(const double *X, size_t count)
 {
@@ -193,9 +231,6 @@ int replib_prepare(struct replib_data *D)
     if (!(D->swap_cost >= 0) || !isfinite(D->swap_cost))
         return cm_seterr("replib: swap cost %g is not a finite number >= 0", D->swap_cost);
     int m3 = D->m3 = 3 * nv, N = D->N = n + D->nfix;
-    for (size_t k = 0; k < (size_t)n * m3; k++)
-        if (!isfinite(D->X[k]))
-            return cm_seterr("frame %zu: vertex %zu: coordinate is not finite", k / m3, (k % m3) / 3);
     for (size_t k = 0; k < (size_t)D->nfix * m3; k++)
         if (!isfinite(D->Rfix[k]))
             return cm_seterr("fixed piece %zu: vertex %zu: coordinate is not finite", k / m3, (k % m3) / 3);
@@ -217,9 +252,23 @@ int replib_prepare(struct replib_data *D)
         return cm_seterr("replib: out of memory (%d frames x %d vertices)", n, nv);
     }
     for (int f = 0; f + 1 < n; f++) D->link[f] = !(D->cut && D->cut[f + 1]);
+    /* the mean frame and the finiteness check in one pass over X: a sum of
+     * finite values is finite (coordinates are far below 1e308 / n) */
     for (int f = 0; f < n; f++)
         for (int k = 0; k < m3; k++) D->mean[k] += D->X[(size_t)f * m3 + k];
-    for (int k = 0; k < m3; k++) D->mean[k] /= n;
+    for (int k = 0; k < m3; k++) {
+        if (!isfinite(D->mean[k]))
+            for (int f = 0; f < n; f++)
+                if (!isfinite(D->X[(size_t)f * m3 + k])) {
+                    replib_data_free(D);
+                    return cm_seterr("frame %d: vertex %d: coordinate is not finite", f, k / 3);
+                }
+        if (!isfinite(D->mean[k])) {
+            replib_data_free(D);
+            return cm_seterr("vertex %d: coordinates too large (their sum over the frames overflows)", k / 3);
+        }
+        D->mean[k] /= n;
+    }
     double *sw = NULL;
     if (D->w) {
         if (!(sw = malloc(sizeof(double) * m3))) { replib_data_free(D); return cm_seterr("replib: out of memory"); }
@@ -240,7 +289,14 @@ int replib_prepare(struct replib_data *D)
             gram = 0;
         }
     }
-    if (!D->lowrank) {
+    if (gram) {
+        /* lowrank has set gram = 0: the Gram back end holds K alone, never Z */
+        D->K = big_alloc(sizeof(double) * (size_t)N * N);
+        if (!D->K || gram_by_columns(D, sw, gram == 2) < 0) {
+            free(sw); replib_data_free(D);
+            return cm_seterr("replib: out of memory for the %d x %d Gram matrix", N, N);
+        }
+    } else if (!D->lowrank) {
         D->Z = big_alloc(sizeof(double) * (size_t)N * m3);
         if (!D->Z) {
             free(sw); replib_data_free(D);
@@ -252,26 +308,6 @@ int replib_prepare(struct replib_data *D)
     D->gram = gram;
     int zd = D->zdim;
     if (gram) {
-        D->K = big_alloc(sizeof(double) * (size_t)N * N);
-        if (!D->K) {
-            replib_data_free(D);
-            return cm_seterr("replib: out of memory for the %d x %d Gram matrix", N, N);
-        }
-        if (gram == 2) {
-            /* single precision Gram (SSYRK, about 2x faster); costs then carry
-             * ~1e-7 relative errors, the reported energies stay exact */
-            float *Zf = malloc(sizeof(float) * (size_t)N * m3), *Kf = malloc(sizeof(float) * (size_t)N * N);
-            if (!Zf || !Kf) {
-                free(Zf); free(Kf); replib_data_free(D);
-                return cm_seterr("replib: out of memory for the %d x %d Gram matrix", N, N);
-            }
-            for (size_t k = 0; k < (size_t)N * m3; k++) Zf[k] = (float)D->Z[k];
-            cblas_ssyrk(CblasRowMajor, CblasUpper, CblasNoTrans, N, m3, 1.0f, Zf, m3, 0.0f, Kf, N);
-            for (size_t k = 0; k < (size_t)N * N; k++) D->K[k] = Kf[k];
-            free(Zf); free(Kf);
-        } else {
-            cblas_dsyrk(CblasRowMajor, CblasUpper, CblasNoTrans, N, m3, 1.0, D->Z, m3, 0.0, D->K, N);
-        }
         for (int i = 0; i < N; i++)
             for (int j = 0; j < i; j++) D->K[(size_t)i * N + j] = D->K[(size_t)j * N + i];
         for (int g = 0; g < N; g++) D->zz[g] = D->K[(size_t)g * N + g];
@@ -279,8 +315,6 @@ int replib_prepare(struct replib_data *D)
             if (D->link[f])
                 D->dd[f] = D->K[(size_t)f * N + f] + D->K[(size_t)(f + 1) * N + f + 1] -
                            2 * D->K[(size_t)f * N + f + 1];
-        free(D->Z);
-        D->Z = NULL;
     } else {
         for (int g = 0; g < N; g++) {
             const double *z = D->Z + (size_t)g * zd;
@@ -802,6 +836,12 @@ struct work {
     double *hs;                 /* n by ncand + 1: its DP values */
     int cand_reuse;             /* 1: the next candidate label step keeps those candidates */
     struct team *team;          /* idle workers' help (NULL: none) */
+    /* Gram back end, simple library system (gram_costs): the sums of K's
+     * rows over each piece's frames, kept for pieces whose frames did not
+     * change */
+    double *ks;                 /* d by N: the sum for piece a (valid where ksf says so) */
+    int *ksf;                   /* n: the piece whose sum holds frame f, or -1 */
+    int *kmark;                 /* d: 1 = piece a's sum is to be made again */
 };
 
 static void work_free(struct work *w)
@@ -811,6 +851,7 @@ static void work_free(struct work *w)
     free(w->Pspare); free(w->Qb); free(w->qd);
     free(w->lw); free(w->lwb); free(w->Rwb); free(w->smark);
     free(w->cand); free(w->nc); free(w->hs);
+    free(w->ks); free(w->ksf); free(w->kmark);
     memset(w, 0, sizeof *w);
 }
 
@@ -859,6 +900,78 @@ static double *p_write(struct work *w, int keep)
  * Row copies read K directly; solved pieces need only the sparse B:
  * P_F^T = A_FF^-1 (B K) (nnz N flops + two triangular solves), and
  * Q_F = A_FF^-1 (B P) -- never a dense N x N x d product. */
+/* The library system is simple when A_FF is diagonal and its right-hand
+ * side is one triplet (p, f, 1) per frame f of a free piece, in frame order
+ * (lambda = 0, or no transitions between pieces): then row p before the
+ * solve is the sum of K's rows over the frames of piece fidx[p]. */
+static int simple_system(const struct lstate *s)
+{
+    if (!s->diag) return 0;
+    for (int k = 0; k < s->nnz; k++)
+        if (s->v[k] != 1 || (k > 0 && s->ci[k] <= s->ci[k - 1])) return 0;
+    return 1;
+}
+
+/* Rows PT[a] = z_g . r_a of the free pieces with a simple system (above).
+ * The sum of a piece whose frames are the same as at the last call is kept:
+ * it is the same sum of the same rows in the same order, so the same bits
+ * as making it again; late in a descent, or after a split/merge trial, most
+ * pieces keep their frames.  A piece's sum is made by the same daxpy calls,
+ * in the same order, as the general path below.  Returns -1 when out of
+ * memory. */
+static int gram_rows_kept(const struct replib_data *D, const struct lstate *s, struct work *w, double *PT)
+{
+    int n = D->n, N = D->N, d = w->d, nf = s->nfree;
+    if (!w->ks) {
+        w->ks = malloc(sizeof(double) * (size_t)d * N);
+        w->ksf = malloc(sizeof(int) * n);
+        w->kmark = malloc(sizeof(int) * d);
+        if (!w->ks || !w->ksf || !w->kmark) return -1;
+        for (int f = 0; f < n; f++) w->ksf[f] = -1;
+        for (int a = 0; a < d; a++) w->kmark[a] = 1;     /* no sum made yet */
+    }
+    /* frames that moved mark their old and new pieces */
+    int k = 0;
+    for (int f = 0; f < n; f++) {
+        int a = -1;
+        if (k < s->nnz && s->ci[k] == f) a = s->fidx[s->ri[k++]];
+        if (a != w->ksf[f]) {
+            if (a >= 0) w->kmark[a] = 1;
+            if (w->ksf[f] >= 0) w->kmark[w->ksf[f]] = 1;
+            w->ksf[f] = a;
+        }
+    }
+    for (int p = 0; p < nf; p++) {
+        int a = s->fidx[p];
+        double *row = w->ks + (size_t)a * N;
+        if (w->kmark[a]) {
+            memset(row, 0, sizeof(double) * N);
+            for (int t = 0; t < s->nnz; t++)
+                if (s->ri[t] == p) cblas_daxpy(N, s->v[t], D->K + (size_t)s->ci[t] * N, 1, row, 1);
+            w->kmark[a] = 0;
+        }
+        memcpy(PT + (size_t)a * N, row, sizeof(double) * N);
+        cblas_dscal(N, 1.0 / s->Uf[(size_t)p * nf + p], PT + (size_t)a * N, 1);   /* as lsolve */
+    }
+    /* a piece that is not free now has no valid sum */
+    for (int a = 0; a < d; a++)
+        if (s->src[a] >= 0) w->kmark[a] = 1;
+    return 0;
+}
+
+/* 1: gram_costs keeps the sums of pieces whose frames did not change; 0
+ * (STOPMO_DICT_NO_KEPT_SUMS=1, for tests): every sum is made again.  Asked
+ * once, before the workers start (learn_run). */
+static int kept_sums(void)
+{
+    static int kept = -1;
+    if (kept < 0) {
+        const char *e = getenv("STOPMO_DICT_NO_KEPT_SUMS");
+        kept = !(e && *e && strcmp(e, "0"));
+    }
+    return kept;
+}
+
 static int gram_costs(const struct replib_data *D, const struct lstate *s, struct work *w)
 {
     int N = D->N, d = w->d, nf = s->nfree;
@@ -866,16 +979,23 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
     double *PT = w->C;      /* d by N: PT[a][g] = z_g . r_a */
     for (int a = 0; a < d; a++)
         if (s->src[a] >= 0) memcpy(PT + (size_t)a * N, K + (size_t)s->src[a] * N, sizeof(double) * N);
-    double *tmp = NULL, *M = NULL;
+    double *M = NULL;
     if (nf > 0) {
-        tmp = calloc((size_t)nf * N, sizeof(double));
         M = calloc((size_t)nf * d, sizeof(double));
-        if (!tmp || !M) { free(tmp); free(M); return cm_seterr("replib: out of memory"); }
-        for (int k = 0; k < s->nnz; k++)
-            cblas_daxpy(N, s->v[k], K + (size_t)s->ci[k] * N, 1, tmp + (size_t)s->ri[k] * N, 1);
-        lsolve(s, N, tmp);
-        for (int p = 0; p < nf; p++)
-            memcpy(PT + (size_t)s->fidx[p] * N, tmp + (size_t)p * N, sizeof(double) * N);
+        if (!M) return cm_seterr("replib: out of memory");
+        if (kept_sums() && simple_system(s)) {
+            if (gram_rows_kept(D, s, w, PT) < 0) { free(M); return cm_seterr("replib: out of memory"); }
+        } else {
+            double *tmp = calloc((size_t)nf * N, sizeof(double));
+            if (!tmp) { free(M); return cm_seterr("replib: out of memory"); }
+            if (w->kmark) for (int a = 0; a < d; a++) w->kmark[a] = 1;
+            for (int k = 0; k < s->nnz; k++)
+                cblas_daxpy(N, s->v[k], K + (size_t)s->ci[k] * N, 1, tmp + (size_t)s->ri[k] * N, 1);
+            lsolve(s, N, tmp);
+            for (int p = 0; p < nf; p++)
+                memcpy(PT + (size_t)s->fidx[p] * N, tmp + (size_t)p * N, sizeof(double) * N);
+            free(tmp);
+        }
     }
     p_write(w, 0);
     for (int g = 0; g < N; g++)
@@ -890,7 +1010,7 @@ static int gram_costs(const struct replib_data *D, const struct lstate *s, struc
         for (int p = 0; p < nf; p++)
             memcpy(w->Q + (size_t)s->fidx[p] * d, M + (size_t)p * d, sizeof(double) * d);
     }
-    free(tmp); free(M);
+    free(M);
     return 0;
 }
 
@@ -2249,7 +2369,8 @@ static int learn_run(const struct replib_data *D, const struct replib_opts *o, s
      * iteration products are small); results do not depend on the order */
     int blas_threads = openblas_get_num_threads();
     openblas_set_num_threads(1);
-    dots_ok();                  /* its lazy answer, before the workers read it */
+    dots_ok();                  /* their lazy answers, before the workers read them */
+    kept_sums();
     for (int t = 0; t < nth; t++) {
         wk[t] = (struct worker){D, o, out, restarts, &next, &lock, nth > 1 ? &team : NULL, 0, {0}};
         if (t == nth - 1) {
