@@ -2105,19 +2105,20 @@ static double final_gpolish(struct compat_refiner *r)
      * given points sliding along their input outline as well, while it
      * raises the worst angle (after the polish above, so a mesh it
      * brings to the goal keeps its bytes) */
-    if (w->stol) {
+    if (w->stol && r->pa.slide_global) {
         wk = worst_ratio(w, goal, &wf, &ws, &nb);
         if (wk < 0) return -1;
+        if (wk < 1) st->gslide[0] = st->gslide[1] = compat_min_angle(c, NULL);
         for (int it = 0; it < COMPAT_REFINE_GPOLISH && wk < 1; it++) {
             int g = global_polish(c, w->bnd, w->seg, w->bsucc, w->stol, goal, r->pa.threads);
             if (g < 0) return -1;
             if (!g) break;
-            st->gpolish[1] = compat_min_angle(c, NULL);
+            st->gslide[1] = compat_min_angle(c, NULL);
             int f0 = st->flips;
             if (flips_until_done(c, &st->flips) < 0) return -1;
             double wn = worst_ratio(w, goal, &wf, &ws, &nb);
             if (wn < 0) return -1;
-            st->gpolish[1] = compat_min_angle(c, NULL);
+            st->gslide[1] = compat_min_angle(c, NULL);
             if (st->flips == f0 || wn < wk + COMPAT_REFINE_GAIN / goal) break;
             wk = wn;
         }
