@@ -669,8 +669,13 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
         }
         if (rs->gslide[1] > rs->gslide[0]) {   /* and its outline slides (--slide) */
             size_t n = strlen(why);
-            snprintf(why + n, sizeof why - n, ", with the outline sliding (--slide) from %.2f to %.2f deg",
-                     rs->gslide[0] * 180 / M_PI, rs->gslide[1] * 180 / M_PI);
+            if (rs->gpolish[1] > rs->gpolish[0])
+                snprintf(why + n, sizeof why - n, ", then with the outline sliding (--slide) from %.2f to %.2f deg",
+                         rs->gslide[0] * 180 / M_PI, rs->gslide[1] * 180 / M_PI);
+            else
+                snprintf(why + n, sizeof why - n, "; the global max-min polish with the outline sliding (--slide) "
+                         "raised the worst angle from %.2f to %.2f deg", rs->gslide[0] * 180 / M_PI,
+                         rs->gslide[1] * 180 / M_PI);
         }
         info(1, "%s%srefinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
                 "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", who, sep, o->min_angle, why, q1, rs->stretch,
