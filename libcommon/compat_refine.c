@@ -1748,7 +1748,8 @@ fail:
 /* the global max-min polish (maxmin_polish) of every pose whose smallest
  * angle is below the goal, the poses on the threads (their positions are
  * independent) */
-struct gpolish { struct compat *c; const unsigned char *bnd; const int *seg; double goal; int *rc; };
+struct gpolish { struct compat *c; const unsigned char *bnd; const int *seg; double goal; int *rc;
+                 const int *bsucc; const double *stol; };
 
 static void gpolish_job(void *ctx, int s)
 {
@@ -1759,15 +1760,35 @@ static void gpolish_job(void *ctx, int s)
     if (mn >= gp->goal) return;
     struct maxmin_params mp;
     maxmin_defaults(&mp);
-    gp->rc[s] = maxmin_polish(c->X[s], c->nv, c->F, c->nf, gp->bnd, gp->seg, &mp, NULL, NULL);
+    if (!gp->stol) {
+        gp->rc[s] = maxmin_polish(c->X[s], c->nv, c->F, c->nf, gp->bnd, gp->seg, &mp, NULL, NULL);
+        return;
+    }
+    /* the outline vertices that are not given points slide along the
+     * pose's input outline too (their home: the index in c->B they were
+     * simplified to; the given points' knots are fixed on theirs) */
+    int nv = c->nv, *home = malloc((nv ? nv : 1) * sizeof *home);
+    unsigned char *sl = malloc(nv ? nv : 1);
+    if (!home || !sl) { free(home); free(sl); gp->rc[s] = cm_seterr("out of memory"); return; }
+    for (int v = 0; v < nv; v++) {
+        int sv = gp->seg[2 * v];
+        sl[v] = gp->bsucc[v] >= 0 && sv <= -2;
+        home[v] = gp->bsucc[v] < 0 || sv >= 0 ? -1 : sl[v] ? -2 - sv : v < c->nb ? c->bidx[v] : -1;
+    }
+    struct maxmin_curve cv = {.B = c->B[s], .M = c->nm, .bsucc = gp->bsucc, .home = home, .slides = sl,
+                              .tol = gp->stol[s]};
+    gp->rc[s] = maxmin_polish_curve(c->X[s], nv, c->F, c->nf, gp->bnd, gp->seg, &cv, &mp, NULL, NULL);
+    free(home);
+    free(sl);
 }
 
 /* returns the number of poses moved, -1 on error */
-static int global_polish(struct compat *c, const unsigned char *bnd, const int *seg, double goal, int threads)
+static int global_polish(struct compat *c, const unsigned char *bnd, const int *seg, const int *bsucc,
+                         const double *stol, double goal, int threads)
 {
     int *rc = calloc(c->N, sizeof *rc), n = 0;
     if (!rc) return cm_seterr("out of memory");
-    struct gpolish gp = {.c = c, .bnd = bnd, .seg = seg, .goal = goal, .rc = rc};
+    struct gpolish gp = {.c = c, .bnd = bnd, .seg = seg, .goal = goal, .rc = rc, .bsucc = bsucc, .stol = stol};
     parallel_run(c->N, threads, gpolish_job, &gp);
     for (int s = 0; s < c->N; s++) {
         if (rc[s] < 0) n = -1;
@@ -2067,7 +2088,7 @@ static double final_gpolish(struct compat_refiner *r)
     if (wk < 0) return -1;
     if (wk < 1) st->gpolish[0] = st->gpolish[1] = compat_min_angle(c, NULL);
     for (int it = 0; it < COMPAT_REFINE_GPOLISH && wk < 1; it++) {
-        int g = global_polish(c, w->bnd, w->seg, goal, r->pa.threads);
+        int g = global_polish(c, w->bnd, w->seg, w->bsucc, NULL, goal, r->pa.threads);
         if (g < 0) return -1;
         if (!g) break;
         st->gpolish[1] = compat_min_angle(c, NULL);
@@ -2079,6 +2100,28 @@ static double final_gpolish(struct compat_refiner *r)
         st->gpolish[1] = compat_min_angle(c, NULL);
         if (wn < wk + COMPAT_REFINE_GAIN / goal) break;
         wk = wn;
+    }
+    /* then (pa->slide) the same with the outline vertices that are not
+     * given points sliding along their input outline as well, while it
+     * raises the worst angle (after the polish above, so a mesh it
+     * brings to the goal keeps its bytes) */
+    if (w->stol && r->pa.slide_global) {
+        wk = worst_ratio(w, goal, &wf, &ws, &nb);
+        if (wk < 0) return -1;
+        if (wk < 1) st->gslide[0] = st->gslide[1] = compat_min_angle(c, NULL);
+        for (int it = 0; it < COMPAT_REFINE_GPOLISH && wk < 1; it++) {
+            int g = global_polish(c, w->bnd, w->seg, w->bsucc, w->stol, goal, r->pa.threads);
+            if (g < 0) return -1;
+            if (!g) break;
+            st->gslide[1] = compat_min_angle(c, NULL);
+            int f0 = st->flips;
+            if (flips_until_done(c, &st->flips) < 0) return -1;
+            double wn = worst_ratio(w, goal, &wf, &ws, &nb);
+            if (wn < 0) return -1;
+            st->gslide[1] = compat_min_angle(c, NULL);
+            if (st->flips == f0 || wn < wk + COMPAT_REFINE_GAIN / goal) break;
+            wk = wn;
+        }
     }
     return worst_ratio(w, goal, &wf, &ws, &nb);
 }

@@ -97,6 +97,9 @@ struct compat_refine_stats {
     double gpolish[2]; /* below the goal: the worst angle (radians) before
                           and after the global max-min polish of the result
                           (maxmin_polish.h) and its flips; 0 0 at the goal */
+    double gslide[2];  /* (pa->slide_global) the worst angle (radians) before
+                          and after the global polish with outline slides;
+                          0 0 if not run */
     double stretch;    /* the largest ratio of singular values of the
                           affine maps between the shapes on it (1: similar
                           copies; a triangle whose map is stretched k times
@@ -177,6 +180,13 @@ struct compat_refine_params {
                           Only in the passes run again (split_share) unless
                           slide_first */
     int slide_first;   /* 1: also in the first pass */
+    int slide_global;  /* (slide > 0) 1: a result below the goal after the
+                          global max-min polish gets it again with those
+                          outline vertices sliding along their input
+                          outline as well (maxmin_polish_curve: all at
+                          once, each by its arc length, within the same
+                          tolerance, no crossing), then flips, while the
+                          worst angle rises by COMPAT_REFINE_GAIN */
 };
 /* rounds of the second pass that split every triangle below the goal
  * before split_share applies */

@@ -35,4 +35,36 @@ void maxmin_defaults(struct maxmin_params *p);
 int maxmin_polish(double *X, int nv, const int *F, int nf, const unsigned char *fixed, const int *seg,
                   const struct maxmin_params *p, double *before, double *after);
 
+/* The outline of a one-ring mesh whose vertices slide along the mesh's
+ * input outline B (a closed polyline of M points, counter-clockwise like
+ * the mesh) in maxmin_polish_curve. */
+struct maxmin_curve {
+    const double *B;
+    int M;
+    const int *bsucc;        /* nv: the next outline vertex along the outline,
+                                -1 for an interior vertex */
+    const int *home;         /* nv: for an outline vertex not made by a split
+                                (a knot: seg[2v] < 0), an index of B near
+                                which it lies on B (the point is found on the
+                                B segment nearest that index that it lies on
+                                to rounding), -1 otherwise */
+    const unsigned char *slides; /* nv: 1 for a knot that slides along B */
+    double tol;              /* the chord between two consecutive knots stays
+                                within tol of every point of B it spans */
+};
+
+/* maxmin_polish in which the knots with slides[v] move along B as well:
+ * each by its arc-length position on B (piecewise linear), and every
+ * vertex made by a split (seg[2v] >= 0: its ends seg[2v], seg[2v+1] are
+ * the knots before and after it) by its fraction of the chord between its
+ * ends, which may move.  Every step of the line search keeps the knots in
+ * their order along B (so between the fixed knots on either side), the
+ * split vertices in theirs, each chord within tol of the points of B it
+ * spans and crossing no other chord (exact), and every triangle positive;
+ * the result is checked again (exact).  All other arguments and the result
+ * as maxmin_polish; cv NULL is maxmin_polish. */
+int maxmin_polish_curve(double *X, int nv, const int *F, int nf, const unsigned char *fixed, const int *seg,
+                        const struct maxmin_curve *cv, const struct maxmin_params *p, double *before,
+                        double *after);
+
 #endif

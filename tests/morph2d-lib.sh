@@ -165,3 +165,41 @@ stick_pose() {
 	{ b = -1; for (i = 0; i < n; i++) { d = ($2 - x[i]) ^ 2 + ($3 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
 	  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 } print b }' $1$2.rings pts$2 >$1lm$2
 }
+
+# outline_error MESH RING POSE: two-sided Hausdorff distance between frame
+# POSE's boundary polygon (edges in one triangle only) and RING, over the
+# ring's bounding-box diagonal (the ring's vertices to the polygon; the
+# polygon's vertices and 16 points on each of its edges to the ring)
+outline_error() {
+	awk -v pose=$3 'BEGIN { n = 0 } function sd(px, py, ax, ay, bx, by,  dx, dy, l, t) {
+		dx = bx - ax; dy = by - ay; l = dx * dx + dy * dy; t = l > 0 ? ((px - ax) * dx + (py - ay) * dy) / l : 0
+		if (t < 0) t = 0; if (t > 1) t = 1; return sqrt((ax + t * dx - px) ^ 2 + (ay + t * dy - py) ^ 2) }
+	FILENAME == ARGV[1] {
+		if ($1 == "f") { for (k = 0; k < 3; k++) E[$(2 + k) " " $(2 + (k + 1) % 3)] = 1; next }
+		if ($1 == "frame") { fr = $2; k = 0; next }
+		if (fr == pose && NF == 3) { X[k] = $1; Y[k] = $2; k++ }
+		next }
+	FNR == 1 { next }
+	{ PX[n] = $1; PY[n] = $2; n++ }
+	END { for (e in E) { split(e, v, " "); if (!((v[2] " " v[1]) in E)) S[v[1]] = v[2] }
+		lx = hx = PX[0]; ly = hy = PY[0]
+		for (i = 0; i < n; i++) { if (PX[i] < lx) lx = PX[i]; if (PX[i] > hx) hx = PX[i]; if (PY[i] < ly) ly = PY[i]; if (PY[i] > hy) hy = PY[i] }
+		h = 0
+		for (i = 0; i < n; i++) { d = 1e300; for (a in S) { b = S[a]; x = sd(PX[i], PY[i], X[a], Y[a], X[b], Y[b]); if (x < d) d = x } if (d > h) h = d }
+		for (a in S) { b = S[a]; for (t = 0; t < 16; t++) { qx = X[a] + t / 16 * (X[b] - X[a]); qy = Y[a] + t / 16 * (Y[b] - Y[a]); d = 1e300
+			for (i = 0; i < n; i++) { j = (i + 1) % n; x = sd(qx, qy, PX[i], PY[i], PX[j], PY[j]); if (x < d) d = x } if (d > h) h = d } }
+		printf "%.9f\n", h / sqrt((hx - lx) ^ 2 + (hy - ly) ^ 2) }' "$1" "$2"
+}
+# given_on_vertices MESH CORR RING...: every given row a vertex at its input point in every frame
+given_on_vertices() {
+	gm=$1 gc=$2; shift 2
+	awk -v nr=$# 'FILENAME == ARGV[1] { if ($1 == "frame") { fr = $2; k = 0; next }
+		if (fr != "" && NF == 3) { X[fr, k] = $1; Y[fr, k] = $2; k++ } next }
+	FILENAME == ARGV[2] { for (s = 0; s < NF; s++) C[FNR - 1, s] = $(s + 1); nc = FNR; next }
+	FNR == 1 { ri++; next }
+	{ PX[ri - 1, FNR - 2] = $1; PY[ri - 1, FNR - 2] = $2 }
+	END { for (s = 0; s < nr; s++) for (c = 0; c < nc; c++) { i = C[c, s]; f = 0
+		for (w = 0; (s, w) in X; w++) if (X[s, w] == PX[s, i] && Y[s, w] == PY[s, i]) f = 1
+		if (!f) { print "pose " s ": given row " c + 1 " is not a vertex at its point"; bad = 1 } }
+		exit bad }' "$gm" "$gc" "$@"
+}

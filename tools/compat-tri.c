@@ -104,9 +104,12 @@ static const char help[] =
 "                        pose's input outline (within -e, pose by pose):\n"
 "                        'rerun' (default: in the passes of --split-share run\n"
 "                        again after a first pass below the goal; a mesh at\n"
-"                        the goal after its first pass is unchanged), 'all'\n"
-"                        (every pass) or 'off' (outline vertices stay where\n"
-"                        the matching put them)\n"
+"                        the goal after its first pass is unchanged; a result\n"
+"                        still below the goal also gets a global polish in\n"
+"                        which they slide all at once), 'all' (every pass,\n"
+"                        and the global polish), 'local' (as 'rerun' without\n"
+"                        the global polish with slides) or 'off' (outline\n"
+"                        vertices stay where the matching put them)\n"
 "      --threads N       the boundary matching, the triangulation's split\n"
 "                        search and the refinement's smoothing run on N\n"
 "                        threads (default 0: one per core); the output does\n"
@@ -138,7 +141,8 @@ struct options {
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
     double min_angle, split_share;
-    int slide;        /* --slide: 0 off, 1 in the passes run again, 2 in every pass */
+    int slide;        /* --slide: 0 off, 1 in the passes run again, 2 in every pass, 3 as 1
+                         without the global polish with slides */
     int nshapes;
     char **shapes;
     char *log;             /* non-NULL: build_single's -v lines go here (LOG_SIZE bytes) */
@@ -206,7 +210,8 @@ static void parse_args(int argc, char **argv, struct options *o)
             if (!strcmp(optarg, "off")) o->slide = 0;
             else if (!strcmp(optarg, "rerun")) o->slide = 1;
             else if (!strcmp(optarg, "all")) o->slide = 2;
-            else usage_error("--slide must be 'off', 'rerun' or 'all'");
+            else if (!strcmp(optarg, "local")) o->slide = 3;
+            else usage_error("--slide must be 'off', 'local', 'rerun' or 'all'");
             break;
         case 'T': o->threads = arg_int(optarg, "--threads"); break;
         case 'R': o->raw = 1; break;
@@ -604,9 +609,10 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
 {
     struct compat_refine_params pa = {o->min_angle * M_PI / 180, 0, o->max_nv ? o->max_nv : cpp->nv + 10 * cpp->nb, 200,
-                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share, 1, 0, 0};
+                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share, 1, 0, 0, 0};
     pa.slide = o->slide ? o->err : 0;
     pa.slide_first = o->slide == 2;
+    pa.slide_global = o->slide == 1 || o->slide == 2;
     return pa;
 }
 
@@ -660,6 +666,16 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
             size_t n = strlen(why);
             snprintf(why + n, sizeof why - n, "; the global max-min polish raised the worst angle from %.2f deg",
                      rs->gpolish[0] * 180 / M_PI);
+        }
+        if (rs->gslide[1] > rs->gslide[0]) {   /* and its outline slides (--slide) */
+            size_t n = strlen(why);
+            if (rs->gpolish[1] > rs->gpolish[0])
+                snprintf(why + n, sizeof why - n, ", then with the outline sliding (--slide) from %.2f to %.2f deg",
+                         rs->gslide[0] * 180 / M_PI, rs->gslide[1] * 180 / M_PI);
+            else
+                snprintf(why + n, sizeof why - n, "; the global max-min polish with the outline sliding (--slide) "
+                         "raised the worst angle from %.2f to %.2f deg", rs->gslide[0] * 180 / M_PI,
+                         rs->gslide[1] * 180 / M_PI);
         }
         info(1, "%s%srefinement stopped below the goal of %g deg: %s; worst angle %.2f deg; the poses' maps are "
                 "stretched %.1fx at (%.4g, %.4g) in pose %d (%s)", who, sep, o->min_angle, why, q1, rs->stretch,
