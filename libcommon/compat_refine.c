@@ -986,16 +986,9 @@ static void bpoint(const double *B, int M, double u, double *p)
  * nearest home (searching outwards) that p lies on (to rounding) */
 static double bparam(const double *B, int M, int home, const double *p, double eps)
 {
-    for (int d = 0; d <= M / 2; d++)
-        for (int sg = 0; sg < (d ? 2 : 1); sg++) {
-            int i = ((home + (sg ? -d : d)) % M + M) % M;
-            const double *a = B + 2 * i, *b = B + 2 * ((i + 1) % M);
-            if (compat_seg_dist(p, a, b) > eps) continue;
-            double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
-            double t = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
-            return i + fmin(fmax(t, 0), 1);
-        }
-    return -1;
+    double t;
+    int i = compat_polyline_locate(B, M, home, p, eps, &t);
+    return i < 0 ? -1 : i + t;
 }
 
 /* the parameter arc length d (signed) along B from u, clamped to [lo, hi] */

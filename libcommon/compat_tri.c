@@ -287,6 +287,21 @@ double compat_seg_dist(const double *p, const double *a, const double *b)
     return hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
 }
 
+int compat_polyline_locate(const double *B, int M, int home, const double *p, double eps, double *t)
+{
+    for (int d = 0; d <= M / 2; d++)
+        for (int sg = 0; sg < (d ? 2 : 1); sg++) {
+            int i = ((home + (sg ? -d : d)) % M + M) % M;
+            const double *a = B + 2 * i, *b = B + 2 * ((i + 1) % M);
+            if (compat_seg_dist(p, a, b) > eps) continue;
+            double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
+            double u = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
+            *t = fmin(fmax(u, 0), 1);
+            return i;
+        }
+    return -1;
+}
+
 int compat_simplify(struct compat *c, double err, const unsigned char *keep)
 {
     int M = c->nb, N = c->N;

@@ -105,6 +105,12 @@ double compat_outline_error(const struct compat *c, int s, const double *P, int 
 /* Distance from the point p (2) to the segment a-b (2 each, 2D). */
 double compat_seg_dist(const double *p, const double *a, const double *b);
 
+/* Where the point p (2) lies on the closed polyline B (M by 2): the segment
+ * i -> i+1 (mod M) nearest the index home (searched outwards, both ways)
+ * that p lies within eps of.  Returns i and sets *t to p's fraction along
+ * it, clamped to [0, 1]; -1 when p is within eps of no segment. */
+int compat_polyline_locate(const double *B, int M, int home, const double *p, double eps, double *t);
+
 /* Greedy compatible simplification of the boundary; err: threshold as a
  * fraction of each shape's bounding-box diagonal; keep: M flags of points
  * never removed.  Returns the new boundary size. */

@@ -143,18 +143,9 @@ static void curve_point(const struct crv *r, double s, double *p, double *tg)
 /* the arc position of the point p on B near index home (-1: not on B) */
 static double curve_param(const struct crv *r, int home, const double *p, double eps)
 {
-    int M = r->cv->M;
-    const double *B = r->cv->B;
-    for (int d = 0; d <= M / 2; d++)
-        for (int sg = 0; sg < (d ? 2 : 1); sg++) {
-            int i = ((home + (sg ? -d : d)) % M + M) % M;
-            const double *a = B + 2 * i, *b = B + 2 * ((i + 1) % M);
-            if (compat_seg_dist(p, a, b) > eps) continue;
-            double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
-            double t = L2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2 : 0;
-            return r->C[i] + fmin(fmax(t, 0), 1) * (r->C[i + 1] - r->C[i]);
-        }
-    return -1;
+    double t;
+    int i = compat_polyline_locate(r->cv->B, r->cv->M, home, p, eps, &t);
+    return i < 0 ? -1 : r->C[i] + t * (r->C[i + 1] - r->C[i]);
 }
 
 static int is_knot(const struct crv *r, int v) { return r->seg[2 * v] < 0; }
