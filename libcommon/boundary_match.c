@@ -15,6 +15,7 @@ void bmatch_defaults(struct bmatch_params *prm)
     prm->bend = 0.03;
     prm->start_bend = 0.3;
     prm->feature = 10;
+    prm->spread = 0;
     prm->threads = 1;
 }
 
@@ -132,14 +133,20 @@ static inline double dp_cost(double prev, double stretch, double R, double a, do
  * only 4 by (mB + 1): the last four rows are kept (a step goes back at most
  * three rows), which stay in the cache, and from is not used (may be NULL). */
 static double dp_align(const double *thA, int mA, double hA, const double *thB, int mB, double hB, double R,
-                       const double *dA, const double *dB, double wf,
+                       const double *dA, const double *dB, double wf, double S,
                        int *path, int *plen, double *D, unsigned char *from)
 {
     int W = mB + 1;
-    double stretch[9], half[9];   /* per step: |dsA - dsB| and (dsA + dsB) / 2 without f */
+    double stretch[9], half[9];   /* per step: |dsA - dsB| (+ the spread term) and (dsA + dsB) / 2 without f */
     for (int k = 0; k < 9; k++) {
         stretch[k] = fabs(STEPS[k][0] * hA - STEPS[k][1] * hB);
         half[k] = STEPS[k][0] * hA + STEPS[k][1] * hB;
+        if (S > 0) {
+            /* the step's ratio against the segment's mean ratio mA hA / (mB hB)
+             * (a side that does not move counts as a quarter sample) */
+            double ea = STEPS[k][0] ? STEPS[k][0] : 0.25, eb = STEPS[k][1] ? STEPS[k][1] : 0.25;
+            stretch[k] += S * 0.5 * half[k] * fabs(log(ea / eb) - log((double)mA / mB));
+        }
     }
     int rows = path || mA < 3 ? mA + 1 : 4;
     for (int i = 0; i <= mA; i++) {
@@ -224,10 +231,10 @@ static double dp_align(const double *thA, int mA, double hA, const double *thB, 
     return cost;
 }
 
-/* how a segment is aligned: mode (BMATCH_*), bending weight R, feature weight wf */
+/* how a segment is aligned: mode (BMATCH_*), bending weight R, feature weight wf, spread weight S */
 struct dpset {
     int mode;
-    double R, wf;
+    double R, wf, S;
 };
 
 /* the samples one side of the dynamic program needs: m + 1 tangent angles
@@ -254,7 +261,7 @@ static double dp_run(const struct dpside *a, int mA, double hA, const struct dps
                      const struct dpset *ds, int *path, int *plen, double *D, unsigned char *from)
 {
     return dp_align(a->th, mA, hA, b->th + t, mB, hB, ds->R, a->d, b->d ? b->d + (size_t)t * BMATCH_SCALES : NULL,
-                    ds->wf, path, plen, D, from);
+                    ds->wf, ds->S, path, plen, D, from);
 }
 
 /* Align the segment of A from arc sA of length lenA with the segment of B
@@ -421,6 +428,7 @@ static int params_check(const struct bmatch_params *prm, int npairs)
     if (!(prm->bend >= 0 && prm->bend < 1e6) || !(prm->start_bend >= 0 && prm->start_bend < 1e6))
         return cm_seterr("bending weight must be >= 0");
     if (!(prm->feature >= 0 && prm->feature < 1e6)) return cm_seterr("feature weight must be >= 0");
+    if (!(prm->spread >= 0 && prm->spread < 1e6)) return cm_seterr("spread weight must be >= 0");
     if (prm->mode == BMATCH_ARCLENGTH && npairs < 1)
         return cm_seterr("arc-length matching needs a given correspondence point");
     return 0;
@@ -436,7 +444,7 @@ int bmatch_map(const double *Ap, int na, const double *Bp, int nb, const int *pa
     if (outline_init(&B, Bp, nb) < 0) { free(A.cum); return -1; }
     double c = 0;
     int M = prm->samples;
-    struct dpset ds = {prm->mode, prm->bend, prm->feature};
+    struct dpset ds = {prm->mode, prm->bend, prm->feature, prm->spread};
     if (npairs == 0) {
         struct dpset ss = ds;
         if (ss.mode == BMATCH_ELASTIC) ss.R = prm->start_bend;
@@ -520,7 +528,7 @@ static int maps_unanchored(int N, const struct outline *O, const int *n, const s
                            double *tB, double *cost)
 {
     if (params_check(prm, 0) < 0) return cm_seterr("shape 1: %s", cm_errmsg());
-    struct dpset ds = {prm->mode, prm->bend, prm->feature}, ss = ds;
+    struct dpset ds = {prm->mode, prm->bend, prm->feature, prm->spread}, ss = ds;
     if (ss.mode == BMATCH_ELASTIC) ss.R = prm->start_bend;
     const struct outline **B = malloc((N - 1) * sizeof *B);
     double *start = malloc((N - 1) * sizeof *start);

@@ -57,6 +57,14 @@ struct bmatch_params {
                         (default 0.3: the shift is decided by the corners; with
                         0.03 a three-lobed test shape took the wrong lobe) */
     double feature;   /* F: weight of the multi-scale feature term (default 10) */
+    double spread;    /* S: weight of the spread term (default 0: none): each step
+                         adds  S (dsA + dsB) / 2 |log(a / b) - log(mA / mB)|,
+                         a and b its sample counts on A and B (0 counted as
+                         1/4), mA and mB the segment's: a step whose stretch
+                         ratio differs from the segment's mean ratio pays for
+                         it, so the stretch is spread along the segment (the
+                         |dsA - dsB| term is the same for every monotone path
+                         of one sign); dimensionless, like F */
     int threads;      /* threads for the start search and for bmatch_corr's maps
                          (default 1; <= 0: one per processor); the result does
                          not depend on it */

@@ -66,6 +66,9 @@ static const char help[] =
 "                        given, no matching with twice K is tried)\n"
 "      --bend R          weight of the bending term of the matching (default 0.03)\n"
 "      --feature F       weight of the multi-scale turning term (default 10)\n"
+"      --spread S        weight of the matching's spread term: each step's\n"
+"                        stretch ratio against its segment's mean ratio, so a\n"
+"                        segment's stretch is spread along it (default 0: off)\n"
 "      --points-out FILE write the correspondence points used (a -c file, indices\n"
 "                        in file order) to FILE, to look at (mesh2svg\n"
 "                        --points-file) and edit\n"
@@ -137,7 +140,7 @@ struct options {
     const char *corr, *output, *interior, *points_out;
     int match, match_points, match_default, match_auto;   /* match_auto: no -m (the matching by default) */
     int match_points_given;   /* --match-points on the command line: no denser candidate */
-    double bend, feature;
+    double bend, feature, spread;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
     double min_angle, split_share;
@@ -173,6 +176,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"refine", 1, 0, 'Q'}, {"min-angle", 1, 0, 'a'}, {"max-vertices", 1, 0, 'X'}, {"threads", 1, 0, 'T'}, {"raw", 0, 0, 'R'}, {"output", 1, 0, 'o'},
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
         {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'},
+        {"spread", 1, 0, 'W'},
         {"split-share", 1, 0, 'H'}, {"slide", 1, 0, 'L'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 0.2;
@@ -225,6 +229,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'K': o->match_points = arg_int(optarg, "--match-points"); o->match_points_given = 1; break;
         case 'B': o->bend = arg_double(optarg, "--bend"); break;
         case 'F': o->feature = arg_double(optarg, "--feature"); break;
+        case 'W': o->spread = arg_double(optarg, "--spread"); break;
         case 'P': o->points_out = optarg; break;
         case 'b': o->bound = 1; break;
         case 'o': o->output = optarg; break;
@@ -237,6 +242,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (o->match_points < 3 || o->match_points > 1000) usage_error("--match-points must be in 3..1000");
     if (!(o->bend >= 0 && o->bend < 1e6)) usage_error("--bend must be >= 0");
     if (!(o->feature >= 0 && o->feature < 1e6)) usage_error("--feature must be >= 0");
+    if (!(o->spread >= 0 && o->spread < 1e6)) usage_error("--spread must be >= 0");
     if (!o->corr && o->match == -2) usage_error("--match off needs -c CORR with at least 3 rows");
     if (!o->corr && o->match == BMATCH_ARCLENGTH) usage_error("--match arclength needs -c CORR (a start point)");
     if (o->bound && !o->corr) usage_error("--bound needs -c CORR (the given points)");
@@ -352,6 +358,7 @@ static int *match_points(const struct options *o, int N, double **P, const int *
     prm.mode = o->match;
     prm.bend = o->bend;
     prm.feature = o->feature;
+    prm.spread = o->spread;
     prm.threads = o->threads;
     int *corr, nc, K = o->match_points;
     double *cost = malloc(N * sizeof *cost);
