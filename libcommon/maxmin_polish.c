@@ -193,7 +193,6 @@ static void pull(const struct crv *r, const double *z, const double *P, double *
     }
 }
 
-/* the outline constraints at z (positions P): 1 if kept */
 /* the outline constraints at z (positions P): 1 if kept.  mark (NULL, or
  * nv flags): set for the vertices of every constraint broken (the knots
  * out of order or at the ends of a chord too far from B or meeting
