@@ -60,7 +60,8 @@ static const char help[] =
 "                        --min-angle after 3 rounds, 'off' is refined side by\n"
 "                        side and the one falling behind dropped (-v); no -m\n"
 "                        and a mesh below --min-angle: the matching with twice\n"
-"                        --match-points is refined too, the best mesh kept\n"
+"                        --match-points is refined too, then (still below) the\n"
+"                        same with --spread 3, the best mesh kept\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
 "                        rows plus SHAPE0's most salient corners (default 12;\n"
 "                        given, no matching with twice K is tried)\n"
@@ -68,7 +69,8 @@ static const char help[] =
 "      --feature F       weight of the multi-scale turning term (default 10)\n"
 "      --spread S        weight of the matching's spread term: each step's\n"
 "                        stretch ratio against its segment's mean ratio, so a\n"
-"                        segment's stretch is spread along it (default 0: off)\n"
+"                        segment's stretch is spread along it (default 0: off;\n"
+"                        given, no candidate with --spread 3 is tried)\n"
 "      --points-out FILE write the correspondence points used (a -c file, indices\n"
 "                        in file order) to FILE, to look at (mesh2svg\n"
 "                        --points-file) and edit\n"
@@ -140,6 +142,7 @@ struct options {
     const char *corr, *output, *interior, *points_out;
     int match, match_points, match_default, match_auto;   /* match_auto: no -m (the matching by default) */
     int match_points_given;   /* --match-points on the command line: no denser candidate */
+    int spread_given;         /* --spread on the command line: no spread candidate */
     double bend, feature, spread;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
@@ -229,7 +232,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         case 'K': o->match_points = arg_int(optarg, "--match-points"); o->match_points_given = 1; break;
         case 'B': o->bend = arg_double(optarg, "--bend"); break;
         case 'F': o->feature = arg_double(optarg, "--feature"); break;
-        case 'W': o->spread = arg_double(optarg, "--spread"); break;
+        case 'W': o->spread = arg_double(optarg, "--spread"); o->spread_given = 1; break;
         case 'P': o->points_out = optarg; break;
         case 'b': o->bound = 1; break;
         case 'o': o->output = optarg; break;
@@ -892,6 +895,13 @@ static int dense_start(struct options *dense, struct rings *R, struct candidate 
 #ifndef DENSE_FACTOR
 #define DENSE_FACTOR 2
 #endif
+/* the spread weight of the last candidate (see main; measured in compat-tri(1)) */
+#ifndef SPREAD_RETRY
+#define SPREAD_RETRY 3
+#endif
+#ifndef SPREAD_POINTS
+#define SPREAD_POINTS 2
+#endif
 static double race(struct options *o, struct rings *R, struct compat *cp, double q0, struct ahead *ah)
 {
     struct options off = *o, dense = *o;
@@ -1059,23 +1069,21 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     return K[use]->q;
 }
 
-/* The default matching with fewer than 3 given rows (no race: nothing
- * else to compare) below the goal: the matching again with twice
- * --match-points, refined, and the larger worst angle kept (the first on
- * a tie).  cp: the refined mesh, q1 its worst angle (degrees); returns the
- * kept one's. */
-static double dense_retry(const struct options *o, struct rings *R, struct compat *cp, double q1)
+/* One more candidate after a result below the goal: the matching again
+ * with the options alt (twice --match-points, or the spread term), built,
+ * triangulated, refined to its end, and the larger worst angle kept (the
+ * first on a tie).  cp: the refined mesh, q1 its worst angle (degrees),
+ * cur: its name for -v; returns the kept one's. */
+static double retry(const struct options *o, struct options *alt, struct rings *R, struct compat *cp, double q1,
+                    const char *name, const char *cur)
 {
-    struct options dense = *o;
     struct candidate k;
     memset(&k, 0, sizeof k);
-    dense.match_points = DENSE_FACTOR * o->match_points < 1000 ? DENSE_FACTOR * o->match_points : 1000;
-    dense.points_out = NULL;
-    char name[64];
-    snprintf(name, sizeof name, "the matching with %d points", dense.match_points);
+    alt->points_out = NULL;
+    alt->match_default = 0;
     k.name = name;
     info(1, "below the goal (%.2f deg): %s too; at %.3f s", q1, name, elapsed());
-    if (dense_start(&dense, R, &k) < 0) {
+    if (dense_start(alt, R, &k) < 0) {
         info(1, "%s: %s; left out", name, cm_errmsg());
         if (k.r) compat_refine_abandon(k.r);
         compat_free(&k.cp);
@@ -1085,21 +1093,21 @@ static double dense_retry(const struct options *o, struct rings *R, struct compa
     while ((st = compat_refine_step(k.r)) > 0) {}
     if (st < 0) die("%s", cm_errmsg());
     if (compat_refine_finish(k.r) < 0) die("%s", cm_errmsg());
-    double q2 = refine_report(&dense, &k.cp, k.q0, &k.rs, &k.pa, name);
+    double q2 = refine_report(alt, &k.cp, k.q0, &k.rs, &k.pa, name);
     if (!(q2 > q1)) {
-        info(1, "kept the matched points: worst angle %.2f deg (%s: %.2f deg)", q1, name, q2);
+        info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", cur, q1, name, q2);
         compat_free(&k.cp);
         return q1;
     }
-    info(1, "kept %s: worst angle %.2f deg (the matched points: %.2f deg)", name, q2, q1);
+    info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", name, q2, cur, q1);
     compat_free(cp);
     *cp = k.cp;
     if (o->points_out) {   /* the rows actually used */
         struct compat tmp;
         char quiet[LOG_SIZE] = "";
-        dense.points_out = o->points_out;
-        dense.log = quiet;
-        if (build_single(&dense, R, &tmp) == 0) compat_free(&tmp);
+        alt->points_out = o->points_out;
+        alt->log = quiet;
+        if (build_single(alt, R, &tmp) == 0) compat_free(&tmp);
     }
     return q2;
 }
@@ -1185,9 +1193,32 @@ int main(int argc, char **argv)
          cp.stage_count[2], o.split != COMPAT_LINKPATH ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
     double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
+    const char *kept = "the matched points";   /* -v: the name of the mesh in cp */
+    if (o.match_default && o.refine) kept = "the race's mesh";
+    /* the default matching with fewer than 3 given rows (no race: nothing
+     * else to compare) below the goal: the matching with twice --match-points */
     if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && q1 < o.min_angle &&
-        o.match_points < 1000 && !o.match_points_given)
-        q1 = dense_retry(&o, R, &cp, q1);
+        o.match_points < 1000 && !o.match_points_given) {
+        struct options dense = o;
+        dense.match_points = DENSE_FACTOR * o.match_points < 1000 ? DENSE_FACTOR * o.match_points : 1000;
+        char name[64];
+        snprintf(name, sizeof name, "the matching with %d points", dense.match_points);
+        double q2 = retry(&o, &dense, R, &cp, q1, name, kept);
+        if (q2 > q1) kept = "the denser matching";
+        q1 = q2;
+    }
+    /* any default matching still below the goal: the matching with the
+     * spread term (--spread SPREAD_RETRY), where the stretch of a leg
+     * bunched at one end is what keeps it there */
+    if (!multi && o.refine && o.match_auto && o.match >= 0 && q1 < o.min_angle && !o.spread_given) {
+        struct options spread = o;
+        spread.spread = SPREAD_RETRY;
+        if (!o.match_points_given)
+            spread.match_points = SPREAD_POINTS * o.match_points < 1000 ? SPREAD_POINTS * o.match_points : 1000;
+        char name[64];
+        snprintf(name, sizeof name, "the matching with %d points and --spread %g", spread.match_points, (double)SPREAD_RETRY);
+        q1 = retry(&o, &spread, R, &cp, q1, name, kept);
+    }
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
         compat_pose_quality(&cp, s, &mn, &u10, &u20);
