@@ -886,7 +886,8 @@ static int dense_start(struct options *dense, struct rings *R, struct candidate 
  * points at the goal are kept; otherwise the largest worst angle (the
  * first in that order on a tie).  ah: the rows alone built ahead (struct
  * ahead; not started: built here when needed).  On return cp holds the
- * kept mesh; returns its worst angle (degrees). */
+ * kept mesh and kept (ksize bytes) its name for -v; returns its worst
+ * angle (degrees). */
 #define NCAND 3
 /* the further matching has DENSE_FACTOR times --match-points (measured on
  * the survey of compat-tri(1): 2 raised the mean worst angle of the 37
@@ -895,14 +896,17 @@ static int dense_start(struct options *dense, struct rings *R, struct candidate 
 #ifndef DENSE_FACTOR
 #define DENSE_FACTOR 2
 #endif
-/* the spread weight of the last candidate (see main; measured in compat-tri(1)) */
+/* the last candidate's spread weight and --match-points factor (see main;
+ * measured in compat-tri(1): with 1 times the points the horse gained
+ * nothing) */
 #ifndef SPREAD_RETRY
 #define SPREAD_RETRY 3
 #endif
 #ifndef SPREAD_POINTS
 #define SPREAD_POINTS 2
 #endif
-static double race(struct options *o, struct rings *R, struct compat *cp, double q0, struct ahead *ah)
+static double race(struct options *o, struct rings *R, struct compat *cp, double q0, struct ahead *ah,
+                   char *kept, size_t ksize)
 {
     struct options off = *o, dense = *o;
     off.match = -2;
@@ -1058,6 +1062,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     for (int a = 0; a < nk; a++)
         if (a != use && K[a]->built) compat_free(&K[a]->cp);
     *cp = K[use]->cp;
+    snprintf(kept, ksize, "%s", K[use]->name);
     if (use > 0 && o->points_out) {   /* the rows actually used */
         struct compat tmp;
         char quiet[LOG_SIZE] = "";   /* its -v lines were printed */
@@ -1191,10 +1196,9 @@ int main(int argc, char **argv)
     info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
             "min angle %.2f deg; at %.3f s", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
          cp.stage_count[2], o.split != COMPAT_LINKPATH ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
-    double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah) : improve(&o, &cp, q0);
+    char kept[96] = "the matched points";   /* -v: the name of the mesh in cp */
+    double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah, kept, sizeof kept) : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
-    const char *kept = "the matched points";   /* -v: the name of the mesh in cp */
-    if (o.match_default && o.refine) kept = "the race's mesh";
     /* the default matching with fewer than 3 given rows (no race: nothing
      * else to compare) below the goal: the matching with twice --match-points */
     if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && q1 < o.min_angle &&
@@ -1204,7 +1208,7 @@ int main(int argc, char **argv)
         char name[64];
         snprintf(name, sizeof name, "the matching with %d points", dense.match_points);
         double q2 = retry(&o, &dense, R, &cp, q1, name, kept);
-        if (q2 > q1) kept = "the denser matching";
+        if (q2 > q1) snprintf(kept, sizeof kept, "%s", name);
         q1 = q2;
     }
     /* any default matching still below the goal: the matching with the
