@@ -8,6 +8,17 @@ camel_scans() {
 	done
 }
 
+# cow_walk: w0.mesh, the shared cow, and steps.mesh, 9 frames of it
+# walking a step (clay-deform -m arap: a front hoof forward, a hind hoof
+# back, the snout down; frame 0 the cow itself)
+cow_walk() {
+	mesh-import "$SHARED_DATA/meshes/cow.off" >w0.mesh &&
+	printf "%s\n" "2476 0.32 -0.17 0.091709" "2433 -0.55 -0.25 -0.105921" "890 0.47 -0.06 -0.010733" \
+		"2735 -0.56 -0.02 0.17" "2394 0.13028 -0.314633 -0.091709" "2515 -0.369903 -0.319838 0.105921" \
+		"408 -0.004231 0.217953 0.0" >pose.lm &&
+	clay-deform -m arap -n 8 -l pose.lm --poses steps.mesh w0.mesh >/dev/null
+}
+
 # egg_spheres: s3.mesh and s4.mesh, unit icospheres of subdivision levels 3
 # and 4: the connectivities of the generated source and target eggs below
 egg_spheres() {

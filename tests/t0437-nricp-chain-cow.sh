@@ -1,6 +1,7 @@
 #!/bin/sh
 test_description='nricp --chain on a cow walking a step (clay-deform poses, each key remeshed: true correspondence known): no build-up over the direct registration'
 . "$(dirname "$0")/test-lib.sh"
+. "$TEST_DIRECTORY/estop-lib.sh"
 need_shared_data meshes/cow.off
 
 # the shared cow (2763 vertices, closed) pulled by clay-deform -m arap in 8
@@ -9,17 +10,7 @@ need_shared_data meshes/cow.off
 # steps 2, 4, 6, 8, each remeshed by mesh-clean -R 0.015 (3992-4140
 # vertices), their truth the step itself (SOURCE's connectivity)
 test_expect_success 'setup: the source, four keys remeshed, their true places' '
-	mesh-import "$SHARED_DATA/meshes/cow.off" >w0.mesh &&
-	cat >pose.lm <<-\EOF &&
-	2476 0.32 -0.17 0.091709
-	2433 -0.55 -0.25 -0.105921
-	890 0.47 -0.06 -0.010733
-	2735 -0.56 -0.02 0.17
-	2394 0.13028 -0.314633 -0.091709
-	2515 -0.369903 -0.319838 0.105921
-	408 -0.004231 0.217953 0.0
-	EOF
-	clay-deform -m arap -n 8 -l pose.lm --poses steps.mesh w0.mesh >/dev/null &&
+	cow_walk &&
 	for f in 2 4 6 8; do
 		anim-slice -f $f steps.mesh >w$f.mesh &&
 		mesh-clean -R 0.015 w$f.mesh >r$f.mesh 2>/dev/null || return 1

@@ -2,20 +2,11 @@
 test_description='compat-tri on a traced character made from shared data, no given point: the shared cow walked by clay-deform (the poses of t0437), frames 0 6 8 rendered from the side and traced by img2rings (legs merged in one frame, apart in the others); the default reaches 20 deg where the race alone (--spread 0) stops below it'
 . "$(dirname "$0")/test-lib.sh"
 . "$TEST_DIRECTORY/morph2d-lib.sh"
+. "$TEST_DIRECTORY/estop-lib.sh"
 need_shared_data meshes/cow.off
 
 test_expect_success 'setup: three frames of the walk, traced' '
-	mesh-import "$SHARED_DATA/meshes/cow.off" >w0.mesh &&
-	cat >pose.lm <<-\EOF &&
-	2476 0.32 -0.17 0.091709
-	2433 -0.55 -0.25 -0.105921
-	890 0.47 -0.06 -0.010733
-	2735 -0.56 -0.02 0.17
-	2394 0.13028 -0.314633 -0.091709
-	2515 -0.369903 -0.319838 0.105921
-	408 -0.004231 0.217953 0.0
-	EOF
-	clay-deform -m arap -n 8 -l pose.lm --poses steps.mesh w0.mesh >/dev/null &&
+	cow_walk &&
 	for f in 0 6 8; do
 		anim-slice -f $f steps.mesh | mesh-render -V front -s 300x300 -c 0,0,0 --flat -f ppm |
 			img2rings -1 -s 1 >cow$f.rings || return 1
