@@ -166,6 +166,16 @@ stick_pose() {
 	  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 } print b }' $1$2.rings pts$2 >$1lm$2
 }
 
+# stick_rows CHAR K...: on stdout, the five given rows the stick-character
+# tests use (landmarks 1 3 5 6 7 of CHARlmK, one column per pose K, after
+# stick_pose): the two feet, the head, the neck and the tail
+stick_rows() {
+	sr_char=$1; shift
+	sr_files=
+	for sr_k in "$@"; do sr_files="$sr_files ${sr_char}lm$sr_k"; done
+	paste -d" " $sr_files | sed -n "1p;3p;5p;6p;7p"
+}
+
 # outline_error MESH RING POSE: two-sided Hausdorff distance between frame
 # POSE's boundary polygon (edges in one triangle only) and RING, over the
 # ring's bounding-box diagonal (the ring's vertices to the polygon; the

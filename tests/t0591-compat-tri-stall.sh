@@ -11,19 +11,19 @@ test_expect_success 'generate: horse poses 0 2 4, flamingo poses 1 2 3 5' '
 # stopped at the first stall), 10.85 after; flamingo 1 2 3 5 4.17 before,
 # 7.25 after
 test_expect_success 'horse poses 0 2 4, five rows: worst angle >= 10.5 degrees (stopped at 8.70 before)' '
-	paste -d" " horselm0 horselm2 horselm4 | sed -n "1p;3p;5p;6p;7p" >c &&
+	stick_rows horse 0 2 4 >c &&
 	compat-tri -c c horse0.rings horse2.rings horse4.rings >h.mesh &&
 	test_le 1e-12 $(min_area h.mesh) &&
 	w=$(worst_angle h.mesh) && echo "worst $w deg" && test_le 10.5 $w
 '
 test_expect_success 'flamingo poses 1 2 3 5, five rows: worst angle >= 6.5 degrees (stopped at 4.17 before)' '
-	paste -d" " flamingolm1 flamingolm2 flamingolm3 flamingolm5 | sed -n "1p;3p;5p;6p;7p" >c &&
+	stick_rows flamingo 1 2 3 5 >c &&
 	compat-tri -c c flamingo1.rings flamingo2.rings flamingo3.rings flamingo5.rings >f.mesh &&
 	test_le 1e-12 $(min_area f.mesh) &&
 	w=$(worst_angle f.mesh) && echo "worst $w deg" && test_le 6.5 $w
 '
 test_expect_success 'the same bytes with 1, 2 and 3 threads' '
-	paste -d" " horselm0 horselm2 horselm4 | sed -n "1p;3p;5p;6p;7p" >c &&
+	stick_rows horse 0 2 4 >c &&
 	compat-tri --threads 1 -c c horse0.rings horse2.rings horse4.rings >t1.mesh &&
 	compat-tri --threads 2 -c c horse0.rings horse2.rings horse4.rings >t2.mesh &&
 	compat-tri --threads 3 -c c horse0.rings horse2.rings horse4.rings >t3.mesh &&

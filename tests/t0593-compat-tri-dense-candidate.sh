@@ -11,7 +11,7 @@ test_expect_success 'generate: horse poses 0 1 2, flamingo poses 2 3' '
 # matched points 9.90, the rows alone below), 13.41 after (the matching with
 # 24 points); flamingo 2 3 5.98 before, 8.15 after
 test_expect_success 'horse poses 0 1 2, five rows: the 24 points kept, worst angle >= 12.5 degrees (9.90 before)' '
-	paste -d" " horselm0 horselm1 horselm2 | sed -n "1p;3p;5p;6p;7p" >c &&
+	stick_rows horse 0 1 2 >c &&
 	compat-tri -v -c c --points-out p.txt horse0.rings horse1.rings horse2.rings >h.mesh 2>h.log &&
 	grep "both below the goal: the matching with 24 points too" h.log &&
 	grep "kept the matching with 24 points: worst angle" h.log &&
@@ -22,13 +22,13 @@ test_expect_success 'horse poses 0 1 2, five rows: the 24 points kept, worst ang
 	test_cmp h.mesh k.mesh
 '
 test_expect_success 'flamingo poses 2 3, five rows: worst angle >= 7.5 degrees (5.98 before)' '
-	paste -d" " flamingolm2 flamingolm3 | sed -n "1p;3p;5p;6p;7p" >c &&
+	stick_rows flamingo 2 3 >c &&
 	compat-tri -c c flamingo2.rings flamingo3.rings >f.mesh &&
 	test_le 1e-12 $(min_area f.mesh) &&
 	w=$(worst_angle f.mesh) && echo "worst $w deg" && test_le 7.5 $w
 '
 test_expect_success 'the same bytes with 1, 2 and 3 threads' '
-	paste -d" " horselm0 horselm1 horselm2 | sed -n "1p;3p;5p;6p;7p" >c &&
+	stick_rows horse 0 1 2 >c &&
 	compat-tri --threads 1 -c c horse0.rings horse1.rings horse2.rings >t1.mesh &&
 	compat-tri --threads 2 -c c horse0.rings horse1.rings horse2.rings >t2.mesh &&
 	compat-tri --threads 3 -c c horse0.rings horse1.rings horse2.rings >t3.mesh &&
@@ -39,7 +39,7 @@ test_expect_success 'an explicit -m multiscale is left alone (no second matching
 	! grep "points too" m.log
 '
 test_expect_success 'at the goal: no second matching (horse pose 0 against itself)' '
-	paste -d" " horselm0 horselm0 | sed -n "1p;3p;5p;6p;7p" >c0 &&
+	stick_rows horse 0 0 >c0 &&
 	compat-tri -v -c c0 horse0.rings horse0.rings >e.mesh 2>e.log &&
 	! grep "points too" e.log
 '

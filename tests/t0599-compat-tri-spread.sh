@@ -5,7 +5,7 @@ test_description='compat-tri --spread S: the boundary matching prices each step 
 
 test_expect_success 'generate: horse poses 2 5' '
 	stick_pose horse 2 && stick_pose horse 5 &&
-	paste -d" " horselm2 horselm5 | sed -n "1p;3p;5p;6p;7p" >c25
+	stick_rows horse 2 5 >c25
 '
 test_expect_success '--spread 3 changes the matched points and the mesh' '
 	compat-tri --threads 1 -c c25 -m multiscale --match-points 24 --points-out p0 horse2.rings horse5.rings >m0.mesh &&
