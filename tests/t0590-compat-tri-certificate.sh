@@ -71,6 +71,19 @@ test_expect_success 'several rings: -v says the certificate is not computed' '
 	grep "bound: not computed for several rings" herr
 '
 
+test_expect_success 'too many given rows for the certificate (90 rows: 2.6 million quadruples): -v says it is not computed and meshes as without -v; --bound refuses' '
+	awk "BEGIN { print \"ring 120\"; for (i = 0; i < 120; i++) { a = 6.283185307179586 * i / 120; printf \"%.6f %.6f\\n\", 50 * cos(a), 30 * sin(a) } }" >e0.rings &&
+	awk "BEGIN { print \"ring 120\"; for (i = 0; i < 120; i++) { a = 6.283185307179586 * i / 120; printf \"%.6f %.6f\\n\", 40 * cos(a), 40 * sin(a) + 5 * cos(3 * a) } }" >e1.rings &&
+	awk "BEGIN { for (i = 0; i < 90; i++) print i, i }" >many.txt &&
+	compat-tri -c many.txt e0.rings e1.rings >quiet.mesh &&
+	compat-tri -v -c many.txt e0.rings e1.rings >loud.mesh 2>many.log &&
+	grep "certificate: not computed: 90 correspondence points: too many quadruples" many.log &&
+	grep "result:" many.log &&
+	cmp quiet.mesh loud.mesh &&
+	test_fails_cleanly compat-tri --bound -c many.txt e0.rings e1.rings 2>many.err &&
+	grep "bound: not computed: 90 correspondence points" many.err
+'
+
 test_expect_success 'bad input: --bound without -c is a usage error; a bad index, rows out of order: one line, exit 1, nothing on stdout' '
 	test_must_fail_usage compat-tri --bound leg.rings hidden.rings 2>err &&
 	grep "needs -c" err &&

@@ -303,12 +303,16 @@ static double elapsed(void) { return now_seconds() - t_start; }
 /* The certificate of nc correspondence rows (corr: nc by N, counter-
  * clockwise; row[k]: their 1-based rows in the file named name; who: what
  * they are, for the line) as one line into line (size len); the cost goes
- * to -v.  Returns the ceiling in degrees (60: none). */
+ * to -v.  Returns the ceiling in degrees (60: none; -1: not computed, the
+ * line says why: -v goes on without it, --bound refuses) */
 static double cert_line(int N, double **P, const int *n, const int *corr, int nc, const int *row, const char *name,
                         const char *who, char *line, size_t len)
 {
     struct modulus_cert mc;
-    if (modulus_certificate(N, P, n, corr, nc, CERT_TOL, &mc) < 0) die("certificate failed: %s", cm_errmsg());
+    if (modulus_certificate(N, P, n, corr, nc, CERT_TOL, &mc) < 0) {
+        snprintf(line, len, "certificate: not computed: %s", cm_errmsg());
+        return -1;
+    }
     if (nc < 4) {
         snprintf(line, len, "certificate: %d point%s given in every shape; 4 are needed for a bound on the angles",
                  nc, nc == 1 ? "" : "s");
@@ -558,7 +562,7 @@ static double certify(const struct options *o, struct rings *R, const int *flipp
     double ceiling = cert_line(N, P, n, corr, nc, row, o->corr, "the given points", line, len);
     columns_free(&C);
     free(n); free(corr); free(row); free(P);
-    return nc >= 4 ? ceiling : -1;
+    return nc >= 4 ? ceiling : -1;   /* -1 also where it was not computed */
 }
 
 /* several rings or interior points: compat_holes.h */
