@@ -166,6 +166,23 @@ stick_pose() {
 	  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 } print b }' $1$2.rings pts$2 >$1lm$2
 }
 
+# stick_poses CHAR K...: stick_pose CHAR K for each K
+stick_poses() {
+	sp_char=$1; shift
+	for sp_k in "$@"; do stick_pose $sp_char $sp_k || return 1; done
+}
+
+# outline_within MESH RING...: every frame's outline (frame k against the
+# k-th RING) within compat-tri's default tolerance, 0.005 of the diagonal
+outline_within() {
+	ow_mesh=$1; shift
+	ow_k=0
+	for ow_ring in "$@"; do
+		test_le $(outline_error $ow_mesh $ow_ring $ow_k) 0.005000001 || return 1
+		ow_k=$((ow_k + 1))
+	done
+}
+
 # stick_rows CHAR K...: on stdout, the five given rows the stick-character
 # tests use (landmarks 1 3 5 6 7 of CHARlmK, one column per pose K, after
 # stick_pose): the two feet, the head, the neck and the tail
