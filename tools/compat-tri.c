@@ -515,12 +515,13 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
     int ngiven = ncorr, *given = malloc(((size_t)ncorr + 1) * N * sizeof *given);
     if (!given) die("out of memory");
     memcpy(given, corr, (size_t)ncorr * N * sizeof *given);
-    if (o->match >= 0 && !(corr = match_points(o, N, P, n, flipped, corr, &ncorr, want, nwant))) {
-        free(want); columns_free(&C);   /* a polish that could not run (o->mpolish_soft) */
-        free(P); free(n); free(flipped);
-        return -1;
-    }
-    else write_points(o, N, n, flipped, corr, ncorr);
+    if (o->match >= 0) {
+        if (!(corr = match_points(o, N, P, n, flipped, corr, &ncorr, want, nwant))) {
+            free(given); free(want); columns_free(&C);   /* a polish that could not run (o->mpolish_soft) */
+            free(P); free(n); free(flipped);
+            return -1;
+        }
+    } else write_points(o, N, n, flipped, corr, ncorr);
     const char *corr_name = o->match >= 0 ? "the matched points" : o->corr;
     if (compat_match(N, P, n, corr, ncorr, cp, &keep) < 0) {
         cm_seterr("cannot read '%s': %s", corr_name, cm_errmsg());
