@@ -60,6 +60,8 @@ test_expect_success 'more than 24 rows: the candidate is left out and -v says wh
 test_expect_success 'bad --match-polish: a usage error' '
 	test_must_fail_usage compat-tri --match-polish -1 -c c45 flamingo4.rings flamingo5.rings 2>err &&
 	grep -q "match-polish must be in 0..100000" err &&
-	test_must_fail_usage compat-tri --match-polish x -c c45 flamingo4.rings flamingo5.rings 2>err
+	test_must_fail_usage compat-tri --match-polish x -c c45 flamingo4.rings flamingo5.rings 2>err &&
+	test_must_fail_usage compat-tri --match-polish 8 -m off -c c45 flamingo4.rings flamingo5.rings 2>err &&
+	grep -q "not with --match off" err
 '
 test_done

@@ -263,6 +263,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     if (!(o->feature >= 0 && o->feature < 1e6)) usage_error("--feature must be >= 0");
     if (!(o->spread >= 0 && o->spread < 1e6)) usage_error("--spread must be >= 0");
     if (o->mpolish < 0 || o->mpolish > 100000) usage_error("--match-polish must be in 0..100000");
+    if (o->mpolish > 0 && o->match == -2) usage_error("--match-polish moves the matched points: not with --match off");
     if (!o->corr && o->match == -2) usage_error("--match off needs -c CORR with at least 3 rows");
     if (!o->corr && o->match == BMATCH_ARCLENGTH) usage_error("--match arclength needs -c CORR (a start point)");
     if (o->bound && !o->corr) usage_error("--bound needs -c CORR (the given points)");
