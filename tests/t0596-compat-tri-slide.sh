@@ -10,11 +10,13 @@ test_expect_success 'generate: horse poses 0 2 4' '
 '
 # measured (compat-tri(1), REFINEMENT, The outline slides): poses 0 2 4
 # 15.33 deg with --slide off, 20.08 by default; poses 2 4 11.99 -> 19.04
+# (--slide off with --match-polish 0: the polished matching, tried where
+# the mesh is below the goal, would lift it too)
 test_expect_success 'horse poses 0 2 4: the goal of 20 degrees reached (15.33 with --slide off)' '
 	compat-tri -v -c c024 horse0.rings horse2.rings horse4.rings >h.mesh 2>err &&
 	test_le 1e-12 $(min_area h.mesh) &&
 	w=$(worst_angle h.mesh) && echo "worst $w deg" && test_le 20 $w &&
-	compat-tri --slide off -c c024 horse0.rings horse2.rings horse4.rings >off.mesh &&
+	compat-tri --slide off --match-polish 0 -c c024 horse0.rings horse2.rings horse4.rings >off.mesh &&
 	w0=$(worst_angle off.mesh) && echo "--slide off: $w0 deg" && test_le $w0 16 &&
 	grep -q "outline after the refinement (--slide): within" err
 '
