@@ -62,6 +62,8 @@ test_expect_success 'bad --match-polish: a usage error' '
 	grep -q "match-polish must be in 0..100000" err &&
 	test_must_fail_usage compat-tri --match-polish x -c c45 flamingo4.rings flamingo5.rings 2>err &&
 	test_must_fail_usage compat-tri --match-polish 8 -m off -c c45 flamingo4.rings flamingo5.rings 2>err &&
-	grep -q "not with --match off" err
+	grep -q "not with --match off" err &&
+	compat-tri -v --match-polish 5 flamingo4.rings >one.mesh 2>one.err &&
+	grep -q "matching polish: nothing to move (.* 1 shape: a ratio needs 4 points and 2 shapes)" one.err
 '
 test_done

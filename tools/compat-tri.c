@@ -413,6 +413,9 @@ static int *match_points(const struct options *o, int N, double **P, const int *
         free(corr);
         return NULL;
     }
+    if (o->mpolish > 0 && (nc < 4 || N < 2))   /* said, not skipped silently */
+        info(1, "matching polish: nothing to move (%d correspondence point%s, %d shape%s: a ratio needs 4 points "
+                "and 2 shapes)", nc, nc == 1 ? "" : "s", N, N == 1 ? "" : "s");
     if (o->mpolish > 0 && nc >= 4 && N >= 2) {   /* the placed points moved to force less stretch */
         unsigned char *pin = calloc(nc, 1);
         if (!pin) die("out of memory");
