@@ -355,6 +355,14 @@ extern "C" int cdt2_overlay(int m, int N, const double *const *X, int fewest, do
         }
         double *S = (double *)malloc(2 * (size_t)N * k * sizeof(double) + 1);
         if (!S) return cm_seterr("out of memory");
+        // the exact values of the corners and crossings, computed once: the
+        // barycentric blends below are done in the exact number type, not
+        // as lazy expressions (each of whose evaluations costs a
+        // std::call_once, a futex system call)
+        typedef EK::Exact_kernel XK;
+        std::vector<XK::Point_2> XD(m), XP(k);
+        for (int i = 0; i < m; i++) XD[i] = CGAL::exact(D[i]);
+        for (int q = 0; q < k; q++) XP[q] = CGAL::exact(extra[q]->point());
         for (int s = 0; s < N; s++)
             for (int q = 0; q < k; q++) {
                 const EK::Point_2 &p = extra[q]->point();
@@ -368,14 +376,15 @@ extern "C" int cdt2_overlay(int m, int N, const double *const *X, int fewest, do
                     // the image in the shape, computed exactly and rounded
                     // once (a rounded barycentric blend can flip a sliver
                     // between nearby crossings)
-                    EK::FT area = CGAL::area(A, B, C);
-                    EK::FT la = CGAL::area(p, B, C) / area, lb = CGAL::area(A, p, C) / area;
-                    EK::FT lc = 1 - la - lb;
+                    const XK::Point_2 &xA = XD[T[s][t]], &xB = XD[T[s][t + 1]], &xC = XD[T[s][t + 2]];
+                    XK::FT area = CGAL::area(xA, xB, xC);
+                    XK::FT la = CGAL::area(XP[q], xB, xC) / area, lb = CGAL::area(xA, XP[q], xC) / area;
+                    XK::FT lc = 1 - la - lb;
                     const double *xa = X[s] + 2 * T[s][t], *xb = X[s] + 2 * T[s][t + 1], *xc = X[s] + 2 * T[s][t + 2];
                     double *o = S + 2 * ((size_t)s * k + q);
                     for (int d = 0; d < 2; d++) {
-                        EK::FT x = la * xa[d] + lb * xb[d] + lc * xc[d];
-                        o[d] = CGAL::to_double(CGAL::exact(x));
+                        XK::FT x = la * xa[d] + lb * xb[d] + lc * xc[d];
+                        o[d] = CGAL::to_double(x);
                     }
                     found = 1;
                 }
