@@ -210,6 +210,23 @@ int rings_orientation(const struct rings *r, int k)
     return orient2_sign(P + 2 * ((v + n - 1) % n), P + 2 * v, P + 2 * ((v + 1) % n));
 }
 
+double rings_sharpest_left(const struct rings *r, int k)
+{
+    const double *P = rings_ring(r, k);
+    int n = rings_count(r, k);
+    double mn = 2 * M_PI;
+    for (int i = 0; i < n; i++) {
+        const double *v = P + 2 * i, *a = P + 2 * ((i + 1) % n), *b = P + 2 * ((i + n - 1) % n);
+        /* counter-clockwise from the edge to the next point to the edge
+         * to the previous one */
+        double ax = a[0] - v[0], ay = a[1] - v[1], bx = b[0] - v[0], by = b[1] - v[1];
+        double an = atan2(ax * by - ay * bx, ax * bx + ay * by);
+        if (an < 0) an += 2 * M_PI;
+        if (an < mn) mn = an;
+    }
+    return mn;
+}
+
 void rings_reverse(struct rings *r, int k)
 {
     double *P = rings_ring(r, k);

@@ -78,6 +78,12 @@ int rings_first_crossing(const struct rings *r, int *e1, int *e2);
  * orientation 0 as it is; returns the number of rings reversed). */
 int rings_orient(struct rings *r);
 
+/* Smallest corner angle of ring k in radians, (0, 2 pi), measured on the
+ * left of its direction (the inside of a counter-clockwise ring, the
+ * outside of a clockwise one): no triangle of a mesh of the inside whose
+ * outline keeps that corner has a larger angle there. */
+double rings_sharpest_left(const struct rings *r, int k);
+
 /* Reverse the point order (and the source lines) of ring k. */
 void rings_reverse(struct rings *r, int k);
 

@@ -105,7 +105,8 @@ static const char help[] =
 "                        'sg' (the same without the MIPS smoothing,\n"
 "                        collapses and stall detection: the paper's local\n"
 "                        smoothing only) or 'none' (-l and -s)\n"
-"  -a, --min-angle DEG   goal of --refine (default 20)\n"
+"  -a, --min-angle DEG   goal of --refine (default 20; capped by the sharpest\n"
+"                        outline corner; a mesh below it gets a warning)\n"
 "      --max-vertices K  --refine stops splitting at K vertices (default: the\n"
 "                        triangulation's vertices plus 10 times the simplified\n"
 "                        outline's vertex count)\n"
@@ -162,6 +163,7 @@ struct options {
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
     double min_angle, split_share;
+    double sharp_in;      /* degrees: the input outlines' sharpest corner (one ring each; else 0) */
     int slide;        /* --slide: 0 off, 1 in the passes run again, 2 in every pass, 3 as 1
                          without the global polish with slides */
     int nshapes;
@@ -837,6 +839,23 @@ static int cand_step(const struct options *o, struct candidate *k, struct progre
     return 0;
 }
 
+/* the goal a mesh is held to, in degrees: --min-angle, or the sharpest
+ * corner of its outline where that is smaller (a triangle in that corner
+ * has no larger angle, so a run whose mesh is there tries no other
+ * candidate) -- unless the input has no corner that sharp: a corner the
+ * simplification made sharper than the drawing is not a goal (another
+ * candidate's outline may not have it) */
+static double mesh_goal(const struct options *o, const struct compat *cp)
+{
+    return fmin(o->min_angle, fmax(o->sharp_in, compat_sharpest_corner(cp) * 180 / M_PI));
+}
+
+/* worst angle q (degrees) of cp below its goal (mesh_goal, to rounding) */
+static int below_goal(const struct options *o, const struct compat *cp, double q)
+{
+    return q < mesh_goal(o, cp) * (1 - 1e-6);
+}
+
 /* worst angle (degrees) and triangles below the goal of a running or finished candidate */
 static void cand_state(const struct candidate *k, double *worst, int *nbad)
 {
@@ -1011,7 +1030,8 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
                 nlive++;
                 if (pick < 0 || rounds[a] < rounds[pick]) pick = a;   /* the fewest rounds first */
             }
-        if (!nlive && K[1]->built && nk > 2 && !K[2]->built && K[0]->q < o->min_angle && K[1]->q < o->min_angle) {
+        if (!nlive && K[1]->built && nk > 2 && !K[2]->built && below_goal(o, &K[0]->cp, K[0]->q) &&
+            below_goal(o, &K[1]->cp, K[1]->q)) {
             /* both below the goal: the matching with twice the points */
             K[2]->built = 1;
             if (dense_start(&dense, R, K[2]) < 0) {
@@ -1024,16 +1044,16 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
             } else info(1, "both below the goal: %s too; at %.3f s", K[2]->name, elapsed());
             continue;
         }
-        if (!nlive && (K[1]->built || K[0]->q >= o->min_angle)) break;
+        if (!nlive && (K[1]->built || !below_goal(o, &K[0]->cp, K[0]->q))) break;
         /* the matched points at the goal: kept */
-        if (!K[0]->r && K[0]->q >= o->min_angle) break;
+        if (!K[0]->r && !below_goal(o, &K[0]->cp, K[0]->q)) break;
         if (pick >= 0) {
             if (cand_step(o, K[pick], &pr, &done) < 0) die("%s", cm_errmsg());
             rounds[pick]++;
         }
         int nbad0 = 0, fewest0 = 0;
         if (K[0]->r) compat_refine_progress(K[0]->r, NULL, &nbad0, &fewest0);
-        if (!K[1]->built && ((rounds[0] >= RACE_ROUNDS && nbad0 > fewest0) || !K[0]->r) && K[0]->q < o->min_angle) {
+        if (!K[1]->built && ((rounds[0] >= RACE_ROUNDS && nbad0 > fewest0) || !K[0]->r) && below_goal(o, &K[0]->cp, K[0]->q)) {
             /* the other candidates; one that cannot be built is left out */
             K[1]->built = 1;
             int ok;
@@ -1113,7 +1133,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     }
     /* kept: the matched points at the goal, else the largest worst angle */
     int use = 0;
-    if (K[0]->q < o->min_angle)
+    if (below_goal(o, &K[0]->cp, K[0]->q))
         for (int a = 1; a < nk; a++)
             if (K[a]->q > K[use]->q) use = a;
     for (int a = 0; a < nk; a++)
@@ -1215,6 +1235,11 @@ int main(int argc, char **argv)
             if ((flipped[s] = rings_orient(&R[s])))
                 info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
     o.flipped = flipped;
+    o.sharp_in = 0;   /* several rings: the mesh's own corners (mesh_goal) */
+    if (!multi) {
+        o.sharp_in = 180;
+        for (int s = 0; s < N; s++) o.sharp_in = fmin(o.sharp_in, rings_sharpest_left(&R[s], 0) * 180 / M_PI);
+    }
     double ceiling = -1;   /* of the given points, degrees; -1: not computed */
     if (o.bound || (verbose && o.corr)) {
         char line[1024];
@@ -1270,7 +1295,7 @@ int main(int argc, char **argv)
     if (q1 < 0) die("%s", cm_errmsg());
     /* the default matching with fewer than 3 given rows (no race: nothing
      * else to compare) below the goal: the matching with twice --match-points */
-    if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && q1 < o.min_angle &&
+    if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && below_goal(&o, &cp, q1) &&
         o.match_points < 1000 && !o.match_points_given) {
         struct options dense = o;
         dense.match_points = DENSE_FACTOR * o.match_points < 1000 ? DENSE_FACTOR * o.match_points : 1000;
@@ -1283,7 +1308,7 @@ int main(int argc, char **argv)
     /* any default matching still below the goal: the matching with the
      * spread term (--spread SPREAD_RETRY), where the stretch of a leg
      * bunched at one end is what keeps it there */
-    if (!multi && o.refine && o.match_auto && o.match >= 0 && q1 < o.min_angle && !o.spread_given) {
+    if (!multi && o.refine && o.match_auto && o.match >= 0 && below_goal(&o, &cp, q1) && !o.spread_given) {
         struct options spread = o;
         spread.spread = SPREAD_RETRY;
         if (!o.match_points_given)
@@ -1297,7 +1322,7 @@ int main(int argc, char **argv)
      * given rows allow (modulus_match_polish; measured in compat-tri(1):
      * without given rows, on the traced camel, it gained on 1 of 16 runs
      * for 89% more CPU) */
-    if (!multi && o.refine && o.match_default && o.match >= 0 && q1 < o.min_angle && !o.mpolish_given) {
+    if (!multi && o.refine && o.match_default && o.match >= 0 && below_goal(&o, &cp, q1) && !o.mpolish_given) {
         struct options mp = o;
         mp.mpolish = MPOLISH_STEPS;
         mp.mpolish_soft = 1;
@@ -1330,6 +1355,16 @@ int main(int argc, char **argv)
     info(1, "result: %d vertices (%d boundary, %d Steiner, %d refinement), %d triangles, "
             "min angle %.2f deg over %d shapes, %.3f s", cp.nv, cp.nb, cp.nsteiner, cp.nrefine, cp.nf,
          q * 180 / M_PI, N, elapsed());
+    /* a mesh below the goal (mesh_goal) is kept: it is compatible and on
+     * the outline, but not at the quality asked for, which is said */
+    double goal = mesh_goal(&o, &cp);
+    if (o.refine && below_goal(&o, &cp, q * 180 / M_PI)) {
+        char g[96];
+        if (goal < o.min_angle) snprintf(g, sizeof g, "%.2f deg (the sharpest corner of the outlines)", goal);
+        else snprintf(g, sizeof g, "%g deg (--min-angle)", goal);
+        warn("worst angle %.2f deg, below the goal of %s; the mesh is written anyway%s", q * 180 / M_PI, g,
+             verbose ? "" : " (-v says why)");
+    }
     if (ceiling > 0 && q * 180 / M_PI < o.min_angle) {   /* the shortfall against the certificate */
         if (ceiling < o.min_angle)
             info(1, "certificate: the goal of %g deg is out of reach with the given points (no triangulation keeps more "

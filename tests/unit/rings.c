@@ -1,6 +1,7 @@
 /* rings.c -- rings_degenerate and rings_orientation at any scale: the
  * same shapes scaled by 1e-300 ... 1e300 give the same answers (the area
- * test used to square the diagonal, which overflows above 1e154). */
+ * test used to square the diagonal, which overflows above 1e154);
+ * rings_sharpest_left on either side of a ring. */
 #include "rings.h"
 #include "tap.h"
 #include <math.h>
@@ -35,5 +36,28 @@ int main(void)
     }
     static const double cw[] = {0, 0, 0, 1, 1, 1, 1, 0};
     ok(test_orientation(cw, 4, 1e300) < 0, "a clockwise square at 1e300 is clockwise");
+
+    /* rings_sharpest_left: the inside of a counter-clockwise ring, the
+     * outside of a clockwise one */
+    double P[8];
+    int start[2] = {0, 4};
+    struct rings r = {.nrings = 1, .start = start, .P = P};
+    for (int i = 0; i < 8; i++) P[i] = square[i];
+    ok(fabs(rings_sharpest_left(&r, 0) - M_PI / 2) < 1e-12, "a counter-clockwise square: 90 degrees");
+    for (int i = 0; i < 8; i++) P[i] = cw[i];
+    ok(fabs(rings_sharpest_left(&r, 0) - 1.5 * M_PI) < 1e-12, "a clockwise square: 270 degrees (its outside)");
+    /* a triangle with a 10 degree tip at (10, 0); the same with a notch */
+    double t = tan(5 * M_PI / 180) * 10;
+    double tri[] = {0, -t, 10, 0, 0, t};
+    start[1] = 3;
+    for (int i = 0; i < 6; i++) P[i] = tri[i];
+    ok(fabs(rings_sharpest_left(&r, 0) * 180 / M_PI - 10) < 1e-9, "a triangle with a 10 degree tip: 10 degrees");
+    /* a notch to (8, 0) (reflex there): the barbs at (0, +-t) are
+     * atan(t / 8) - 5 = 1.24 degrees */
+    double arrow[] = {0, -t, 10, 0, 0, t, 8, 0};
+    start[1] = 4;
+    for (int i = 0; i < 8; i++) P[i] = arrow[i];
+    double a = rings_sharpest_left(&r, 0) * 180 / M_PI, b = atan(t / 8) * 180 / M_PI - 5;
+    ok(fabs(a - b) < 1e-9, "an arrow head: its barbs, %.3f degrees (expected %.3f)", a, b);
     return tap_done();
 }
