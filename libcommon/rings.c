@@ -285,6 +285,16 @@ int rings_degenerate(const struct rings *r, int k)
     return 1;
 }
 
+int rings_collinear(const struct rings *r, int k)
+{
+    const double *P = rings_ring(r, k);
+    int n = rings_count(r, k), b = 1;
+    while (b < n && P[2 * b] == P[0] && P[2 * b + 1] == P[1]) b++;   /* a second, distinct point */
+    for (int i = b + 1; i < n; i++)
+        if (orient2_sign(P, P + 2 * b, P + 2 * i) != 0) return 0;
+    return 1;
+}
+
 int segments_intersect(const double *a, const double *b, const double *c, const double *d)
 {
     /* exact signs (predicates2.h) */

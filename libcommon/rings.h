@@ -63,6 +63,11 @@ int rings_orientation(const struct rings *r, int k);
  * below 1e-12 of its bounding-box diagonal squared? */
 int rings_degenerate(const struct rings *r, int k);
 
+/* Are all points of ring k on one line (exact orientation tests)?  Such
+ * a ring encloses no area at all (unlike a figure eight, whose signed
+ * area is 0 but which fills two lobes). */
+int rings_collinear(const struct rings *r, int k);
+
 /* Check that no two edges of any rings cross or touch (other than
  * consecutive edges at their shared point) and that no edge folds back
  * onto its neighbour.  Error names both edges by file line. */

@@ -44,6 +44,18 @@ test_expect_success 'svg: bad input fails cleanly' '
 	printf "not svg\n" >no.svg && test_fails_cleanly svg2rings no.svg &&
 	printf "<svg><rect width=\"1\" height=\"1\"/></svg>\n" >none.svg && test_fails_cleanly svg2rings none.svg
 '
+# Font Awesome's dragon (../shared/data/shapes2d/fa_dragon.rings.txt) has
+# such a subpath: 17 points on the line x = 512
+test_expect_success 'svg: a subpath on one line is dropped with a warning naming its line; none left: an error' '
+	printf "<svg>\n<path d=\"M0 0 L10 0 L10 10 L0 10 Z M20 0 V5 V8 Z\"/></svg>\n" >dg.svg &&
+	svg2rings dg.svg >dg.rings 2>err && cat err &&
+	test $(wc -l <err) = 1 &&
+	grep -q "^svg2rings: warning: .dg.svg.: line 2: dropped a subpath of 3 points on one line (it encloses no area" err &&
+	test $(grep -c ring dg.rings) = 1 && areas dg.rings >a && echo 100 >expect && test_cmp expect a &&
+	! grep -q -- "-0\$" dg.rings &&
+	printf "<svg><path d=\"M20 0 V5 V8 Z\"/></svg>\n" >dg2.svg &&
+	test_fails_cleanly svg2rings dg2.svg && grep -q "line 1: no closed outline encloses any area" .err
+'
 test_expect_success 'pbm: ring with a hole, counter-clockwise outer, clockwise hole' '
 	printf "P1\n8 6\n0 0 0 0 0 0 0 0\n0 1 1 1 1 1 0 0\n0 1 0 0 0 1 0 0\n0 1 1 1 1 1 1 0\n0 0 0 0 0 0 1 0\n0 0 0 0 0 0 0 0\n" >a.pbm &&
 	img2rings -s 0 -a 0 a.pbm >a.rings && areas a.rings >ar &&

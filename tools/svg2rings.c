@@ -322,11 +322,22 @@ int main(int argc, char **argv)
     }
     if (out.nrings == 0) die("cannot read '%s': line %ld: no closed outline in any <path> or <polygon>", fname, line);
     if (!o.noflip)
-        for (int i = 0; i < out.start[out.nrings]; i++) out.P[2 * i + 1] = -out.P[2 * i + 1];
+        for (int i = 0; i < out.start[out.nrings]; i++) out.P[2 * i + 1] = 0.0 - out.P[2 * i + 1];   /* 0 - 0 is +0: no "-0" */
+    /* a subpath whose points are all on one line (e.g. "M512 72.3 V71.7
+     * Z") fills nothing: dropped, and said */
+    int R = 0, *order = malloc(out.nrings * sizeof *order);
+    for (int k = 0; k < out.nrings; k++)
+        if (!rings_collinear(&out, k)) order[R++] = k;
+    if (R == 0)
+        die("cannot read '%s': line %ld: no closed outline encloses any area (every subpath lies on a line)", fname,
+            ring_line[0]);
+    for (int k = 0; k < out.nrings; k++)
+        if (rings_collinear(&out, k))
+            warn("'%s': line %ld: dropped a subpath of %d points on one line (it encloses no area, draws nothing)",
+                 fname, ring_line[k], rings_count(&out, k));
     /* order: largest |area| first; orientation: outer CCW, rings inside it CW */
-    int R = out.nrings, *order = malloc(R * sizeof *order);
-    double *area = malloc(R * sizeof *area);
-    for (int k = 0; k < R; k++) { order[k] = k; area[k] = fabs(rings_area(&out, k)); }
+    double *area = malloc(out.nrings * sizeof *area);
+    for (int k = 0; k < out.nrings; k++) area[k] = fabs(rings_area(&out, k));
     for (int a = 1; a < R; a++)
         for (int b = a; b > 0 && area[order[b]] > area[order[b - 1]]; b--) { int t = order[b]; order[b] = order[b - 1]; order[b - 1] = t; }
     struct rings sorted;

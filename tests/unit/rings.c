@@ -59,5 +59,21 @@ int main(void)
     for (int i = 0; i < 8; i++) P[i] = arrow[i];
     double a = rings_sharpest_left(&r, 0) * 180 / M_PI, b = atan(t / 8) * 180 / M_PI - 5;
     ok(fabs(a - b) < 1e-9, "an arrow head: its barbs, %.3f degrees (expected %.3f)", a, b);
+
+    /* rings_collinear: a line encloses nothing; a figure eight (signed
+     * area 0) and a sliver of area 5e-15 are not lines */
+    double lin[] = {512, 72.3, 512, 72.0, 512, 71.7, 512, 71.7 + 1e-13};
+    start[1] = 4;
+    for (int i = 0; i < 8; i++) P[i] = lin[i];
+    ok(rings_collinear(&r, 0), "17 points on x = 512, here 4: on one line");
+    double bow[] = {0, 0, 10, 10, 10, 0, 0, 10};
+    for (int i = 0; i < 8; i++) P[i] = bow[i];
+    ok(!rings_collinear(&r, 0) && rings_degenerate(&r, 0), "a figure eight: no line (though its signed area is 0)");
+    double rep[] = {1, 1, 1, 1, 2, 2, 3, 3.000000000000001};
+    for (int i = 0; i < 8; i++) P[i] = rep[i];
+    ok(!rings_collinear(&r, 0), "a repeated first point, then a point off the line by 1e-15: no line (exact)");
+    start[1] = 3;
+    for (int i = 0; i < 6; i++) P[i] = sliver[i];
+    ok(!rings_collinear(&r, 0) && rings_degenerate(&r, 0), "a sliver of relative area 1e-15: degenerate but not a line");
     return tap_done();
 }
