@@ -3,6 +3,7 @@
 #include "cm_error.h"
 #include "sparse.h"
 #include "spd.h"
+#include "topology.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,10 +24,47 @@ void arap_deform2d_free(struct arap_deform2d *D)
     free(D);
 }
 
+/* every connected component (a separate piece of a drawing) has 2 handles
+ * in range and every vertex is in a triangle: else the similarity step
+ * leaves that piece's place, rotation or scale free (a singular system).
+ * 0, or -1 with the piece named (cm_errmsg). */
+static int pieces_handled(int nv, const int *F, int nf, const int *H, int nh)
+{
+    struct topology t;
+    if (topology_build(F, nf, nv, &t) < 0) return -1;
+    for (int v = 0; v < nv; v++)
+        if (t.VFs[v + 1] == t.VFs[v]) {
+            topology_free(&t);
+            return cm_seterr("vertex %d is in no triangle (nothing places it)", v);
+        }
+    int *comp = malloc(((size_t)nf + 1) * sizeof *comp), *vc = malloc(((size_t)nv + 1) * sizeof *vc);
+    int nc = comp && vc ? connected_components(&t, F, comp) : -1;
+    int *cnt = nc > 0 ? calloc(nc, sizeof *cnt) : NULL, *size = nc > 0 ? calloc(nc, sizeof *size) : NULL;
+    int *low = nc > 0 ? malloc(nc * sizeof *low) : NULL;
+    int rc = 0;
+    if (!comp || !vc || nc < 1 || !cnt || !size || !low) rc = cm_seterr("out of memory");
+    else {
+        for (int f = 0; f < nf; f++)
+            for (int j = 0; j < 3; j++) vc[F[3 * f + j]] = comp[f];
+        for (int k = 0; k < nc; k++) low[k] = nv;
+        for (int v = nv - 1; v >= 0; v--) { size[vc[v]]++; low[vc[v]] = v; }
+        for (int h = 0; h < nh; h++)
+            if (H[h] >= 0 && H[h] < nv) cnt[vc[H[h]]]++;
+        for (int k = 0; k < nc && !rc; k++)
+            if (cnt[k] < 2)
+                rc = cm_seterr("piece %d of %d (%d vertices, the first %d) has %d handle%s: each separate piece needs 2 "
+                               "(the pieces are not connected)", k + 1, nc, size[k], low[k], cnt[k], cnt[k] == 1 ? "" : "s");
+    }
+    free(comp); free(vc); free(cnt); free(size); free(low);
+    topology_free(&t);
+    return rc;
+}
+
 struct arap_deform2d *arap_deform2d_new(const double *V, int nv, const int *F, int nf,
                                         const int *H, int nh)
 {
     if (nh < 2) { cm_seterr("at least 2 handles are needed (1 leaves rotation and scale free)"); return NULL; }
+    if (pieces_handled(nv, F, nf, H, nh) < 0) return NULL;
     struct arap_deform2d *D = calloc(1, sizeof *D);
     D->nv = nv; D->nf = nf; D->nh = nh;
     D->F = malloc(3 * (size_t)nf * sizeof *D->F); memcpy(D->F, F, 3 * (size_t)nf * sizeof *F);

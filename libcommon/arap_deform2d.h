@@ -25,7 +25,9 @@ extern "C" {
 struct arap_deform2d;
 
 /* V: #V by 3 rest positions (x, y used); F: #F by 3; H: nh handle vertex
- * indices (distinct, nh >= 2).  NULL on failure (cm_errmsg). */
+ * indices (distinct, nh >= 2, at least 2 in every connected component;
+ * every vertex in a triangle).  NULL on failure (cm_errmsg names a piece
+ * with too few handles). */
 struct arap_deform2d *arap_deform2d_new(const double *V, int nv, const int *F, int nf,
                                         const int *H, int nh);
 /* P: nh by 2 handle targets; out: #V by 3 (z = 0). */

@@ -18,6 +18,9 @@ struct nway_blend {
     double *S;        /* #F by N by 4 stretch matrices */
     struct quad_solver *solver;
     double *b, *y, *x;  /* #V by 2 work arrays */
+    int npin;           /* fixed vertices: the first of each connected component, and every vertex in no triangle */
+    int *pin;           /* npin vertex indices */
+    double *P;          /* npin by N by 2: their positions in the shapes */
 };
 
 double hermite_step(double t, double a, double b)
@@ -67,6 +70,7 @@ void nway_blend_free(struct nway_blend *B)
     quad_solver_free(B->solver);
     free(B->F); free(B->G); free(B->area); free(B->alpha); free(B->S);
     free(B->b); free(B->y); free(B->x);
+    free(B->pin); free(B->P);
     free(B);
 }
 
@@ -127,6 +131,37 @@ struct nway_blend *nway_blend_new(double *const *X, int N, int nv, const int *F,
     /* unwrap angles: BFS over triangle adjacency, per shape */
     struct topology t;
     if (topology_build(F, nf, nv, &t) < 0) { triplets_free(&T); nway_blend_free(B); return NULL; }
+    /* the translation of every connected component (separate pieces of a
+     * drawing: compat-tri's several rings) is free: its first vertex is
+     * fixed, as is every vertex in no triangle (vertex 0 alone for one
+     * component) */
+    int *comp = malloc(((size_t)nf + 1) * sizeof *comp), *first = NULL;
+    int ncomp = comp ? connected_components(&t, F, comp) : -1;
+    B->pin = malloc(((size_t)nv + 1) * sizeof *B->pin);
+    if (ncomp >= 0) first = malloc(((size_t)ncomp + 1) * sizeof *first);
+    if (!comp || ncomp < 0 || !first || !B->pin) {
+        free(comp); free(first); topology_free(&t); triplets_free(&T); nway_blend_free(B);
+        cm_seterr("out of memory");
+        return NULL;
+    }
+    for (int k = 0; k < ncomp; k++) first[k] = nv;
+    for (int f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++)
+            if (F[3 * f + j] < first[comp[f]]) first[comp[f]] = F[3 * f + j];
+    unsigned char *fixed = calloc(nv, 1);
+    for (int k = 0; k < ncomp; k++) fixed[first[k]] = 1;
+    for (int v = 0; v < nv; v++)
+        if (t.VFs[v + 1] == t.VFs[v]) fixed[v] = 1;
+    free(comp); free(first);
+    for (int v = 0; v < nv; v++)
+        if (fixed[v]) B->pin[B->npin++] = v;
+    B->P = malloc(((size_t)B->npin * N * 2 + 1) * sizeof *B->P);
+    if (!B->P) { free(fixed); topology_free(&t); triplets_free(&T); nway_blend_free(B); cm_seterr("out of memory"); return NULL; }
+    for (int k = 0; k < B->npin; k++)
+        for (int s = 0; s < N; s++) {
+            B->P[2 * ((size_t)k * N + s)] = X[s][3 * B->pin[k]];
+            B->P[2 * ((size_t)k * N + s) + 1] = X[s][3 * B->pin[k] + 1];
+        }
     int *queue = malloc((size_t)nf * sizeof *queue);
     unsigned char *seen = calloc(nf, 1);
     for (int f0 = 0; f0 < nf; f0++) {
@@ -154,8 +189,6 @@ struct nway_blend *nway_blend_new(double *const *X, int N, int nv, const int *F,
     topology_free(&t);
     cholmod_sparse *L = triplets_to_sparse(&T, 1);
     triplets_free(&T);
-    unsigned char *fixed = calloc(nv, 1);
-    fixed[0] = 1;
     B->solver = quad_solver_new(L, fixed);
     free(fixed);
     sparse_free(&L);
@@ -163,8 +196,7 @@ struct nway_blend *nway_blend_new(double *const *X, int N, int nv, const int *F,
     return B;
 }
 
-int nway_blend_eval(struct nway_blend *B, const double *w, const double *ws, const double anchor[2],
-                    double *out)
+int nway_blend_eval(struct nway_blend *B, const double *w, const double *ws, double *out)
 {
     int N = B->N;
     if (!ws) ws = w;
@@ -187,7 +219,12 @@ int nway_blend_eval(struct nway_blend *B, const double *w, const double *ws, con
                 B->b[2 * t[i] + r] += a * (G[i] * A[2 * r] + G[3 + i] * A[2 * r + 1]);
             }
     }
-    B->y[0] = anchor[0]; B->y[1] = anchor[1];
+    for (int k = 0; k < B->npin; k++) {   /* the fixed vertices at the blend of their positions */
+        double a[2] = {0, 0};
+        for (int i = 0; i < N; i++)
+            for (int c = 0; c < 2; c++) a[c] += w[i] * B->P[2 * ((size_t)k * N + i) + c];
+        B->y[2 * B->pin[k]] = a[0]; B->y[2 * B->pin[k] + 1] = a[1];
+    }
     if (quad_solver_solve(B->solver, B->b, B->y, B->x, 2) < 0) return -1;
     for (int v = 0; v < B->nv; v++) { out[3 * v] = B->x[2 * v]; out[3 * v + 1] = B->x[2 * v + 1]; out[3 * v + 2] = 0; }
     return 0;

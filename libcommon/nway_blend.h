@@ -11,8 +11,10 @@
  *   A_t(w)     = R(alpha_t(w)) S_t(w)
  *
  * and the vertices minimize sum_t area_t || J_t(V) - A_t(w) ||_F^2 with one
- * vertex fixed (translation), J_t(V) the gradient of the map from the base
- * triangle: a Laplacian system factored once (quad_solver), solved per
+ * vertex fixed per connected component (its translation; the component's
+ * lowest vertex index, at sum_i w_i of its positions) and every vertex in
+ * no triangle fixed the same way, J_t(V) the gradient of the map from the
+ * base triangle: a Laplacian system factored once (quad_solver), solved per
  * frame for x and y.
  */
 #ifndef CM_NWAY_BLEND_H
@@ -26,10 +28,10 @@ struct nway_blend;
 /* X: N arrays of #V by 3 positions (only x, y are used); F: #F by 3;
  * base: the base pose index.  Fails on a degenerate base triangle. */
 struct nway_blend *nway_blend_new(double *const *X, int N, int nv, const int *F, int nf, int base);
-/* Blend with weights w (N); ws: weights for the stretch part (NULL = w);
- * anchor: position (2) of the fixed vertex 0; out: #V by 3 (z = 0). */
-int nway_blend_eval(struct nway_blend *B, const double *w, const double *ws, const double anchor[2],
-                    double *out);
+/* Blend with weights w (N, summing to 1); ws: weights for the stretch part
+ * (NULL = w); the fixed vertices (one per connected component) go to
+ * sum_i w_i of their positions; out: #V by 3 (z = 0). */
+int nway_blend_eval(struct nway_blend *B, const double *w, const double *ws, double *out);
 void nway_blend_free(struct nway_blend *B);
 
 /* Hermite smoothstep phi(t, a, b): 0 below a, 1 above b, 3u^2 - 2u^3 between. */

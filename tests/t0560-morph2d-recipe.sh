@@ -23,4 +23,13 @@ test_expect_success 'a coarser simplification reaches the paper Steiner count (7
 	sed -n "s/.*triangulation: .* \([0-9]*\) Steiner points.*/\1/p" log >n && cat n && test $(cat n) -le 10 &&
 	test_le 1e-12 $(min_area e.mesh)
 '
+test_expect_success 'make person: two Font Awesome drawings of three pieces each, morphed with no triangle inverted' '
+	make -s -C "$STOPMO_ROOT/examples/morph2d" BIN="$STOPMO_BIN" FA="$SHARED_DATA/shapes2d" \
+		OUT="$TRASH/out" FRAMES=12 person >plog 2>&1 &&
+	test -s out/person.svg && grep -q "<animate" out/person-morph.svg &&
+	grep -q "^frames 12" out/person-morph.mesh &&
+	grep -q "inverted triangles: 0 in 0 of 12 frames" plog &&
+	test_le 1e-12 $(min_area out/person-morph.mesh) &&
+	test_le 20 $(worst_angle out/person.mesh)
+'
 test_done

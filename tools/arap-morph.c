@@ -143,10 +143,8 @@ int main(int argc, char **argv)
             for (int s = 0; s < N; s++)
                 for (size_t k = 0; k < 3 * (size_t)m.nv; k++) Y[k] += w[s] * X[s][k];
         } else {
-            double anchor[2] = {0, 0};
-            for (int s = 0; s < N; s++) { anchor[0] += w[s] * X[s][0]; anchor[1] += w[s] * X[s][1]; }
             if (o.shear) shear_limit_weights(w, N, o.hermite ? SHEAR_HERMITE : SHEAR_SOFT, wl);
-            if (nway_blend_eval(B, w, o.shear ? wl : NULL, anchor, Y) < 0) die("%s", cm_errmsg());
+            if (nway_blend_eval(B, w, o.shear ? wl : NULL, Y) < 0) die("%s", cm_errmsg());
         }
         tcomp += now() - tb;
         if (verbose) {
