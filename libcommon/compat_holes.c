@@ -50,6 +50,19 @@ static double diag_of(const double *P, int n)
 /* ------------------------------------------------------------------ */
 /* nesting */
 
+double *compat_ring_ccw(const struct rings *r, int k, int hole)
+{
+    int n = rings_count(r, k);
+    double *P = malloc(2 * (size_t)n * sizeof *P);
+    if (!P) return NULL;
+    const double *Q = rings_ring(r, k);
+    for (int i = 0; i < n; i++) {
+        int j = hole ? n - 1 - i : i;
+        P[2 * i] = Q[2 * j]; P[2 * i + 1] = Q[2 * j + 1];
+    }
+    return P;
+}
+
 int compat_is_hole(const int *parent, int k)
 {
     int d = 0;
@@ -232,11 +245,10 @@ int compat_multi(int N, struct rings *R, const int *parent, const unsigned char 
         }
         for (int s = 0; s < N; s++) {
             nn[s] = rings_count(&R[s], r);
-            P[s] = malloc(2 * (size_t)nn[s] * sizeof **P);
-            const double *Q = rings_ring(&R[s], r);
-            for (int i = 0; i < nn[s]; i++) {
-                int j = hole ? nn[s] - 1 - i : i;
-                P[s][2 * i] = Q[2 * j]; P[s][2 * i + 1] = Q[2 * j + 1];
+            if (!(P[s] = compat_ring_ccw(&R[s], r, hole))) {
+                for (int q = 0; q < s; q++) free(P[q]);
+                cm_seterr("out of memory");
+                goto out;
             }
         }
         int rm = compat_corr_order(N, nn, cc, k) < 0 || compat_match(N, P, nn, cc, k, &cr[r], &keep[r]) < 0;

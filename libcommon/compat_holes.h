@@ -60,6 +60,11 @@ int compat_order_rings(int N, struct rings *R, int *corr, int ncorr, int *moved)
 /* Is ring k of a nesting a hole (inside an odd number of rings)? */
 int compat_is_hole(const int *parent, int k);
 
+/* Ring k of r (oriented by compat_nest) as a counter-clockwise polygon: a
+ * copy, reversed if it is a hole (clockwise).  rings_count(r, k) by 2,
+ * malloc'd; NULL if out of memory. */
+double *compat_ring_ccw(const struct rings *r, int k, int hole);
+
 /* Matched, simplified rings and interior points of N shapes.
  * R        N oriented ring sets (compat_nest)
  * parent   nrings nesting (compat_nest); flipped: N by nrings

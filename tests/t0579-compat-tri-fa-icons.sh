@@ -28,6 +28,24 @@ test_expect_success 'head, body and arm: the rows the matching wrote (every othe
 	w=$(worst_angle p3.mesh) && echo "worst $w deg" && test_le 20 $w &&
 	test_le 1e-12 $(min_area p3.mesh)
 '
+# measured: 12, 12 and 9 points placed, 93 vertices, 21.50 deg, 0.07 s
+test_expect_success 'head, body and arm with no -c: every ring matched on its own, the rows written, the same mesh from them' '
+	compat-tri -v --points-out pa.txt "$S/fa_person-running.rings.txt" "$S/fa_person-walking.rings.txt" >pa.mesh 2>err &&
+	test $(grep -c "ring [123] (a piece): [0-9]* correspondence points placed by the boundary matching (0 given)" err) = 3 &&
+	! grep -q warning err &&
+	w=$(worst_angle pa.mesh) && echo "worst $w deg" && test_le 20 $w && test_le 1e-12 $(min_area pa.mesh) &&
+	compat-tri -c pa.txt "$S/fa_person-running.rings.txt" "$S/fa_person-walking.rings.txt" >pb.mesh &&
+	test_cmp pa.mesh pb.mesh
+'
+test_expect_success 'one given row on the body: kept among the matched rows; -m off: the rings without rows from their first vertex' '
+	printf "103 79\n" >c1 &&
+	compat-tri -v -c c1 --points-out p1.txt "$S/fa_person-running.rings.txt" "$S/fa_person-walking.rings.txt" >p1.mesh 2>err &&
+	grep -q "ring 2 (a piece): [0-9]* correspondence points placed by the boundary matching (1 given)" err &&
+	grep -qx "103 79" p1.txt &&
+	test_le 20 $(worst_angle p1.mesh) &&
+	compat-tri -v -m off -c c3 "$S/fa_person-running.rings.txt" "$S/fa_person-walking.rings.txt" >/dev/null 2>err &&
+	grep -q "2 rings without a correspondence row: matched from the first vertex" err && ! grep -q "placed by" err
+'
 # bend X: the rings of X moved by a smooth warp (x + 40 sin(y / 90),
 # y + 30 sin(x / 120)), the same vertices in the same order
 bend() {
@@ -41,6 +59,12 @@ test_expect_success 'the hippo and a bent copy: one piece with four holes (eyes,
 	grep -q "5 rings per shape: 1 piece, 4 holes" err && ! grep -q warning err &&
 	w=$(worst_angle h.mesh) && echo "worst $w deg" && test_le 20 $w &&
 	test_le 1e-12 $(min_area h.mesh)
+'
+test_expect_success 'the hippo and its bent copy with no -c: all five rings matched' '
+	compat-tri -v "$S/fa_hippo.rings.txt" hippo2.rings >h0.mesh 2>err &&
+	test $(grep -c "placed by the boundary matching" err) = 5 &&
+	grep -q "ring 2 (a hole)" err &&
+	test_le 20 $(worst_angle h0.mesh) && test_le 1e-12 $(min_area h0.mesh)
 '
 test_expect_success 'the dragon: its ring 2 (17 points on the line x = 512) is refused with its file and line' '
 	bend "$S/fa_dragon.rings.txt" >dragon2.rings &&

@@ -38,7 +38,8 @@ static const char help[] =
 "                        outer ring: at least 3 rows, in the same order along\n"
 "                        every outline (0 rows or no -c, 1 or 2 rows: the rest\n"
 "                        are found by --match); several rings: each row on one ring,\n"
-"                        a ring without rows is matched from its first vertex\n"
+"                        a ring with 0-2 rows is matched on its own (-m off:\n"
+"                        from its first vertex), one with 3 or more is kept\n"
 "  -i, --interior FILE   interior correspondence points: one row per point,\n"
 "                        2N columns x0 y0 x1 y1 ... (the point in SHAPE0,\n"
 "                        SHAPE1, ...); each becomes one vertex at exactly\n"
@@ -632,6 +633,97 @@ static double certify(const struct options *o, struct rings *R, const int *flipp
     return nc >= 4 ? ceiling : -1;   /* -1 also where it was not computed */
 }
 
+/* index i of ring k of shape s in file order <-> counter-clockwise order
+ * (compat_nest oriented the ring in place, reversing it where flipped; a
+ * hole, clockwise, is read backwards for the matching); its own inverse */
+static int ring_ccw(const struct rings *R, const unsigned char *flipped, int nr, int s, int k, int hole, int i)
+{
+    int n = rings_count(&R[s], k);
+    int v = flipped[(size_t)s * nr + k] ? n - 1 - i : i;
+    return hole ? n - 1 - v : v;
+}
+
+/* Several rings: every ring with fewer than 3 rows (0, 1 or 2: kept among
+ * them) gets the boundary matching of one outline (bmatch_corr, the same
+ * parameters and --match-points), on its own; a ring with 3 or more rows,
+ * or every ring with -m off, keeps its rows (a ring without any then
+ * starts at its first vertex).  R oriented by compat_nest.  Returns the
+ * rows (malloc'd, *nout of them, file-order indices), ring by ring: a
+ * matched ring's rows in its cyclic order, the others' as given; where a
+ * given row is not on one ring in every shape, the given rows as they
+ * are (compat_multi names the row).  *nmatched: the rings matched. */
+static int *match_rings(const struct options *o, int N, const struct rings *R, const int *parent,
+                        const unsigned char *flipped, const int *corr, int ncorr, int *nout, int *nmatched)
+{
+    int nr = R[0].nrings, no = 0, cap = ncorr + 16;
+    int *out = malloc((size_t)cap * N * sizeof *out), *ring = malloc(((size_t)ncorr + 1) * sizeof *ring);
+    double **P = calloc(N, sizeof *P);
+    int *n = malloc(N * sizeof *n), *given = malloc(((size_t)ncorr + 1) * N * sizeof *given);
+    if (!out || !ring || !P || !n || !given) die("out of memory");
+    *nmatched = 0;
+    int ok = 1;   /* every row on one ring, the same in every shape */
+    for (int r = 0; r < ncorr && ok; r++) {
+        ring[r] = -1;
+        for (int k = 0; k < nr; k++)
+            if (corr[(size_t)r * N] >= R[0].start[k] && corr[(size_t)r * N] < R[0].start[k + 1]) ring[r] = k;
+        for (int s = 0; s < N && ok; s++)
+            ok = ring[r] >= 0 && corr[(size_t)r * N + s] >= R[s].start[ring[r]] &&
+                 corr[(size_t)r * N + s] < R[s].start[ring[r] + 1];
+    }
+    if (!ok || o->match == -2) {
+        memcpy(out, corr, (size_t)ncorr * N * sizeof *out);
+        free(ring); free(P); free(n); free(given);
+        *nout = ncorr;
+        return out;
+    }
+    struct bmatch_params prm;
+    bmatch_defaults(&prm);
+    prm.mode = o->match < 0 ? BMATCH_MULTISCALE : o->match;
+    prm.bend = o->bend;
+    prm.feature = o->feature;
+    prm.spread = o->spread;
+    prm.threads = o->threads;
+    for (int k = 0; k < nr; k++) {
+        int hole = compat_is_hole(parent, k), nk = 0, *mc = NULL, nmc = 0;
+        for (int s = 0; s < N; s++) n[s] = rings_count(&R[s], k);
+        for (int r = 0; r < ncorr; r++)   /* its given rows, counter-clockwise indices */
+            if (ring[r] == k) {
+                for (int s = 0; s < N; s++)
+                    given[(size_t)nk * N + s] = ring_ccw(R, flipped, nr, s, k, hole, corr[(size_t)r * N + s] - R[s].start[k]);
+                nk++;
+            }
+        /* 3 or more rows, or rows compat_multi will refuse: as given */
+        if (nk < 3 && compat_corr_order(N, n, given, nk) >= 0) {
+            for (int s = 0; s < N; s++)
+                if (!(P[s] = compat_ring_ccw(&R[s], k, hole))) die("out of memory");
+            if (bmatch_corr(N, P, n, given, nk, NULL, 0, o->match_points, &prm, &mc, &nmc, NULL) < 0) {
+                info(1, "ring %d: boundary matching failed (%s): %s", k + 1, cm_errmsg(),
+                     nk ? "its given rows alone" : "from its first vertex");
+                mc = NULL;
+            }
+            for (int s = 0; s < N; s++) { free(P[s]); P[s] = NULL; }
+        }
+        int add = mc ? nmc : nk;
+        if (no + add > cap) { cap = 2 * (no + add); out = realloc(out, (size_t)cap * N * sizeof *out); }
+        if (!out) die("out of memory");
+        if (mc) {   /* the matched rows (the given ones among them), in cyclic order */
+            (*nmatched)++;
+            info(1, "ring %d (%s): %d correspondence points placed by the boundary matching (%d given)", k + 1,
+                 hole ? "a hole" : "a piece", nmc - nk, nk);
+            for (int a = 0; a < nmc; a++)
+                for (int s = 0; s < N; s++)
+                    out[(size_t)(no + a) * N + s] = R[s].start[k] + ring_ccw(R, flipped, nr, s, k, hole, mc[(size_t)a * N + s]);
+            free(mc);
+        } else
+            for (int r = 0, g = 0; r < ncorr; r++)
+                if (ring[r] == k) memcpy(out + (size_t)(no + g++) * N, corr + (size_t)r * N, N * sizeof *out);
+        no += add;
+    }
+    free(ring); free(P); free(n); free(given);
+    *nout = no;
+    return out;
+}
+
 /* several rings or interior points: compat_holes.h */
 static void build_multi(const struct options *o, struct rings *R, struct compat *cp)
 {
@@ -640,8 +732,8 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
         if (R[s].nrings != nr)
             die("cannot read '%s': %d ring%s, but '%s' has %d (rings are matched by order)", R[s].name,
                 R[s].nrings, R[s].nrings == 1 ? "" : "s", R[0].name, nr);
-    struct columns C, I = {0};
-    if (columns_read(o->corr, N, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    struct columns C = {0}, I = {0};
+    if (o->corr && columns_read(o->corr, N, -1, NULL, &C) < 0) die("%s", cm_errmsg());
     int *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
     for (size_t k = 0; k < (size_t)C.rows * N; k++) {
         double x = C.x[k];
@@ -664,8 +756,19 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
          nr, nr == 1 ? "" : "s", nr - nholes, nr - nholes == 1 ? "" : "s", nholes, nholes == 1 ? "" : "s",
          nflip, nflip == 1 ? "" : "s");
     if (o->interior && columns_read(o->interior, 2 * N, -1, NULL, &I) < 0) die("%s", cm_errmsg());
+    int nrows, nmatched;
+    int *rows = match_rings(o, N, R, parent, flipped, corr, C.rows, &nrows, &nmatched);
+    if (o->points_out) {   /* the rows used, file order */
+        FILE *f = out_open(o->points_out);
+        fprintf(f, "# compat-tri --points-out: %d correspondence points (rows) of %d shapes (columns),\n"
+                   "# 0-based vertex indices in each file's order (all rings counted); usable as compat-tri -c\n",
+                nrows, N);
+        for (int r = 0; r < nrows; r++)
+            for (int s = 0; s < N; s++) fprintf(f, "%d%c", rows[(size_t)r * N + s], s + 1 < N ? ' ' : '\n');
+        out_close(f);
+    }
     double st[4];
-    if (compat_multi(N, R, parent, flipped, corr, C.rows, I.x, I.rows, o->err, cp, st) < 0) {
+    if (compat_multi(N, R, parent, flipped, rows, nrows, I.x, I.rows, o->err, cp, st) < 0) {
         const char *m = cm_errmsg();
         /* point rows come after every correspondence check */
         die_row(o->interior && (strstr(m, "point") || strstr(m, "same as")) ? o->interior : o->corr);
@@ -680,7 +783,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     cp->split_mode = o->split;
     cp->threads = o->threads;
     if (compat_multi_triangulate(cp) < 0) die("%s", cm_errmsg());
-    free(parent); free(flipped); free(corr);
+    free(parent); free(flipped); free(corr); free(rows);
     columns_free(&C);
     if (o->interior) columns_free(&I);
 }
@@ -1228,7 +1331,6 @@ int main(int argc, char **argv)
         if (R[s].nrings != 1) multi = 1;
     }
     struct compat cp;
-    if (multi && !o.corr) die("several rings or interior points need -c CORR (the matching handles one outer ring)");
     int *flipped = calloc(N, sizeof *flipped);
     if (!multi)   /* counter-clockwise once, for every build */
         for (int s = 0; s < N; s++)
