@@ -651,16 +651,15 @@ static int ring_ccw(const struct rings *R, const unsigned char *flipped, int nr,
  * rows (malloc'd, *nout of them, file-order indices), ring by ring: a
  * matched ring's rows in its cyclic order, the others' as given; where a
  * given row is not on one ring in every shape, the given rows as they
- * are (compat_multi names the row).  *nmatched: the rings matched. */
+ * are (compat_multi names the row). */
 static int *match_rings(const struct options *o, int N, const struct rings *R, const int *parent,
-                        const unsigned char *flipped, const int *corr, int ncorr, int *nout, int *nmatched)
+                        const unsigned char *flipped, const int *corr, int ncorr, int *nout)
 {
     int nr = R[0].nrings, no = 0, cap = ncorr + 16;
     int *out = malloc((size_t)cap * N * sizeof *out), *ring = malloc(((size_t)ncorr + 1) * sizeof *ring);
     double **P = calloc(N, sizeof *P);
     int *n = malloc(N * sizeof *n), *given = malloc(((size_t)ncorr + 1) * N * sizeof *given);
     if (!out || !ring || !P || !n || !given) die("out of memory");
-    *nmatched = 0;
     int ok = 1;   /* every row on one ring, the same in every shape */
     for (int r = 0; r < ncorr && ok; r++) {
         ring[r] = -1;
@@ -707,7 +706,6 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
         if (no + add > cap) { cap = 2 * (no + add); out = realloc(out, (size_t)cap * N * sizeof *out); }
         if (!out) die("out of memory");
         if (mc) {   /* the matched rows (the given ones among them), in cyclic order */
-            (*nmatched)++;
             info(1, "ring %d (%s): %d correspondence points placed by the boundary matching (%d given)", k + 1,
                  hole ? "a hole" : "a piece", nmc - nk, nk);
             for (int a = 0; a < nmc; a++)
@@ -756,8 +754,8 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
          nr, nr == 1 ? "" : "s", nr - nholes, nr - nholes == 1 ? "" : "s", nholes, nholes == 1 ? "" : "s",
          nflip, nflip == 1 ? "" : "s");
     if (o->interior && columns_read(o->interior, 2 * N, -1, NULL, &I) < 0) die("%s", cm_errmsg());
-    int nrows, nmatched;
-    int *rows = match_rings(o, N, R, parent, flipped, corr, C.rows, &nrows, &nmatched);
+    int nrows;
+    int *rows = match_rings(o, N, R, parent, flipped, corr, C.rows, &nrows);
     if (o->points_out) {   /* the rows used, file order */
         FILE *f = out_open(o->points_out);
         fprintf(f, "# compat-tri --points-out: %d correspondence points (rows) of %d shapes (columns),\n"
