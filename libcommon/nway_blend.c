@@ -148,7 +148,12 @@ struct nway_blend *nway_blend_new(double *const *X, int N, int nv, const int *F,
     for (int f = 0; f < nf; f++)
         for (int j = 0; j < 3; j++)
             if (F[3 * f + j] < first[comp[f]]) first[comp[f]] = F[3 * f + j];
-    unsigned char *fixed = calloc(nv, 1);
+    unsigned char *fixed = calloc(nv + 1, 1);
+    if (!fixed) {
+        free(comp); free(first); topology_free(&t); triplets_free(&T); nway_blend_free(B);
+        cm_seterr("out of memory");
+        return NULL;
+    }
     for (int k = 0; k < ncomp; k++) fixed[first[k]] = 1;
     for (int v = 0; v < nv; v++)
         if (t.VFs[v + 1] == t.VFs[v]) fixed[v] = 1;

@@ -86,7 +86,8 @@ int rings_orient(struct rings *r);
 /* Smallest corner angle of ring k in radians, (0, 2 pi), measured on the
  * left of its direction (the inside of a counter-clockwise ring, the
  * outside of a clockwise one): no triangle of a mesh of the inside whose
- * outline keeps that corner has a larger angle there. */
+ * outline keeps that corner has a larger angle there.  A zero-length edge
+ * (which rings_read refuses) counts as a corner of 0. */
 double rings_sharpest_left(const struct rings *r, int k);
 
 /* Reverse the point order (and the source lines) of ring k. */

@@ -696,8 +696,9 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
             for (int s = 0; s < N; s++)
                 if (!(P[s] = compat_ring_ccw(&R[s], k, hole))) die("out of memory");
             if (bmatch_corr(N, P, n, given, nk, NULL, 0, o->match_points, &prm, &mc, &nmc, NULL) < 0) {
-                info(1, "ring %d: boundary matching failed (%s): %s", k + 1, cm_errmsg(),
-                     nk ? "its given rows alone" : "from its first vertex");
+                /* said without -v too: that ring's correspondence is the coarse one */
+                warn("ring %d: boundary matching failed (%s): %s", k + 1, cm_errmsg(),
+                     nk ? "its given rows alone are used" : "matched from its first vertex by arc length");
                 mc = NULL;
             }
             for (int s = 0; s < N; s++) { free(P[s]); P[s] = NULL; }
