@@ -50,3 +50,37 @@ void similarity_apply(const double R[9], const double t[3], double s, const doub
             Y[3 * i + r] = s * (R[3 * r] * x[0] + R[3 * r + 1] * x[1] + R[3 * r + 2] * x[2]) + t[r];
     }
 }
+
+double procrustes2(const double *A, const double *B, const double *w, int n, double *a, double *s, double t[2])
+{
+    double W = 0, ca[2] = {0, 0}, cb[2] = {0, 0};
+    for (int i = 0; i < n; i++) {
+        double wi = w ? w[i] : 1;
+        W += wi;
+        for (int d = 0; d < 2; d++) { ca[d] += wi * A[2 * i + d]; cb[d] += wi * B[2 * i + d]; }
+    }
+    if (!(W > 0)) return cm_seterr("procrustes2: no points with positive weight");
+    for (int d = 0; d < 2; d++) { ca[d] /= W; cb[d] /= W; }
+    /* with u = a - ca, v = b - cb:  sum w u.v = k cos a,  sum w u x v = k sin a */
+    double dot = 0, cross = 0, va = 0;
+    for (int i = 0; i < n; i++) {
+        double wi = w ? w[i] : 1;
+        double ux = A[2 * i] - ca[0], uy = A[2 * i + 1] - ca[1], vx = B[2 * i] - cb[0], vy = B[2 * i + 1] - cb[1];
+        dot += wi * (ux * vx + uy * vy);
+        cross += wi * (ux * vy - uy * vx);
+        va += wi * (ux * ux + uy * uy);
+    }
+    if (!(va > 0)) return cm_seterr("procrustes2: the points coincide");
+    double an = atan2(cross, dot), sc = hypot(dot, cross) / va, c = cos(an), sn = sin(an);
+    t[0] = cb[0] - sc * (c * ca[0] - sn * ca[1]);
+    t[1] = cb[1] - sc * (sn * ca[0] + c * ca[1]);
+    double res = 0;
+    for (int i = 0; i < n; i++) {
+        double x = sc * (c * A[2 * i] - sn * A[2 * i + 1]) + t[0] - B[2 * i];
+        double y = sc * (sn * A[2 * i] + c * A[2 * i + 1]) + t[1] - B[2 * i + 1];
+        res += (w ? w[i] : 1) * (x * x + y * y);
+    }
+    *a = an;
+    *s = sc;
+    return sqrt(res / W);
+}

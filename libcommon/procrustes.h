@@ -18,6 +18,14 @@ extern "C" {
 double procrustes(const double *A, const double *B, const double *w, int n, int scale,
                   double R[9], double t[3], double *s);
 
+/* The plane's version: the rotation angle a (radians, counter-clockwise),
+ * scale s and translation t (2) of the similarity x -> s R(a) x + t that
+ * best maps A onto B (n by 2 each) with weights w (n; NULL = all 1).  No
+ * reflection is ever chosen.  Returns the weighted RMS residual, or -1
+ * (cm_errmsg set) when the weights do not sum to a positive number or the
+ * weighted points of A coincide. */
+double procrustes2(const double *A, const double *B, const double *w, int n, double *a, double *s, double t[2]);
+
 /* Apply x -> s R x + t to n points (in place allowed). */
 void similarity_apply(const double R[9], const double t[3], double s, const double *X,
                       int n, double *Y);

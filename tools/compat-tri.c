@@ -8,6 +8,7 @@
 #include "boundary_match.h"
 #include "modulus_match.h"
 #include "modulus_cert.h"
+#include "procrustes.h"
 #include "columns.h"
 #include "mesh.h"
 #include "rings.h"
@@ -643,23 +644,150 @@ static int ring_ccw(const struct rings *R, const unsigned char *flipped, int nr,
     return hole ? n - 1 - v : v;
 }
 
+/* the point of file-order index g (all rings counted) of shape s, R oriented by compat_nest */
+static const double *ring_point(const struct rings *R, const unsigned char *flipped, int nr, int s, int g)
+{
+    int k = 0;
+    while (k + 1 < nr && g >= R[s].start[k + 1]) k++;
+    int i = g - R[s].start[k], n = rings_count(&R[s], k);
+    return R[s].P + 2 * ((size_t)R[s].start[k] + (flipped[(size_t)s * nr + k] ? n - 1 - i : i));
+}
+
+/* A ring matched without a given row starts where its shape says; for a
+ * round eye or a circular head every start costs about the same, and the
+ * start search's choice turns the ring by any angle between the poses (a
+ * face of five poses with two round eyes: turns of 25-125 degrees, and
+ * then no two straight cuts to the outline were inside every pose, so
+ * the triangulation failed).  Such a ring is turned as its surroundings.
+ * In each shape s the similarity that maps the other rings' rows from
+ * shape 0 to shape s (procrustes2, each row weighted by 1 / (d^2 + r^2),
+ * d its distance from the ring's centre and r the ring's mean radius in
+ * shape 0, so the nearest rows -- a hole's own outline -- count most),
+ * applied to the ring's first matched vertex about the ring's centre,
+ * places its start; the vertex of shape s's ring nearest to that is the
+ * placed start.  With c the matching's cost (bmatch_map with that one
+ * pair) from the start search's start and c' from the placed one, the
+ * placed start is used where
+ *   - it is within TURN_STEP degrees (about the ring's centre) of the
+ *     start search's and c' <= (1 + TURN_NEAR) c, or
+ *   - it is farther and c' <= (1 + TURN_TOL) c and some start TURN_STEP,
+ *     2 TURN_STEP, ... degrees away from the start search's costs at
+ *     most (1 + TURN_TOL) c too: the shape does not tell its turn (a
+ *     circle, an ellipse's two ends, a traced circle's pixel noise).
+ * A ring whose shape does tell (an arm swung differently from the body)
+ * keeps its start.  The ring is then matched again from the starts.
+ * P, n: the ring's counter-clockwise copies; mc, nmc: its rows (ccw
+ * indices; replaced); ctx, nctx: the other rings' rows, file order.
+ * Returns the number of shapes whose start changed (0: mc unchanged), -1
+ * out of memory. */
+#ifndef TURN_TOL
+#define TURN_TOL 0.5
+#endif
+#define TURN_STEP 30   /* degrees */
+#define TURN_NEAR 0.02
+
+/* the vertex of P (n by 2) nearest to (x, y) */
+static int ring_nearest(const double *P, int n, double x, double y)
+{
+    int near = 0;
+    double dn = INFINITY;
+    for (int j = 0; j < n; j++) {
+        double d = hypot(P[2 * j] - x, P[2 * j + 1] - y);
+        if (d < dn) { dn = d; near = j; }
+    }
+    return near;
+}
+static int turn_ring(const struct options *o, int N, const struct rings *R, const unsigned char *flipped, double **P,
+                     const int *n, const int *ctx, int nctx, const struct bmatch_params *prm, int **mc, int *nmc)
+{
+    int nr = R[0].nrings, changed = 0;
+    double *A = malloc(((size_t)nctx + 1) * 4 * sizeof *A), *B = A + 2 * ((size_t)nctx + 1);
+    double *w = malloc(((size_t)nctx + 1) * sizeof *w), *tB = malloc((size_t)n[0] * sizeof *tB);
+    int *start = malloc(N * sizeof *start);
+    if (!A || !w || !tB || !start) { free(A); free(w); free(tB); free(start); return -1; }
+    double c0[2] = {0, 0}, r0 = 0;
+    for (int j = 0; j < n[0]; j++) { c0[0] += P[0][2 * j] / n[0]; c0[1] += P[0][2 * j + 1] / n[0]; }
+    for (int j = 0; j < n[0]; j++) r0 += hypot(P[0][2 * j] - c0[0], P[0][2 * j + 1] - c0[1]) / n[0];
+    for (int r = 0; r < nctx; r++) {
+        const double *p = ring_point(R, flipped, nr, 0, ctx[(size_t)r * N]);
+        double d2 = (p[0] - c0[0]) * (p[0] - c0[0]) + (p[1] - c0[1]) * (p[1] - c0[1]);
+        A[2 * r] = p[0]; A[2 * r + 1] = p[1];
+        w[r] = 1 / (d2 + r0 * r0);
+    }
+    int v0 = (*mc)[0];
+    const double *p0 = P[0] + 2 * v0;
+    start[0] = v0;
+    for (int s = 1; s < N; s++) {
+        start[s] = (*mc)[s];
+        for (int r = 0; r < nctx; r++) {
+            const double *p = ring_point(R, flipped, nr, s, ctx[(size_t)r * N + s]);
+            B[2 * r] = p[0]; B[2 * r + 1] = p[1];
+        }
+        double an, sc, t[2];
+        if (procrustes2(A, B, w, nctx, &an, &sc, t) < 0) continue;
+        double cs[2] = {0, 0};
+        for (int j = 0; j < n[s]; j++) { cs[0] += P[s][2 * j] / n[s]; cs[1] += P[s][2 * j + 1] / n[s]; }
+        double ux = p0[0] - c0[0], uy = p0[1] - c0[1];
+        double q[2] = {cs[0] + sc * (cos(an) * ux - sin(an) * uy), cs[1] + sc * (sin(an) * ux + cos(an) * uy)};
+        int placed = ring_nearest(P[s], n[s], q[0], q[1]);
+        if (placed == start[s]) continue;
+        int pair[2] = {v0, start[s]};
+        double cf, cp;
+        if (bmatch_map(P[0], n[0], P[s], n[s], pair, 1, prm, tB, &cf) < 0) continue;
+        pair[1] = placed;
+        if (bmatch_map(P[0], n[0], P[s], n[s], pair, 1, prm, tB, &cp) < 0 || !(cp <= cf * (1 + TURN_TOL))) continue;
+        /* does the shape tell?  near the matching's start (within
+         * TURN_STEP) only if the placed start costs more than TURN_NEAR
+         * above it; farther, unless a start TURN_STEP or more away from the
+         * matching's costs as little as the placed one may */
+        const double *pf = P[s] + 2 * start[s], *pp = P[s] + 2 * placed;
+        double af = atan2(pf[1] - cs[1], pf[0] - cs[0]), rf = hypot(pf[0] - cs[0], pf[1] - cs[1]);
+        if (fabs(remainder(atan2(pp[1] - cs[1], pp[0] - cs[0]) - af, 2 * M_PI)) < TURN_STEP * M_PI / 180) {
+            if (cp <= cf * (1 + TURN_NEAR)) { start[s] = placed; changed++; }
+            continue;
+        }
+        int ambiguous = 0;
+        for (int m = 1; m * TURN_STEP < 360 - 0.5 * TURN_STEP && !ambiguous; m++) {
+            double a = af + m * TURN_STEP * M_PI / 180, cm;
+            pair[1] = ring_nearest(P[s], n[s], cs[0] + rf * cos(a), cs[1] + rf * sin(a));
+            ambiguous = pair[1] != start[s] && bmatch_map(P[0], n[0], P[s], n[s], pair, 1, prm, tB, &cm) == 0 &&
+                        cm <= cf * (1 + TURN_TOL);
+        }
+        if (ambiguous) { start[s] = placed; changed++; }
+    }
+    int rc = changed;
+    if (changed) {
+        int *m2 = NULL, n2 = 0;
+        if (bmatch_corr(N, P, n, start, 1, NULL, 0, o->match_points, prm, &m2, &n2, NULL) == 0) {
+            free(*mc);
+            *mc = m2;
+            *nmc = n2;
+        } else rc = 0;   /* the start search's rows stay */
+    }
+    free(A); free(w); free(tB); free(start);
+    return rc;
+}
+
 /* Several rings: every ring with fewer than 3 rows (0, 1 or 2: kept among
  * them) gets the boundary matching of one outline (bmatch_corr, the same
- * parameters and --match-points), on its own; a ring with 3 or more rows,
- * or every ring with -m off, keeps its rows (a ring without any then
- * starts at its first vertex).  R oriented by compat_nest.  Returns the
- * rows (malloc'd, *nout of them, file-order indices), ring by ring: a
- * matched ring's rows in its cyclic order, the others' as given; where a
- * given row is not on one ring in every shape, the given rows as they
- * are (compat_multi names the row). */
+ * parameters and --match-points), on its own; a ring matched without any
+ * row then starts as its surroundings turn where its shape cannot tell
+ * (turn_ring); a ring with 3 or more rows, or every ring with -m off,
+ * keeps its rows (a ring without any then starts at its first vertex).
+ * R oriented by compat_nest.  Returns the rows (malloc'd, *nout of them,
+ * file-order indices), ring by ring: a matched ring's rows in its cyclic
+ * order, the others' as given; where a given row is not on one ring in
+ * every shape, the given rows as they are (compat_multi names the row). */
 static int *match_rings(const struct options *o, int N, const struct rings *R, const int *parent,
                         const unsigned char *flipped, const int *corr, int ncorr, int *nout)
 {
-    int nr = R[0].nrings, no = 0, cap = ncorr + 16;
-    int *out = malloc((size_t)cap * N * sizeof *out), *ring = malloc(((size_t)ncorr + 1) * sizeof *ring);
+    int nr = R[0].nrings;
+    int *out = malloc(((size_t)ncorr + 1) * N * sizeof *out), *ring = malloc(((size_t)ncorr + 1) * sizeof *ring);
     double **P = calloc(N, sizeof *P);
     int *n = malloc(N * sizeof *n), *given = malloc(((size_t)ncorr + 1) * N * sizeof *given);
-    if (!out || !ring || !P || !n || !given) die("out of memory");
+    int **rows = calloc(nr, sizeof *rows), *nrows = calloc(nr, sizeof *nrows);   /* each ring's, file order */
+    int **free_mc = calloc(nr, sizeof *free_mc), *free_n = calloc(nr, sizeof *free_n);   /* matched without rows: ccw */
+    if (!out || !ring || !P || !n || !given || !rows || !nrows || !free_mc || !free_n) die("out of memory");
     int ok = 1;   /* every row on one ring, the same in every shape */
     for (int r = 0; r < ncorr && ok; r++) {
         ring[r] = -1;
@@ -671,7 +799,7 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
     }
     if (!ok || o->match == -2) {
         memcpy(out, corr, (size_t)ncorr * N * sizeof *out);
-        free(ring); free(P); free(n); free(given);
+        free(ring); free(P); free(n); free(given); free(rows); free(nrows); free(free_mc); free(free_n);
         *nout = ncorr;
         return out;
     }
@@ -703,22 +831,66 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
             }
             for (int s = 0; s < N; s++) { free(P[s]); P[s] = NULL; }
         }
-        int add = mc ? nmc : nk;
-        if (no + add > cap) { cap = 2 * (no + add); out = realloc(out, (size_t)cap * N * sizeof *out); }
-        if (!out) die("out of memory");
-        if (mc) {   /* the matched rows (the given ones among them), in cyclic order */
+        if (mc) {
             info(1, "ring %d (%s): %d correspondence points placed by the boundary matching (%d given)", k + 1,
                  hole ? "a hole" : "a piece", nmc - nk, nk);
+            if (!nk) { free_mc[k] = mc; free_n[k] = nmc; continue; }   /* its rows after turn_ring */
+        }
+        nrows[k] = mc ? nmc : nk;
+        if (!(rows[k] = malloc(((size_t)nrows[k] + 1) * N * sizeof *rows[k]))) die("out of memory");
+        if (mc) {   /* the matched rows (the given ones among them), in cyclic order */
             for (int a = 0; a < nmc; a++)
                 for (int s = 0; s < N; s++)
-                    out[(size_t)(no + a) * N + s] = R[s].start[k] + ring_ccw(R, flipped, nr, s, k, hole, mc[(size_t)a * N + s]);
+                    rows[k][(size_t)a * N + s] = R[s].start[k] + ring_ccw(R, flipped, nr, s, k, hole, mc[(size_t)a * N + s]);
             free(mc);
         } else
             for (int r = 0, g = 0; r < ncorr; r++)
-                if (ring[r] == k) memcpy(out + (size_t)(no + g++) * N, corr + (size_t)r * N, N * sizeof *out);
-        no += add;
+                if (ring[r] == k) memcpy(rows[k] + (size_t)g++ * N, corr + (size_t)r * N, N * sizeof *out);
     }
-    free(ring); free(P); free(n); free(given);
+    /* the rings matched without a row: their start as the others' rows turn (turn_ring) */
+    for (int k = 0; k < nr; k++) {
+        if (!free_mc[k]) continue;
+        int hole = compat_is_hole(parent, k), nctx = 0, cap = 0;
+        for (int j = 0; j < nr; j++) cap += j != k ? (rows[j] ? nrows[j] : free_n[j]) : 0;
+        int *ctx = malloc(((size_t)cap + 1) * N * sizeof *ctx);
+        if (!ctx) die("out of memory");
+        for (int j = 0; j < nr; j++)
+            if (j != k && rows[j]) {
+                memcpy(ctx + (size_t)nctx * N, rows[j], (size_t)nrows[j] * N * sizeof *ctx);
+                nctx += nrows[j];
+            }
+        int *mc = free_mc[k], nmc = free_n[k];
+        if (nctx >= 2) {
+            for (int s = 0; s < N; s++) {
+                n[s] = rings_count(&R[s], k);
+                if (!(P[s] = compat_ring_ccw(&R[s], k, hole))) die("out of memory");
+            }
+            int t = turn_ring(o, N, R, flipped, P, n, ctx, nctx, &prm, &mc, &nmc);
+            if (t < 0) die("out of memory");
+            if (t)
+                info(1, "ring %d (%s): its shape does not tell how it turns: started as its surroundings turn in %d "
+                        "shape%s, %d correspondence points", k + 1, hole ? "a hole" : "a piece", t, t == 1 ? "" : "s", nmc);
+            for (int s = 0; s < N; s++) { free(P[s]); P[s] = NULL; }
+        }
+        free(ctx);
+        nrows[k] = nmc;
+        if (!(rows[k] = malloc(((size_t)nmc + 1) * N * sizeof *rows[k]))) die("out of memory");
+        for (int a = 0; a < nmc; a++)
+            for (int s = 0; s < N; s++)
+                rows[k][(size_t)a * N + s] = R[s].start[k] + ring_ccw(R, flipped, nr, s, k, hole, mc[(size_t)a * N + s]);
+        free(mc);
+        free_mc[k] = NULL;
+    }
+    int no = 0;
+    for (int k = 0; k < nr; k++) no += nrows[k];
+    if (!(out = realloc(out, ((size_t)no + 1) * N * sizeof *out))) die("out of memory");
+    no = 0;
+    for (int k = 0; k < nr; k++) {
+        if (nrows[k]) memcpy(out + (size_t)no * N, rows[k], (size_t)nrows[k] * N * sizeof *out);
+        no += nrows[k];
+        free(rows[k]);
+    }
+    free(ring); free(P); free(n); free(given); free(rows); free(nrows); free(free_mc); free(free_n);
     *nout = no;
     return out;
 }
