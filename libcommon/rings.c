@@ -380,3 +380,45 @@ int rings_check_simple(const struct rings *r)
                          r->name, r->line[e2], r->line[e1], r->line[e2]);
     return 0;
 }
+
+static int cmp_xy(const void *x, const void *y)
+{
+    const double *a = x, *b = y;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+double polygon_roundness(const double *P, int n)
+{
+    double *S = malloc((size_t)n * 2 * sizeof *S), *H = malloc(((size_t)n + 1) * 2 * sizeof *H);
+    if (!S || !H) { free(S); free(H); return -1; }
+    memcpy(S, P, (size_t)n * 2 * sizeof *S);
+    qsort(S, n, 2 * sizeof *S, cmp_xy);
+    /* Andrew's monotone chain: lower hull, then upper, counter-clockwise */
+    int h = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        int base = h;
+        for (int k = 0; k < n; k++) {
+            const double *q = S + 2 * (pass ? n - 1 - k : k);
+            while (h >= base + 2 && orient2_sign(H + 2 * (h - 2), H + 2 * (h - 1), q) <= 0) h--;
+            H[2 * h] = q[0]; H[2 * h + 1] = q[1]; h++;
+        }
+        h--;   /* the last point starts the other chain */
+    }
+    double ah = 0, lh = 0, a = 0;
+    for (int k = 0; k < h; k++) {
+        const double *u = H + 2 * k, *v = H + 2 * ((k + 1) % h);
+        ah += u[0] * v[1] - u[1] * v[0];
+        lh += hypot(v[0] - u[0], v[1] - u[1]);
+    }
+    for (int k = 0; k < n; k++) {
+        const double *u = P + 2 * k, *v = P + 2 * ((k + 1) % n);
+        a += u[0] * v[1] - u[1] * v[0];
+    }
+    free(S); free(H);
+    ah *= 0.5;
+    a = 0.5 * fabs(a);
+    if (!(ah > 0) || !(lh > 0)) return 0;
+    double r = 4 * M_PI * ah / (lh * lh) * (a / ah);
+    return r > 1 ? 1 : r;
+}

@@ -90,6 +90,16 @@ int rings_orient(struct rings *r);
  * (which rings_read refuses) counts as a corner of 0. */
 double rings_sharpest_left(const struct rings *r, int k);
 
+/* How round a polygon is: the isoperimetric quotient 4 pi A / L^2 of its
+ * convex hull (1 for a circle, 0.84 for a 2:1 ellipse, 0.785 for a
+ * square; a traced outline's pixel staircase hardly changes its hull)
+ * times its solidity, area over the hull's area (a C has a round hull but
+ * little solidity).  compat-tri turns a ring whose roundness is high as its
+ * surroundings: its shape cannot show how it turns.  P: n by 2, either
+ * orientation, n >= 3; hull by exact orientation tests.  Returns a value
+ * in [0, 1] (0: no area), -1 on out of memory. */
+double polygon_roundness(const double *P, int n);
+
 /* Reverse the point order (and the source lines) of ring k. */
 void rings_reverse(struct rings *r, int k);
 

@@ -665,19 +665,24 @@ static const double *ring_point(const struct rings *R, const unsigned char *flip
  * shape 0, so the nearest rows -- a hole's own outline -- count most),
  * applied to the ring's first matched vertex about the ring's centre,
  * places its start; the vertex of shape s's ring nearest to that is the
- * placed start.  With c the matching's cost (bmatch_map with that one
- * pair) from the start search's start and c' from the placed one, the
- * placed start is used where
- *   - it is within TURN_STEP degrees (about the ring's centre) of the
- *     start search's and c' <= (1 + TURN_NEAR) c, or
- *   - it is farther and c' <= (1 + TURN_TOL) c and some start TURN_STEP,
- *     2 TURN_STEP, ... degrees away from the start search's costs at
- *     most (1 + TURN_TOL) c too: the shape does not tell its turn (a
- *     circle, an ellipse's two ends, a traced circle's pixel noise).
- * A ring whose shape does tell (an arm swung differently from the body)
+ * placed start.  It is used
+ *   - always for a round hole (round: polygon_roundness at least
+ *     TURN_ROUND in every shape; bent copies of Font Awesome's round eyes
+ *     became ovals whose matching cost was 1.6-3.4 times lower at a wrong
+ *     start than at the true one, and a hole turns with its piece), and
+ *     otherwise, with c the matching's cost (bmatch_map with that one
+ *     pair) from the start search's start and c' from the placed one,
+ *   - where it is within TURN_STEP degrees (about the ring's centre) of
+ *     the start search's and c' <= (1 + TURN_NEAR) c, or
+ *   - where it is farther and c' <= (1 + TURN_TOL) c and some start
+ *     TURN_STEP, 2 TURN_STEP, ... degrees away from the start search's
+ *     costs at most (1 + TURN_TOL) c too: the shape does not tell its
+ *     turn (a circular head, an oval's two ends).
+ * A piece whose shape does tell (an arm swung differently from the body)
  * keeps its start.  The ring is then matched again from the starts.
- * P, n: the ring's counter-clockwise copies; mc, nmc: its rows (ccw
- * indices; replaced); ctx, nctx: the other rings' rows, file order.
+ * P, n: the ring's counter-clockwise copies; round: see above; mc, nmc:
+ * its rows (ccw indices; replaced); ctx, nctx: the other rings' rows,
+ * file order.
  * Returns the number of shapes whose start changed (0: mc unchanged), -1
  * out of memory. */
 #ifndef TURN_TOL
@@ -685,6 +690,7 @@ static const double *ring_point(const struct rings *R, const unsigned char *flip
 #endif
 #define TURN_STEP 30   /* degrees */
 #define TURN_NEAR 0.02
+#define TURN_ROUND 0.75   /* polygon_roundness: a traced circle 0.95-0.97, a 2:1 oval 0.79, a square 0.785 */
 
 /* the vertex of P (n by 2) nearest to (x, y) */
 static int ring_nearest(const double *P, int n, double x, double y)
@@ -698,7 +704,8 @@ static int ring_nearest(const double *P, int n, double x, double y)
     return near;
 }
 static int turn_ring(const struct options *o, int N, const struct rings *R, const unsigned char *flipped, double **P,
-                     const int *n, const int *ctx, int nctx, const struct bmatch_params *prm, int **mc, int *nmc)
+                     const int *n, int round, const int *ctx, int nctx, const struct bmatch_params *prm, int **mc,
+                     int *nmc)
 {
     int nr = R[0].nrings, changed = 0;
     double *A = malloc(((size_t)nctx + 1) * 4 * sizeof *A), *B = A + 2 * ((size_t)nctx + 1);
@@ -731,11 +738,13 @@ static int turn_ring(const struct options *o, int N, const struct rings *R, cons
         double q[2] = {cs[0] + sc * (cos(an) * ux - sin(an) * uy), cs[1] + sc * (sin(an) * ux + cos(an) * uy)};
         int placed = ring_nearest(P[s], n[s], q[0], q[1]);
         if (placed == start[s]) continue;
+        if (round) { start[s] = placed; changed++; continue; }
         int pair[2] = {v0, start[s]};
         double cf, cp;
         if (bmatch_map(P[0], n[0], P[s], n[s], pair, 1, prm, tB, &cf) < 0) continue;
         pair[1] = placed;
-        if (bmatch_map(P[0], n[0], P[s], n[s], pair, 1, prm, tB, &cp) < 0 || !(cp <= cf * (1 + TURN_TOL))) continue;
+        if (bmatch_map(P[0], n[0], P[s], n[s], pair, 1, prm, tB, &cp) < 0) continue;
+        if (!(cp <= cf * (1 + TURN_TOL))) continue;
         /* does the shape tell?  near the matching's start (within
          * TURN_STEP) only if the placed start costs more than TURN_NEAR
          * above it; farther, unless a start TURN_STEP or more away from the
@@ -847,11 +856,33 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
             for (int r = 0, g = 0; r < ncorr; r++)
                 if (ring[r] == k) memcpy(rows[k] + (size_t)g++ * N, corr + (size_t)r * N, N * sizeof *out);
     }
-    /* the rings matched without a row: their start as the others' rows turn (turn_ring) */
+    /* the rings matched without a row: their start as the others' rows
+     * turn (turn_ring); outer rings before the rings inside them (a hole
+     * turns as its piece, not the other way round), and among the same
+     * nesting depth the least round first: the first one without a row
+     * keeps its own start */
+    int nfree = 0, *ord = malloc(((size_t)nr + 1) * sizeof *ord);
+    double *rnd = malloc(((size_t)nr + 1) * sizeof *rnd), *key = malloc(((size_t)nr + 1) * sizeof *key);
+    if (!ord || !rnd || !key) die("out of memory");
     for (int k = 0; k < nr; k++) {
         if (!free_mc[k]) continue;
+        rnd[k] = 1;   /* the smallest over the shapes */
+        for (int s = 0; s < N; s++) {
+            double x = polygon_roundness(rings_ring(&R[s], k), rings_count(&R[s], k));
+            if (x < 0) die("out of memory");
+            rnd[k] = fmin(rnd[k], x);
+        }
+        int depth = 0;
+        for (int j = parent[k]; j >= 0; j = parent[j]) depth++;
+        key[k] = depth + rnd[k] / 2;   /* roundness is in [0, 1] */
+        int a = nfree++;
+        for (; a > 0 && key[ord[a - 1]] > key[k]; a--) ord[a] = ord[a - 1];
+        ord[a] = k;
+    }
+    for (int f = 0; f < nfree; f++) {
+        int k = ord[f];
         int hole = compat_is_hole(parent, k), nctx = 0, cap = 0;
-        for (int j = 0; j < nr; j++) cap += j != k ? (rows[j] ? nrows[j] : free_n[j]) : 0;
+        for (int j = 0; j < nr; j++) cap += j != k && rows[j] ? nrows[j] : 0;
         int *ctx = malloc(((size_t)cap + 1) * N * sizeof *ctx);
         if (!ctx) die("out of memory");
         for (int j = 0; j < nr; j++)
@@ -859,17 +890,18 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
                 memcpy(ctx + (size_t)nctx * N, rows[j], (size_t)nrows[j] * N * sizeof *ctx);
                 nctx += nrows[j];
             }
-        int *mc = free_mc[k], nmc = free_n[k];
+        int *mc = free_mc[k], nmc = free_n[k], round = hole && rnd[k] >= TURN_ROUND;
         if (nctx >= 2) {
             for (int s = 0; s < N; s++) {
                 n[s] = rings_count(&R[s], k);
                 if (!(P[s] = compat_ring_ccw(&R[s], k, hole))) die("out of memory");
             }
-            int t = turn_ring(o, N, R, flipped, P, n, ctx, nctx, &prm, &mc, &nmc);
+            int t = turn_ring(o, N, R, flipped, P, n, round, ctx, nctx, &prm, &mc, &nmc);
             if (t < 0) die("out of memory");
             if (t)
-                info(1, "ring %d (%s): its shape does not tell how it turns: started as its surroundings turn in %d "
-                        "shape%s, %d correspondence points", k + 1, hole ? "a hole" : "a piece", t, t == 1 ? "" : "s", nmc);
+                info(1, "ring %d (%s): its shape does not tell how it turns (%s): started as its surroundings turn in "
+                        "%d shape%s, %d correspondence points", k + 1, hole ? "a hole" : "a piece",
+                     round ? "round" : "as cheap turned", t, t == 1 ? "" : "s", nmc);
             for (int s = 0; s < N; s++) { free(P[s]); P[s] = NULL; }
         }
         free(ctx);
@@ -881,6 +913,7 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
         free(mc);
         free_mc[k] = NULL;
     }
+    free(ord); free(rnd); free(key);
     int no = 0;
     for (int k = 0; k < nr; k++) no += nrows[k];
     if (!(out = realloc(out, ((size_t)no + 1) * N * sizeof *out))) die("out of memory");
