@@ -690,7 +690,7 @@ static const double *ring_point(const struct rings *R, const unsigned char *flip
 #endif
 #define TURN_STEP 30   /* degrees */
 #define TURN_NEAR 0.02
-#define TURN_ROUND 0.75   /* polygon_roundness: a traced circle 0.95-0.97, a 2:1 oval 0.79, a square 0.785 */
+#define TURN_ROUND 0.75   /* polygon_roundness: a noisy circle 0.96-0.99, an oval of 17 points 2.2:1 0.79, a square 0.785 */
 
 /* the vertex of P (n by 2) nearest to (x, y) */
 static int ring_nearest(const double *P, int n, double x, double y)

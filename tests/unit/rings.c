@@ -75,5 +75,32 @@ int main(void)
     start[1] = 3;
     for (int i = 0; i < 6; i++) P[i] = sliver[i];
     ok(!rings_collinear(&r, 0) && rings_degenerate(&r, 0), "a sliver of relative area 1e-15: degenerate but not a line");
+    /* polygon_roundness: 1 for a circle, 0.84 for a 2:1 ellipse, pi/4 for
+     * a square, low for a C (round hull, little solidity); either orientation */
+    {
+        double C[2 * 400], E[2 * 400], Q[8] = {0, 0, 1, 0, 1, 1, 0, 1}, K[2 * 400];
+        int nk = 0;
+        for (int i = 0; i < 400; i++) {
+            double t = 2 * M_PI * i / 400;
+            C[2 * i] = cos(t); C[2 * i + 1] = sin(t);
+            E[2 * i] = 2 * cos(-t); E[2 * i + 1] = sin(-t);   /* clockwise */
+        }
+        for (int i = 0; i < 200; i++) {   /* a C: the outer arc out, the inner arc back */
+            double t = 0.6 + (2 * M_PI - 1.2) * i / 199;
+            K[2 * nk] = cos(t); K[2 * nk + 1] = sin(t); nk++;
+        }
+        for (int i = 199; i >= 0; i--) {
+            double t = 0.6 + (2 * M_PI - 1.2) * i / 199;
+            K[2 * nk] = 0.6 * cos(t); K[2 * nk + 1] = 0.6 * sin(t); nk++;
+        }
+        double rc = polygon_roundness(C, 400), re = polygon_roundness(E, 400), rq = polygon_roundness(Q, 4);
+        double rk = polygon_roundness(K, nk);
+        ok(fabs(rc - 1) < 1e-4, "a circle of 400 points: roundness %.6f", rc);
+        ok(fabs(re - 0.8411) < 1e-3, "a 2:1 ellipse, clockwise: roundness %.4f (0.8411)", re);
+        ok(fabs(rq - M_PI / 4) < 1e-12, "a square: roundness %.6f (pi/4)", rq);
+        ok(rk < 0.6, "a C: roundness %.3f (round hull, little solidity)", rk);
+        double L[6] = {0, 0, 1, 1, 2, 2};
+        ok(polygon_roundness(L, 3) == 0, "three points on a line: 0");
+    }
     return tap_done();
 }
