@@ -1615,6 +1615,7 @@ struct compat_refiner {
     int remesh;               /* pa.mips > 0: collapses, stall rule, best round */
     int nvin;                 /* vertices below it are the input's */
     int stall, wf, ws, capped, nbad, nbest;
+    int nbad_prev;            /* nbad after the round before (INT_MAX: none) */
     int done;                 /* 1 once the splitting stopped (st->stop) */
     unsigned char *seed;
     unsigned long long *sig;
@@ -1719,7 +1720,7 @@ struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat
         r->st->collapses = k;
     }
     r->wbest = r->wcur = -1;
-    r->nbest = INT_MAX;
+    r->nbest = r->nbad_prev = INT_MAX;
     r->st->stop = COMPAT_REFINE_ROUNDS;
     r->done = pa->rounds <= 0;
     if (r->remesh && pa->split_share > 0 && pa->split_share < 1) {   /* for the second pass */
@@ -1883,6 +1884,12 @@ static int refine_round(struct compat_refiner *r)
     r->wcur = worst_ratio(w, goal, &r->wf, &r->ws, &r->nbad);
     if (r->wcur < 0) return -1;
     if (r->wcur >= 1) { st->stop = COMPAT_REFINE_GOAL; r->done = 1; return 0; }
+    /* the first pass of a refinement with a second (split_share): its bad
+     * triangles grow with its vertices (COMPAT_REFINE_GROWING) */
+    int growing = pa->grow && r->pass == 0 && r->remesh && r->start.nv && r->prounds >= COMPAT_REFINE_GROW_ROUND &&
+                  r->nbad > r->nbad_prev && 2 * (long)r->nbad >= c->nv;
+    r->nbad_prev = r->nbad;
+    if (growing) { st->stop = COMPAT_REFINE_GROWING; st->grown = r->prounds; r->done = 1; return 0; }
     /* progress: the worst angle rose, or fewer triangles are below
      * the goal (where the maps between the shapes are stretched,
      * splits only make more bad triangles) */
@@ -1982,7 +1989,7 @@ static int restart(struct compat_refiner *r, int pass)
     r->wpolished = 0;
     r->cycles = 0;
     r->wbest = r->wcur = -1;
-    r->nbest = INT_MAX;
+    r->nbest = r->nbad_prev = INT_MAX;
     r->stall = r->capped = 0;
     r->full = 1;
     r->prounds = 0;
@@ -2192,6 +2199,11 @@ out:
 void compat_refine_threads(struct compat_refiner *r, int threads)
 {
     r->pa.threads = threads;
+}
+
+void compat_refine_grow(struct compat_refiner *r, int on)
+{
+    r->pa.grow = on;
 }
 
 void compat_refine_abandon(struct compat_refiner *r)

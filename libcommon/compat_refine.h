@@ -100,6 +100,8 @@ struct compat_refine_stats {
     double gslide[2];  /* (pa->slide_global) the worst angle (radians) before
                           and after the global polish with outline slides;
                           0 0 if not run */
+    int grown;         /* the first pass was cut short after this many
+                          rounds (COMPAT_REFINE_GROWING; 0: it was not) */
     double stretch;    /* the largest ratio of singular values of the
                           affine maps between the shapes on it (1: similar
                           copies; a triangle whose map is stretched k times
@@ -117,8 +119,25 @@ enum {
                                best round (or 4 times as many rounds) */
     COMPAT_REFINE_MAXNV,    /* max_nv reached */
     COMPAT_REFINE_NOSPLIT,  /* no split kept every shape positive */
-    COMPAT_REFINE_ROUNDS    /* rounds used up */
+    COMPAT_REFINE_ROUNDS,   /* rounds used up */
+    COMPAT_REFINE_GROWING   /* (the first pass of a refinement with a
+                               second, split_share < 1) from its
+                               COMPAT_REFINE_GROW_ROUND-th round on, its
+                               triangles below the goal grew in a round
+                               and are at least half its vertices: where
+                               the maps are stretched, splitting every bad
+                               triangle only multiplies them (measured on
+                               the 57 stick-horse subsets of compat-tri(1):
+                               the 26 first passes that went on to the
+                               goal had at most 0.95 times the bad
+                               triangles of their third round in their
+                               fourth, and at most 14% of their vertices
+                               bad where the count rose later; of the 64
+                               that did not, 63 had more in their fourth,
+                               at least half their vertices), so the
+                               second pass starts at once */
 };
+#define COMPAT_REFINE_GROW_ROUND 4
 #define COMPAT_REFINE_STALL 3
 /* a stall (pa->mips > 0) first goes back to the best round and gets the
  * final polish; that mesh is kept unless the rounds that then follow from it
@@ -187,6 +206,10 @@ struct compat_refine_params {
                           once, each by its arc length, within the same
                           tolerance, no crossing), then flips, while the
                           worst angle rises by COMPAT_REFINE_GAIN */
+    int grow;          /* (split_share < 1) 1: the first pass ends as soon
+                          as its bad triangles grow with its vertices
+                          (COMPAT_REFINE_GROWING) and the second starts;
+                          0: it goes on to its own end (a stall, max_nv) */
 };
 /* rounds of the second pass that split every triangle below the goal
  * before split_share applies */
@@ -231,6 +254,7 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa,
  *                      coarsening, renumbering; frees the refiner.  0 or -1.
  * compat_refine_threads sets the threads of the later steps (pa->threads;
  *                      the result does not depend on it).
+ * compat_refine_grow   sets pa->grow for the later steps.
  * compat_refine_abandon frees the refiner; c stays a valid compatible
  *                      triangulation of the last round (unpolished, its
  *                      vertices not renumbered) to be freed by the caller. */
@@ -241,6 +265,10 @@ int compat_refine_step(struct compat_refiner *r);
 void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad, int *fewest);
 int compat_refine_finish(struct compat_refiner *r);
 void compat_refine_threads(struct compat_refiner *r, int threads);
+/* compat_refine_grow sets pa->grow for the later rounds (compat-tri: off
+ * while two candidates race, whose progress the race compares round by
+ * round; on for one refined alone). */
+void compat_refine_grow(struct compat_refiner *r, int on);
 void compat_refine_abandon(struct compat_refiner *r);
 
 /* Quality of shape s: smallest angle (radians) of any triangle, and the

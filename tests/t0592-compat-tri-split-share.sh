@@ -22,6 +22,18 @@ test_expect_success '--split-share 1: one pass, every bad triangle split every r
 	w1=$(worst_angle a.mesh) && w=$(worst_angle h.mesh) && echo "all $w1 deg, share 0.2 $w deg" &&
 	test_le $w1 $w
 '
+# compat_refine.h, COMPAT_REFINE_GROWING: a first pass whose triangles
+# below the goal grow with its vertices (half of them or more) stops and
+# the second starts; on the 57 horse and 57 flamingo subsets of
+# compat-tri(1) every mesh kept its bytes
+test_expect_success '-v says where the first pass was cut short (its bad triangles grew with the vertices)' '
+	compat-tri -v -c c horse2.rings horse3.rings >v.mesh 2>v.err &&
+	test_cmp h.mesh v.mesh &&
+	grep "the first pass cut short after [4-9] rounds: its triangles below the goal grew with the vertices" v.err &&
+	compat-tri -v --split-share 1 -c c horse2.rings horse3.rings >one.mesh 2>one.err &&
+	test_cmp a.mesh one.mesh &&
+	! grep -q "cut short" one.err
+'
 test_expect_success 'the same bytes with 1 and 2 threads' '
 	compat-tri --threads 1 -c c horse2.rings horse3.rings >t1.mesh &&
 	compat-tri --threads 2 -c c horse2.rings horse3.rings >t2.mesh &&

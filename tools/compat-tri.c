@@ -997,7 +997,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
 static struct compat_refine_params refine_params(const struct options *o, const struct compat *cpp)
 {
     struct compat_refine_params pa = {o->min_angle * M_PI / 180, 0, o->max_nv ? o->max_nv : cpp->nv + 10 * cpp->nb, 200,
-                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share, 1, 0, 0, 0};
+                                      o->refine == 2 ? 0 : 200, o->threads, o->split_share, 1, 0, 0, 0, 1};
     pa.slide = o->slide ? o->err : 0;
     pa.slide_first = o->slide == 2;
     pa.slide_global = o->slide == 1 || o->slide == 2;
@@ -1014,10 +1014,14 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
     const char *sep = who ? ": " : "";
     if (!who) who = "";
     double q1 = compat_min_angle(cpp, NULL) * 180 / M_PI;
-    info(1, "%s%srefinement: %d rounds, %d interior and %d boundary splits, %d collapses (%d coarsening), "
+    char grown[128] = "";
+    if (rs->grown)
+        snprintf(grown, sizeof grown, " (the first pass cut short after %d rounds: its triangles below the goal grew "
+                 "with the vertices)", rs->grown);
+    info(1, "%s%srefinement: %d rounds%s, %d interior and %d boundary splits, %d collapses (%d coarsening), "
             "%d flips, %d moves; min angle %.2f -> %.2f deg%s; sharpest outline corner %.2f deg; at %.3f s", who, sep,
-         rs->rounds, rs->splits, rs->bsplits, rs->collapses, rs->coarsened, rs->flips, rs->moves, q0 * 180 / M_PI, q1,
-         rs->kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI, elapsed());
+         rs->rounds, grown, rs->splits, rs->bsplits, rs->collapses, rs->coarsened, rs->flips, rs->moves, q0 * 180 / M_PI,
+         q1, rs->kept_input ? " (worse: input kept)" : "", compat_sharpest_corner(cpp) * 180 / M_PI, elapsed());
     if (rs->stop != COMPAT_REFINE_GOAL && !rs->kept_input) {
         char why[560];
         if (rs->cycles > 0) {   /* a stall answered by the final polish and more rounds */
@@ -1036,6 +1040,8 @@ static double refine_report(const struct options *o, const struct compat *cpp, d
             snprintf(why, sizeof why, "--max-vertices %d reached%s", pa->max_nv,
                      rs->restored ? " (back to the best round's mesh)" : "");
         else if (rs->stop == COMPAT_REFINE_NOSPLIT) snprintf(why, sizeof why, "no split keeps every pose positive");
+        else if (rs->stop == COMPAT_REFINE_GROWING)
+            snprintf(why, sizeof why, "the triangles below the goal grew with the vertices (half of them or more)");
         else snprintf(why, sizeof why, "%d rounds used up", pa->rounds);
         if (rs->rerun) {   /* the second and third passes of --split-share */
             size_t n = strlen(why);
@@ -1355,6 +1361,9 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
         /* the matched points at the goal: kept */
         if (!K[0]->r && !below_goal(o, &K[0]->cp, K[0]->q)) break;
         if (pick >= 0) {
+            /* the first pass cut short only where no other candidate
+             * races it round by round (compat_refine_grow) */
+            compat_refine_grow(K[pick]->r, nlive == 1);
             if (cand_step(o, K[pick], &pr, &done) < 0) die("%s", cm_errmsg());
             rounds[pick]++;
         }
