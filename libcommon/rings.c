@@ -392,7 +392,20 @@ double polygon_roundness(const double *P, int n)
 {
     double *S = malloc((size_t)n * 2 * sizeof *S), *H = malloc(((size_t)n + 1) * 2 * sizeof *H);
     if (!S || !H) { free(S); free(H); return -1; }
-    memcpy(S, P, (size_t)n * 2 * sizeof *S);
+    /* taken to the unit box first: the measure does not depend on the
+     * scale, and squared lengths of coordinates near 1e200 would overflow */
+    double lo[2] = {P[0], P[1]}, hi[2] = {P[0], P[1]};
+    for (int k = 1; k < n; k++)
+        for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], P[2 * k + d]); hi[d] = fmax(hi[d], P[2 * k + d]); }
+    double ext = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    if (!(ext > 0) || !isfinite(ext)) { free(S); free(H); return 0; }
+    for (int k = 0; k < n; k++)
+        for (int d = 0; d < 2; d++) S[2 * k + d] = (P[2 * k + d] - lo[d]) / ext;
+    double a = 0;   /* the polygon's own area, from the scaled copy before it is sorted */
+    for (int k = 0; k < n; k++) {
+        const double *u = S + 2 * k, *v = S + 2 * ((k + 1) % n);
+        a += u[0] * v[1] - u[1] * v[0];
+    }
     qsort(S, n, 2 * sizeof *S, cmp_xy);
     /* Andrew's monotone chain: lower hull, then upper, counter-clockwise */
     int h = 0;
@@ -405,20 +418,16 @@ double polygon_roundness(const double *P, int n)
         }
         h--;   /* the last point starts the other chain */
     }
-    double ah = 0, lh = 0, a = 0;
+    double ah = 0, lh = 0;
     for (int k = 0; k < h; k++) {
         const double *u = H + 2 * k, *v = H + 2 * ((k + 1) % h);
         ah += u[0] * v[1] - u[1] * v[0];
         lh += hypot(v[0] - u[0], v[1] - u[1]);
-    }
-    for (int k = 0; k < n; k++) {
-        const double *u = P + 2 * k, *v = P + 2 * ((k + 1) % n);
-        a += u[0] * v[1] - u[1] * v[0];
     }
     free(S); free(H);
     ah *= 0.5;
     a = 0.5 * fabs(a);
     if (!(ah > 0) || !(lh > 0)) return 0;
     double r = 4 * M_PI * ah / (lh * lh) * (a / ah);
-    return r > 1 ? 1 : r;
+    return r > 1 ? 1 : r >= 0 ? r : 0;
 }

@@ -1,7 +1,8 @@
 /* fuzz_rings.c -- 2D outline files (rings.h).  Oracle: rings that read
  * are written and read back bit-exact; simple rings have an exact
  * orientation (rings_orientation), and after rings_orient the outer ring is
- * counter-clockwise and every other clockwise. */
+ * counter-clockwise and every other clockwise; every ring's roundness
+ * (polygon_roundness, any polygon) is in [0, 1]. */
 #include "fuzz_common.h"
 #include "rings.h"
 
@@ -26,6 +27,10 @@ FUZZ_TARGET(rings)(const uint8_t *data, size_t size)
         rings_free(&b);
         fuzz_file_done(p2);
         free(buf);
+        for (int k = 0; k < r.nrings && r.start[r.nrings] <= 4096; k++) {
+            double x = polygon_roundness(rings_ring(&r, k), rings_count(&r, k));
+            if (!(x >= 0 && x <= 1)) fuzz_fail("rings: roundness outside [0, 1]");
+        }
         if (r.start[r.nrings] <= 4096 && rings_check_simple(&r) == 0) {
             /* simple rings: the exact orientation is never 0, the outer
              * ring comes out counter-clockwise and the holes clockwise */

@@ -101,6 +101,11 @@ int main(void)
         ok(rk < 0.6, "a C: roundness %.3f (round hull, little solidity)", rk);
         double L[6] = {0, 0, 1, 1, 2, 2};
         ok(polygon_roundness(L, 3) == 0, "three points on a line: 0");
+        /* the fuzzer's square of side 1e200: squared lengths overflow
+         * unless it is scaled first */
+        double B[8] = {0, 0, 1e200, 0, 1e200, 1e200, 0, 1e200};
+        double rb = polygon_roundness(B, 4);
+        ok(fabs(rb - M_PI / 4) < 1e-12, "a square of side 1e200: roundness %.6f (pi/4)", rb);
     }
     return tap_done();
 }
