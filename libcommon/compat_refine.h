@@ -131,11 +131,12 @@ enum {
                                the 26 first passes that went on to the
                                goal had at most 0.95 times the bad
                                triangles of their third round in their
-                               fourth, and at most 14% of their vertices
+                               fourth, and at most 17% of their vertices
                                bad where the count rose later; of the 64
-                               that did not, 63 had more in their fourth,
-                               at least half their vertices), so the
-                               second pass starts at once */
+                               that went on to a second pass, 63 had more
+                               in their fourth, at least half their
+                               vertices), so the second pass starts at
+                               once */
 };
 #define COMPAT_REFINE_GROW_ROUND 4
 #define COMPAT_REFINE_STALL 3
