@@ -17,8 +17,9 @@ run_faces() {
 	test $(wc -l <spin.txt) -eq 8
 }
 
-# before: each eye turned 25-144 degrees between poses, and with traced
-# noise no two straight cuts fitted ("compatible triangulation failed")
+# before: the matching turned the round eyes 26-125 degrees between poses
+# (144 with a tracer's noise, oval ones 180) and, for the round and the
+# noisy eyes, no two straight cuts fitted ("compatible triangulation failed")
 test_expect_success 'round eyes that start anywhere: they turn with the face (measured: within 10.3 degrees)' '
 	faces &&
 	run_faces &&
