@@ -8,7 +8,7 @@ S="$SHARED_DATA/shapes2d"
 # of icon $1; compat-tri with no row; prints the worst angle and vertices
 warped() {
 	for k in 13 14 15 16; do awk -v seed=$k -v amp=2 -f "$TEST_DIRECTORY/t0581-warp.awk" "$S/fa_$1.rings.txt" >$1$k.rings || return 1; done &&
-	compat-tri -v $113.rings $114.rings $115.rings $116.rings >$1.mesh 2>$1.err &&
+	compat-tri -v ${1}13.rings ${1}14.rings ${1}15.rings ${1}16.rings >$1.mesh 2>$1.err &&
 	sed -n "s/.*result: \([0-9]*\) vertices.*min angle \([0-9.]*\) deg.*/\2 \1/p" $1.err
 }
 

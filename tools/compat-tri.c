@@ -685,7 +685,8 @@ static const double *ring_point(const struct rings *R, const unsigned char *flip
  * its rows (ccw indices; replaced); ctx, nctx: the other rings' rows,
  * file order.
  * Returns the number of shapes whose start changed (0: mc unchanged), -1
- * out of memory. */
+ * out of memory, -2 if matching from the changed starts failed (cm_errmsg;
+ * mc unchanged). */
 #ifndef TURN_TOL
 #define TURN_TOL 0.5
 #endif
@@ -772,7 +773,7 @@ static int turn_ring(const struct options *o, int N, const struct rings *R, cons
             free(*mc);
             *mc = m2;
             *nmc = n2;
-        } else rc = 0;   /* the start search's rows stay */
+        } else rc = -2;   /* the start search's rows stay (the caller says so) */
     }
     free(A); free(w); free(tB); free(start);
     return rc;
@@ -898,8 +899,11 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
                 if (!(P[s] = compat_ring_ccw(&R[s], k, hole))) die("out of memory");
             }
             int t = turn_ring(o, N, R, flipped, P, n, round, ctx, nctx, &prm, &mc, &nmc);
-            if (t < 0) die("out of memory");
-            if (t)
+            if (t == -1) die("out of memory");
+            if (t == -2)   /* said without -v: that ring may turn in the morph */
+                warn("ring %d: matching it from the start its surroundings give failed (%s): it keeps the start "
+                     "search's", k + 1, cm_errmsg());
+            else if (t)
                 info(1, "ring %d (%s): its shape does not tell how it turns (%s): started as its surroundings turn in "
                         "%d shape%s, %d correspondence points", k + 1, hole ? "a hole" : "a piece",
                      round ? "round" : "as cheap turned", t, t == 1 ? "" : "s", nmc);
