@@ -2058,6 +2058,14 @@ void compat_refine_progress(const struct compat_refiner *r, double *worst, int *
     if (fewest) *fewest = r->nbest;
 }
 
+void compat_refine_pass(const struct compat_refiner *r, int *pass, int *rounds, double *worst, int *nbad)
+{
+    if (pass) *pass = r->pass;
+    if (rounds) *rounds = r->prounds;
+    if (worst) *worst = r->wcur < 0 ? 0 : r->wcur * r->pa.goal;
+    if (nbad) *nbad = r->wcur < 0 ? INT_MAX : r->nbad;
+}
+
 /* back to the best earlier pass (r->alt): its stop reason, the counts of
  * all passes.  0 or -1. */
 static int keep_alt(struct compat_refiner *r)

@@ -271,6 +271,15 @@ void compat_refine_threads(struct compat_refiner *r, int threads);
  * round; on for one refined alone). */
 void compat_refine_grow(struct compat_refiner *r, int on);
 void compat_refine_abandon(struct compat_refiner *r);
+/* compat_refine_pass: the current pass (0: every bad triangle split, 1:
+ * the share, 2: the lookahead; see split_share), its rounds so far, and
+ * its last round's worst angle (radians, against what each corner allows)
+ * and triangles below the goal -- that round's own, where
+ * compat_refine_progress reports a later pass like a finished refinement
+ * (compat-tri: candidates compared pass against pass).  Any output may be
+ * NULL. */
+void compat_refine_pass(const struct compat_refiner *r, int *pass, int *rounds, double *worst, int *nbad);
+
 
 /* Quality of shape s: smallest angle (radians) of any triangle, and the
  * share of triangles (0..1) whose smallest angle is below 10 and below 20

@@ -59,15 +59,14 @@ static const char help[] =
 "                        bending, Sebastian et al.), 'arclength' (baseline: the\n"
 "                        same points placed by arc length from the given rows) or\n"
 "                        'off' (3 or more rows: only the given rows, arc length\n"
-"                        between them: the earlier default); with 3 or more rows\n"
-"                        and no -m, where the matched points are not at\n"
-"                        --min-angle after 3 rounds, 'off' is refined side by\n"
-"                        side and the one falling behind dropped (-v); no -m\n"
-"                        and a mesh below --min-angle: the matching with twice\n"
-"                        --match-points is refined too, then (still below) the\n"
-"                        same with --spread 3, then (3 or more rows) the\n"
-"                        matched points moved by --match-polish 64, the best\n"
-"                        mesh kept\n"
+"                        between them: the earlier default); no -m and the\n"
+"                        matched points not at --min-angle after 3 rounds:\n"
+"                        'off' (3 or more rows), the matching with twice\n"
+"                        --match-points and the same with --spread 3 are\n"
+"                        refined side by side, the least work first, one\n"
+"                        falling behind dropped, the first at the goal kept\n"
+"                        (-v); all below it: (3 or more rows) the matched\n"
+"                        points moved by --match-polish 64 too, the best kept\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
 "                        rows plus SHAPE0's most salient corners (default 12;\n"
 "                        given, no matching with twice K is tried)\n"
@@ -406,10 +405,10 @@ static int *match_points(const struct options *o, int N, double **P, const int *
     if (bmatch_corr(N, P, n, given, *ncorr, want, nwant, K, &prm, &corr, &nc, cost) < 0)
         die("boundary matching failed: %s", cm_errmsg());
     for (int s = 1; s < N; s++)
-        info(1, "%s: matched to %s (%s, cost %.4g)", o->shapes[s], o->shapes[0],
+        binfo(o, "%s: matched to %s (%s, cost %.4g)", o->shapes[s], o->shapes[0],
              o->match == BMATCH_ARCLENGTH ? "arc length" : o->match == BMATCH_ELASTIC ? "elastic" : "multiscale",
              cost[s]);
-    info(1, "boundary matching: %d point%s given in every shape, %d in %s only, %d correspondence points "
+    binfo(o, "boundary matching: %d point%s given in every shape, %d in %s only, %d correspondence points "
             "placed", *ncorr, *ncorr == 1 ? "" : "s", nwant, o->shapes[0], nc);
     free(cost);
     if (o->mpolish_soft && nc > MPOLISH_MAX_ROWS) {   /* the candidate's cost grows as the rows^4 */
@@ -419,7 +418,7 @@ static int *match_points(const struct options *o, int N, double **P, const int *
         return NULL;
     }
     if (o->mpolish > 0 && (nc < 4 || N < 2))   /* said, not skipped silently */
-        info(1, "matching polish: nothing to move (%d correspondence point%s, %d shape%s: a ratio needs 4 points "
+        binfo(o, "matching polish: nothing to move (%d correspondence point%s, %d shape%s: a ratio needs 4 points "
                 "and 2 shapes)", nc, nc == 1 ? "" : "s", N, N == 1 ? "" : "s");
     if (o->mpolish > 0 && nc >= 4 && N >= 2) {   /* the placed points moved to force less stretch */
         unsigned char *pin = calloc(nc, 1);
@@ -439,7 +438,7 @@ static int *match_points(const struct options *o, int N, double **P, const int *
             free(corr);
             return NULL;   /* the candidate is left out (cm_errmsg says why) */
         }
-        info(1, "matching polish: %d step%s, the stretch the points force %.3gx -> %.3gx (estimates of the first "
+        binfo(o, "matching polish: %d step%s, the stretch the points force %.3gx -> %.3gx (estimates of the first "
                 "mesh; --match-polish %d); %.3f s", mv, mv == 1 ? "" : "s", before, after, o->mpolish,
              now_seconds() - t0);
     }
@@ -1126,26 +1125,61 @@ static double improve(const struct options *opt, struct compat *cpp, double q0)
     return refine_report(&o, cpp, q0, &rs, &pa, NULL);
 }
 
-/* one of the two candidates of the default with 3 or more rows */
+/* The candidates of a default run, in their order of preference on a tie:
+ * the points the matching placed (built by main), the given rows alone
+ * (-m off; 3 or more rows), the matching with twice --match-points, the
+ * same with the spread term (--spread SPREAD_RETRY, where the stretch of
+ * a leg bunched at one end is what keeps the mesh below the goal), and
+ * (3 or more rows) the matched points moved by --match-polish
+ * MPOLISH_STEPS.  Which one reaches the goal changes from subset to subset
+ * of the same poses, and no count of the triangulations told them apart
+ * in advance (see race). */
+enum { C_MATCHED, C_ROWS, C_DENSE, C_SPREAD, C_POLISH, NCAND };
 #define RACE_ROUNDS 3
 #define RACE_BEHIND 2
+/* the work of a round (struct candidate): its accepted smoothing moves
+ * (vertex x shape) plus ROUND_WORK per vertex and shape for the rest
+ * (flips, quality, splits); a count, not a clock, so the race's decisions
+ * and output do not depend on the machine or its load */
+#define ROUND_WORK 10
 struct candidate {
     const char *name;                 /* for -v */
+    struct options opt;               /* its options (C_MATCHED: main's) */
     struct compat cp;
     struct compat_refiner *r;         /* NULL once finished or dropped */
     struct compat_refine_params pa;
     struct compat_refine_stats rs;
     double q0, q;                     /* worst angle before (radians), after (degrees; -1: none) */
-    int built;
+    int want;                         /* a candidate of this run */
+    int built;                        /* started (or tried: then r NULL and q -1) */
+    int rounds, moves;                /* rounds run; rs.moves when the last was counted */
+    double work;                      /* of its rounds so far (ROUND_WORK) */
     int pre, used;                    /* rounds stepped ahead (struct ahead), of them taken */
     int status[RACE_ROUNDS];          /* what those steps returned */
+    double prework[RACE_ROUNDS];      /* and their work */
+    struct rings *R;                  /* cand_build: the outlines, */
+    int ok;                           /* built and triangulated, */
+    char log[LOG_SIZE], err[512];     /* its -v lines and error */
 };
+
+/* the work of the round k just ran (ROUND_WORK) */
+static double round_work(struct candidate *k)
+{
+    double w = (k->rs.moves > k->moves ? k->rs.moves - k->moves : 0) + (double)ROUND_WORK * k->cp.nv * k->cp.N;
+    k->moves = k->rs.moves;
+    return w;
+}
 
 /* a round of candidate k (one stepped ahead if there is one); finishes it
  * when its splitting stops; 0 or -1 */
 static int cand_step(const struct options *o, struct candidate *k, struct progress *pr, long *rounds)
 {
-    int st = k->used < k->pre ? k->status[k->used++] : compat_refine_step(k->r);
+    int st;
+    if (k->used < k->pre) {
+        k->work += k->prework[k->used];
+        st = k->status[k->used++];
+    } else if ((st = compat_refine_step(k->r)) >= 0) k->work += round_work(k);
+    k->rounds++;
     progress_step(pr, ++*rounds);
     if (st < 0) return -1;
     if (st == 0) {
@@ -1174,19 +1208,47 @@ static int below_goal(const struct options *o, const struct compat *cp, double q
     return q < mesh_goal(o, cp) * (1 - 1e-6);
 }
 
-/* worst angle (degrees) and triangles below the goal of a running or finished candidate */
-static void cand_state(const struct candidate *k, double *worst, int *nbad)
+/* the largest worst angle (degrees) of the finished candidates (-1: none) */
+static double best_q(struct candidate *const *K)
 {
-    if (k->r) {
-        compat_refine_progress(k->r, worst, nbad, NULL);
-        *worst *= 180 / M_PI;
-    } else { *worst = k->q; *nbad = k->rs.stop == COMPAT_REFINE_GOAL ? 0 : INT_MAX; }
+    double q = -1;
+    for (int a = 0; a < NCAND; a++)
+        if (K[a]->built && K[a]->q > q) q = K[a]->q;
+    return q;
 }
 
-/* The second candidate (the given rows alone) built ahead: with 2 or more
- * threads it is built, triangulated and refined RACE_ROUNDS rounds on a
- * thread of its own while the first is triangulated and refined on the
- * other, so both cores work where the triangulations are serial.  Its
+/* a is behind b (both running, each RACE_ROUNDS rounds or more into the
+ * current pass of its refinement, b after no more work): a's last round
+ * has RACE_BEHIND times b's triangles below the goal or more and a
+ * smaller worst angle than b's last round -- smaller by RACE_MARGIN
+ * degrees or more, and the best a kept (an earlier pass's result
+ * included) too, where either is in a later pass (the second and third
+ * split only the worst share of those triangles, so their count says
+ * less there: measured, t0587 horse poses 2 5 with --spread 0 kept 15.49
+ * deg instead of 16.17 without the margin, the rows alone dropped at
+ * 10.41 deg against 11.09).  The -v words for it in why (wsize bytes). */
+#define RACE_MARGIN 3
+static int cand_behind(const struct candidate *a, const struct candidate *b, char *why, size_t wsize)
+{
+    int pa, pb, ra, rb, na, nb;
+    double wa, wb, best;
+    if (a->used < a->pre || b->used < b->pre) return 0;   /* rounds stepped ahead (struct ahead) not taken yet */
+    compat_refine_pass(a->r, &pa, &ra, &wa, &na);
+    compat_refine_pass(b->r, &pb, &rb, &wb, &nb);
+    compat_refine_progress(a->r, &best, NULL, NULL);
+    if (ra < RACE_ROUNDS || rb < RACE_ROUNDS || b->work > a->work || (double)na < RACE_BEHIND * (double)nb) return 0;
+    double margin = pa || pb ? RACE_MARGIN * M_PI / 180 : 0;
+    if (!(wa < wb - margin && (margin == 0 || best < wb - margin))) return 0;
+    snprintf(why, wsize, "%s dropped after %d rounds: worst angle %.2f deg with %d triangles below the goal (%s after %d: "
+             "%.2f deg, %d)", a->name, a->rounds, wa * 180 / M_PI, na, b->name, b->rounds, wb * 180 / M_PI, nb);
+    return 1;
+}
+
+/* The given rows alone (C_ROWS) built ahead: with 2 or more threads it is
+ * built, triangulated and refined up to RACE_ROUNDS rounds on a thread of
+ * its own while the matched points are triangulated and refined on the
+ * other, so both cores work where the triangulations are serial; the race
+ * takes it once its build is done and the round running ends.  Its
  * rounds are the same whenever they run, so the race below decides on
  * the same numbers and the output is the one of the sequential order; its
  * -v lines are kept and printed where the race takes it. */
@@ -1194,7 +1256,8 @@ struct ahead {
     pthread_t th;
     int started;
     atomic_int done, stop, wait;      /* set by the thread at its end; ask it to stop early;
-                                       * the caller waits for it (its later rounds take every thread) */
+                                       * the caller waits for it: no more rounds after the one
+                                       * running (the race steps the rest in its order) */
     struct options off;
     struct rings *R;
     struct candidate *k;
@@ -1220,10 +1283,10 @@ static void *ahead_run(void *arg)
     k->pa = refine_params(&a->off, &k->cp);
     k->pa.threads = 1;
     if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) { a->ok = 0; snprintf(a->err, sizeof a->err, "%s", cm_errmsg()); goto out; }
-    while (k->pre < RACE_ROUNDS && !atomic_load(&a->stop)) {
-        if (atomic_load(&a->wait)) compat_refine_threads(k->r, a->off.threads);
+    while (k->pre < RACE_ROUNDS && !atomic_load(&a->stop) && !atomic_load(&a->wait)) {
         int st = compat_refine_step(k->r);
-        k->status[k->pre++] = st;
+        k->status[k->pre] = st;
+        k->prework[k->pre++] = st >= 0 ? round_work(k) : 0;
         if (st <= 0) break;
     }
 out:
@@ -1252,49 +1315,79 @@ static void ahead_join(struct ahead *a, int stop)
     a->started = 0;
 }
 
-/* The third candidate of the default (struct candidate k): the matching
- * again with twice --match-points (dense: its options), built, triangulated
- * and started; its -v lines are printed.  0, or -1 (cm_errmsg set) if it
- * could not be built. */
-static int dense_start(struct options *dense, struct rings *R, struct candidate *k)
+/* Candidate k (not C_MATCHED) built from k->opt and triangulated, its -v
+ * lines kept in k->log and an error in k->err (k->ok: built); on a thread
+ * of its own (cand_build_run) beside the others where there are threads:
+ * every build is serial, and each one's result does not depend on the
+ * others' */
+static void cand_build(struct candidate *k, struct rings *R)
 {
-    char log[LOG_SIZE] = "";
-    dense->log = log;
-    int ok = build_single(dense, R, &k->cp) == 0 && compat_triangulate(&k->cp) == 0;
-    dense->log = NULL;
-    for (char *l = log, *e; *l && (e = strchr(l, '\n')); l = e + 1) {   /* its -v lines */
+    k->opt.log = k->log;
+    k->ok = build_single(&k->opt, R, &k->cp) == 0 && compat_triangulate(&k->cp) == 0;
+    k->opt.log = NULL;
+    if (!k->ok) snprintf(k->err, sizeof k->err, "%s", cm_errmsg());
+}
+
+static void *cand_build_run(void *arg)
+{
+    cand_build(arg, ((struct candidate *)arg)->R);
+    return NULL;
+}
+
+/* Candidate k after cand_build (C_ROWS: taken from the thread ah if it was
+ * started there) started: its -v lines printed, its refinement begun.  0,
+ * or -1 (said with -v, k left out) if it could not be built. */
+static int cand_start(struct candidate *k, struct ahead *ah, int threads)
+{
+    k->built = 1;
+    if (ah && ah->started) {   /* the rows alone, built ahead */
+        ahead_join(ah, 0);
+        snprintf(k->log, sizeof k->log, "%s", ah->log);
+        snprintf(k->err, sizeof k->err, "%s", ah->err);
+        k->ok = ah->ok && k->r;
+        if (k->ok) compat_refine_threads(k->r, threads);
+    } else if (k->ok) {
+        k->q0 = compat_min_angle(&k->cp, NULL);
+        k->pa = refine_params(&k->opt, &k->cp);
+        if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) {
+            k->ok = 0;
+            snprintf(k->err, sizeof k->err, "%s", cm_errmsg());
+        }
+    }
+    for (char *l = k->log, *e; *l && (e = strchr(l, '\n')); l = e + 1) {   /* its -v lines */
         *e = 0;
         info(1, "%s: %s", k->name, l);
     }
-    if (!ok) return -1;
-    k->q0 = compat_min_angle(&k->cp, NULL);
-    k->pa = refine_params(dense, &k->cp);
-    if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) return -1;
-    return 0;
+    if (k->ok) return 0;
+    info(1, "%s: %s; left out", k->name, k->err);
+    if (k->r) compat_refine_abandon(k->r);
+    k->r = NULL;
+    compat_free(&k->cp);   /* compat_match clears it first */
+    memset(&k->cp, 0, sizeof k->cp);
+    k->q = -1;
+    return -1;
 }
 
-/* The default with 3 or more given rows: the points the matching placed
- * between the rows (cp, built and triangulated), the given rows alone
- * (-m off) and the matching with twice as many points (--match-points 2K)
- * are candidates (measured: the matching wins on the traced camel and
- * horse, the rows alone on the shared elephant poses, and no count of the
- * triangulations told them apart in advance; which of the two matchings
- * keeps the larger worst angle changes from subset to subset of the same
- * poses, the twice as many points more often on the horse and the camel's
- * three-quarter views).  The matched points are refined first; if they are
- * not at the goal after RACE_ROUNDS rounds, the two others are built and
- * the live candidates are refined a round each in turn (the one with the
- * fewest rounds first).  A candidate is dropped once it falls behind: a
- * smaller worst angle than another's with at least RACE_BEHIND times its
- * triangles below the goal, from the third round on (on the six elephant
- * poses the matched points have 434 bad triangles at 3.7 deg against 201
- * at 6.8 and would go on to 3041 vertices at 18.5 deg).  The matched
- * points at the goal are kept; otherwise the largest worst angle (the
- * first in that order on a tie).  ah: the rows alone built ahead (struct
- * ahead; not started: built here when needed).  On return cp holds the
- * kept mesh and kept (ksize bytes) its name for -v; returns its worst
- * angle (degrees). */
-#define NCAND 3
+/* The default matching (cp: the matched points, built and triangulated,
+ * q0 its worst angle, radians) against the other candidates of the run
+ * (C_MATCHED..C_POLISH, those its options leave).  The matched points are
+ * refined alone while their triangles below the goal keep falling; once
+ * they are not at the goal after RACE_ROUNDS rounds (or finished below
+ * it), the others are built and every live candidate is refined a round
+ * at a time, the one with the least work (ROUND_WORK) so far first.  The
+ * first to finish at the goal is kept and the others stopped, so a
+ * candidate whose maps are stretched does not run to --max-vertices
+ * before the one that reaches the goal in a few rounds starts (measured
+ * in compat-tri(1)).  A candidate is dropped once it falls behind: a
+ * smaller worst angle than another's, with at least RACE_BEHIND times its
+ * triangles below the goal, that other after no more work and both after
+ * RACE_ROUNDS rounds or more (on the six elephant poses the matched
+ * points have 434 bad triangles at 3.7 deg against 201 at 6.8 and would
+ * go on to 3041 vertices at 18.5 deg).  If none reaches the goal, the
+ * largest worst angle is kept (the first in the order above on a tie).
+ * ah: the rows alone built ahead (struct ahead; not started: built here
+ * when needed).  On return cp holds the kept mesh and kept (ksize bytes)
+ * its name for -v; returns its worst angle (degrees). */
 /* the further matching has DENSE_FACTOR times --match-points (measured on
  * the survey of compat-tri(1): 2 raised the mean worst angle of the 37
  * subsets below 20 deg from 8.40 to 9.34 at 64 -> 97 s of CPU, 3 to 9.52
@@ -1302,9 +1395,8 @@ static int dense_start(struct options *dense, struct rings *R, struct candidate 
 #ifndef DENSE_FACTOR
 #define DENSE_FACTOR 2
 #endif
-/* the last candidate's spread weight and --match-points factor (see main;
- * measured in compat-tri(1): with 1 times the points the horse gained
- * nothing) */
+/* the spread candidate's weight and --match-points factor (measured in
+ * compat-tri(1): with 1 times the points the horse gained nothing) */
 #ifndef SPREAD_RETRY
 #define SPREAD_RETRY 3
 #endif
@@ -1314,132 +1406,114 @@ static int dense_start(struct options *dense, struct rings *R, struct candidate 
 static double race(struct options *o, struct rings *R, struct compat *cp, double q0, struct ahead *ah,
                    char *kept, size_t ksize)
 {
-    struct options off = *o, dense = *o;
-    off.match = -2;
-    off.points_out = NULL;
-    dense.match_points = DENSE_FACTOR * o->match_points < 1000 ? DENSE_FACTOR * o->match_points : 1000;
-    dense.points_out = NULL;
-    dense.match_default = 0;
-    struct candidate k0, k2, *K[NCAND] = {&k0, ah->k, &k2};
+    struct candidate k0, k2, k3, k4, *K[NCAND] = {&k0, ah->k, &k2, &k3, &k4};
     memset(&k0, 0, sizeof k0);
     memset(&k2, 0, sizeof k2);
-    int nk = dense.match_points > o->match_points && !o->match_points_given ? 3 : 2;
-    char dname[64];
-    snprintf(dname, sizeof dname, "the matching with %d points", dense.match_points);
-    K[0]->name = "the matched points";
-    K[1]->name = "the given rows only (-m off)";
-    K[2]->name = dname;
-    K[0]->cp = *cp;
-    K[0]->built = 1;
-    K[0]->q0 = q0;
-    K[0]->q = K[1]->q = K[2]->q = -1;
-    K[0]->pa = refine_params(o, cp);
-    if (ah->started) K[0]->pa.threads = 1;   /* the other core builds the rows alone */
-    if (!(K[0]->r = compat_refine_begin(&K[0]->cp, &K[0]->pa, &K[0]->rs))) die("%s", cm_errmsg());
-    int rounds[NCAND] = {0, 0, 0};
+    memset(&k3, 0, sizeof k3);
+    memset(&k4, 0, sizeof k4);
+    for (int a = 0; a < NCAND; a++) {
+        K[a]->opt = *o;
+        K[a]->opt.points_out = NULL;
+        K[a]->opt.match_default = 0;
+        K[a]->q = -1;
+    }
+    int dense_points = DENSE_FACTOR * o->match_points < 1000 ? DENSE_FACTOR * o->match_points : 1000;
+    K[C_ROWS]->opt.match = -2;
+    K[C_DENSE]->opt.match_points = dense_points;
+    K[C_SPREAD]->opt.spread = SPREAD_RETRY;
+    if (!o->match_points_given)
+        K[C_SPREAD]->opt.match_points = SPREAD_POINTS * o->match_points < 1000 ? SPREAD_POINTS * o->match_points : 1000;
+    K[C_POLISH]->opt.mpolish = MPOLISH_STEPS;
+    K[C_POLISH]->opt.mpolish_soft = 1;
+    K[C_MATCHED]->want = 1;
+    K[C_ROWS]->want = o->match_default;
+    K[C_DENSE]->want = dense_points > o->match_points && !o->match_points_given;
+    K[C_SPREAD]->want = !o->spread_given;
+    K[C_POLISH]->want = o->match_default && !o->mpolish_given;
+    char dname[64], sname[80], pname[64];
+    snprintf(dname, sizeof dname, "the matching with %d points", dense_points);
+    snprintf(sname, sizeof sname, "the matching with %d points and --spread %g", K[C_SPREAD]->opt.match_points,
+             (double)SPREAD_RETRY);
+    snprintf(pname, sizeof pname, "the matched points with --match-polish %d", MPOLISH_STEPS);
+    K[C_MATCHED]->name = "the matched points";
+    K[C_ROWS]->name = "the given rows only (-m off)";
+    K[C_DENSE]->name = dname;
+    K[C_SPREAD]->name = sname;
+    K[C_POLISH]->name = pname;
+    struct candidate *m = K[C_MATCHED];
+    m->cp = *cp;
+    m->built = 1;
+    m->q0 = q0;
+    m->pa = refine_params(o, cp);
+    if (ah->started) m->pa.threads = 1;   /* the other core builds the rows alone */
+    if (!(m->r = compat_refine_begin(&m->cp, &m->pa, &m->rs))) die("%s", cm_errmsg());
     struct progress pr;
     long done = 0;
+    int others = 0, win = -1;
     progress_start(&pr, "compat-tri: refinement rounds", 0);
     for (;;) {
-        if (K[0]->r && ah->started && atomic_load(&ah->done)) compat_refine_threads(K[0]->r, o->threads);
-        int nlive = 0, pick = -1;
-        for (int a = 0; a < nk; a++)
-            if (K[a]->r && K[a]->built) {
-                nlive++;
-                if (pick < 0 || rounds[a] < rounds[pick]) pick = a;   /* the fewest rounds first */
-            }
-        if (!nlive && K[1]->built && nk > 2 && !K[2]->built && below_goal(o, &K[0]->cp, K[0]->q) &&
-            below_goal(o, &K[1]->cp, K[1]->q)) {
-            /* both below the goal: the matching with twice the points */
-            K[2]->built = 1;
-            if (dense_start(&dense, R, K[2]) < 0) {
-                info(1, "%s: %s; left out", K[2]->name, cm_errmsg());
-                if (K[2]->r) compat_refine_abandon(K[2]->r);
-                K[2]->r = NULL;
-                compat_free(&K[2]->cp);
-                memset(&K[2]->cp, 0, sizeof K[2]->cp);
-                K[2]->q = -1;
-            } else info(1, "both below the goal: %s too; at %.3f s", K[2]->name, elapsed());
-            continue;
-        }
-        if (!nlive && (K[1]->built || !below_goal(o, &K[0]->cp, K[0]->q))) break;
-        /* the matched points at the goal: kept */
-        if (!K[0]->r && !below_goal(o, &K[0]->cp, K[0]->q)) break;
-        if (pick >= 0) {
-            /* the first pass cut short only where no other candidate
-             * races it round by round (compat_refine_grow) */
-            compat_refine_grow(K[pick]->r, nlive == 1);
-            if (cand_step(o, K[pick], &pr, &done) < 0) die("%s", cm_errmsg());
-            rounds[pick]++;
-        }
+        if (m->r && ah->started && atomic_load(&ah->done)) compat_refine_threads(m->r, o->threads);
+        if (!m->r && !below_goal(o, &m->cp, m->q)) { win = C_MATCHED; break; }   /* at the goal alone */
         int nbad0 = 0, fewest0 = 0;
-        if (K[0]->r) compat_refine_progress(K[0]->r, NULL, &nbad0, &fewest0);
-        if (!K[1]->built && ((rounds[0] >= RACE_ROUNDS && nbad0 > fewest0) || !K[0]->r) && below_goal(o, &K[0]->cp, K[0]->q)) {
-            /* the other candidates; one that cannot be built is left out */
-            K[1]->built = 1;
-            int ok;
-            char err[512];
-            if (ah->started) {
-                ahead_join(ah, 0);
-                if (K[0]->r) compat_refine_threads(K[0]->r, o->threads);
-                for (char *l = ah->log, *e; *l; l = e + 1) {   /* its -v lines */
-                    e = strchr(l, '\n');
-                    *e = 0;
-                    info(1, "%s", l);
+        if (m->r) compat_refine_progress(m->r, NULL, &nbad0, &fewest0);
+        if (!others && (!m->r || (m->rounds >= RACE_ROUNDS && nbad0 > fewest0))) {
+            /* the matched points fall short: the others */
+            others = 1;
+            char names[512] = "";
+            for (int a = 1; a < C_POLISH; a++)
+                if (K[a]->want) {
+                    size_t l = strlen(names);
+                    snprintf(names + l, sizeof names - l, "%s%s", l ? "; " : "", K[a]->name);
                 }
-                ok = ah->ok;
-                snprintf(err, sizeof err, "%s", ah->err);
-                if (ok && K[1]->r) compat_refine_threads(K[1]->r, o->threads);
-            } else {
-                ok = build_single(&off, R, &K[1]->cp) == 0 && compat_triangulate(&K[1]->cp) == 0;
-                snprintf(err, sizeof err, "%s", cm_errmsg());
-                if (ok) {
-                    K[1]->q0 = compat_min_angle(&K[1]->cp, NULL);
-                    K[1]->pa = refine_params(&off, &K[1]->cp);
-                    if (!(K[1]->r = compat_refine_begin(&K[1]->cp, &K[1]->pa, &K[1]->rs))) ok = 0, snprintf(err, sizeof err, "%s", cm_errmsg());
-                }
+            if (!*names) continue;   /* (the polish, if any, once the matched points finish) */
+            if (m->r)
+                info(1, "the matched points not at the goal after %d rounds, %d triangles below it (%d after an earlier "
+                        "round): %s too; at %.3f s", m->rounds, nbad0, fewest0, names, elapsed());
+            else info(1, "below the goal with the matched points (%.2f deg): %s too; at %.3f s", m->q, names, elapsed());
+            /* built side by side where there are threads (the rows alone
+             * may be on the thread of struct ahead already) */
+            pthread_t th[NCAND];
+            int on[NCAND] = {0}, par = parallel_threads(o->threads) > 1;
+            for (int a = 1; a < C_POLISH; a++) {
+                if (!K[a]->want || (a == C_ROWS && ah->started)) continue;
+                K[a]->R = R;
+                if (par) on[a] = pthread_create(&th[a], NULL, cand_build_run, K[a]) == 0;
+                if (!on[a]) cand_build(K[a], R);
             }
-            if (ok && !K[1]->r) die("%s", err);   /* out of memory starting its refinement */
-            if (ok) {
-                if (K[0]->r)
-                    info(1, "the matched points not at the goal after %d rounds, %d triangles below it (%d after an earlier "
-                            "round): the given rows only (-m off) too; at %.3f s", rounds[0], nbad0, fewest0, elapsed());
-                else info(1, "below the goal with the matched points (%.2f deg): the given rows only (-m off) too", K[0]->q);
-            } else {
-                info(1, "the given rows only (-m off): %s; kept the matched points", err);
-                if (K[1]->r) compat_refine_abandon(K[1]->r);
-                K[1]->r = NULL;
-                compat_free(&K[1]->cp);   /* compat_match clears it first */
-                memset(&K[1]->cp, 0, sizeof K[1]->cp);
-                K[1]->q = -1;
-            }
+            for (int a = 1; a < C_POLISH; a++)
+                if (on[a]) pthread_join(th[a], NULL);
+            for (int a = 1; a < C_POLISH; a++)
+                if (K[a]->want && cand_start(K[a], a == C_ROWS ? ah : NULL, o->threads) == 0 && K[a]->pa.threads == 1)
+                    compat_refine_threads(K[a]->r, o->threads);
+            if (m->r) compat_refine_threads(m->r, o->threads);
             continue;
         }
-        /* after the same number of rounds, one behind another is dropped */
-        if (!K[1]->built) continue;
-        int even = 1, r0 = -1;   /* every live candidate at the same round, RACE_ROUNDS or more */
-        for (int a = 0; a < nk; a++)
-            if (K[a]->r) {
-                if (r0 < 0) r0 = rounds[a];
-                if (rounds[a] != r0 || rounds[a] < RACE_ROUNDS) even = 0;
-            }
-        for (int a = 0; a < nk && even; a++) {
-            if (!K[a]->r) continue;
-            double wa;
-            int na;
-            cand_state(K[a], &wa, &na);
-            for (int b = 0; b < nk; b++) {
-                if (b == a || !K[b]->built || (!K[b]->r && K[b]->q < 0)) continue;
-                double wb;
-                int nb;
-                cand_state(K[b], &wb, &nb);
-                if (wa < wb && (double)na >= RACE_BEHIND * (double)nb) {
-                    info(1, "%s dropped after %d rounds: worst angle %.2f deg with %d triangles below the goal (%s: %.2f deg, %d); at %.3f s",
-                         K[a]->name, rounds[a], wa, na, K[b]->name, wb, nb, elapsed());
+        int pick = -1;   /* the least work first */
+        for (int a = 0; a < NCAND; a++)
+            if (K[a]->built && K[a]->r && (pick < 0 || K[a]->work < K[pick]->work)) pick = a;
+        if (pick < 0 && K[C_POLISH]->want && !K[C_POLISH]->built) {
+            /* every other one below the goal: the polish, last (its
+             * matching costs as the rows^4 and took 0.4-10 s on two to
+             * six poses of t0587's horse and flamingo) */
+            info(1, "below the goal (%.2f deg): %s too; at %.3f s", best_q(K), K[C_POLISH]->name, elapsed());
+            cand_build(K[C_POLISH], R);
+            cand_start(K[C_POLISH], NULL, o->threads);
+            continue;
+        }
+        if (pick < 0) break;
+        if (cand_step(o, K[pick], &pr, &done) < 0) die("%s", cm_errmsg());
+        if (!K[pick]->r && !below_goal(o, &K[pick]->cp, K[pick]->q)) { win = pick; break; }
+        /* one behind another after no more work is dropped (one a round) */
+        for (int a = 0, dropped = 0; a < NCAND && !dropped; a++) {
+            if (!K[a]->built || !K[a]->r) continue;
+            for (int b = 0; b < NCAND; b++) {
+                char why[512];
+                if (b != a && K[b]->built && K[b]->r && cand_behind(K[a], K[b], why, sizeof why)) {
+                    info(1, "%s; at %.3f s", why, elapsed());
                     compat_refine_abandon(K[a]->r);
                     K[a]->r = NULL;
                     K[a]->q = -1;
-                    even = 0;   /* one a round */
+                    dropped = 1;
                     break;
                 }
             }
@@ -1448,83 +1522,48 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     progress_end(&pr);
     if (ah->started) {   /* not needed: the matched points reached the goal */
         ahead_join(ah, 1);
-        if (K[1]->r) compat_refine_abandon(K[1]->r);
-        K[1]->r = NULL;
-        compat_free(&K[1]->cp);
+        if (ah->k->r) compat_refine_abandon(ah->k->r);
+        ah->k->r = NULL;
+        compat_free(&ah->k->cp);
+        memset(&ah->k->cp, 0, sizeof ah->k->cp);
     }
-    /* kept: the matched points at the goal, else the largest worst angle */
-    int use = 0;
-    if (below_goal(o, &K[0]->cp, K[0]->q))
-        for (int a = 1; a < nk; a++)
-            if (K[a]->q > K[use]->q) use = a;
-    for (int a = 0; a < nk; a++)
-        if (K[a]->r) { compat_refine_abandon(K[a]->r); K[a]->r = NULL; }
-    if (K[1]->built) {
-        char others[512] = "";
-        for (int a = 0; a < nk; a++)
+    /* kept: the first at the goal, else the largest worst angle */
+    int use = win;
+    if (use < 0) {
+        use = 0;
+        for (int a = 1; a < NCAND; a++)
+            if (K[a]->built && K[a]->q > K[use]->q) use = a;
+    }
+    for (int a = 0; a < NCAND; a++)
+        if (K[a]->r) {
+            info(1, "%s stopped after %d rounds: %s reached the goal", K[a]->name, K[a]->rounds, K[use]->name);
+            compat_refine_abandon(K[a]->r);
+            K[a]->r = NULL;
+            K[a]->q = -1;
+        }
+    if (others) {
+        char rest[512] = "";
+        for (int a = 0; a < NCAND; a++)
             if (a != use && K[a]->built && K[a]->q >= 0) {
-                size_t l = strlen(others);
-                snprintf(others + l, sizeof others - l, "%s%s: %.2f deg", l ? "; " : "", K[a]->name, K[a]->q);
+                size_t l = strlen(rest);
+                snprintf(rest + l, sizeof rest - l, "%s%s: %.2f deg", l ? "; " : "", K[a]->name, K[a]->q);
             }
         if (K[use]->q >= 0)
-            info(1, "kept %s: worst angle %.2f deg%s%s%s", K[use]->name, K[use]->q, *others ? " (" : "", others, *others ? ")" : "");
+            info(1, "kept %s: worst angle %.2f deg%s%s%s", K[use]->name, K[use]->q, *rest ? " (" : "", rest, *rest ? ")" : "");
     }
-    for (int a = 0; a < nk; a++)
+    for (int a = 0; a < NCAND; a++)
         if (a != use && K[a]->built) compat_free(&K[a]->cp);
     *cp = K[use]->cp;
     snprintf(kept, ksize, "%s", K[use]->name);
     if (use > 0 && o->points_out) {   /* the rows actually used */
         struct compat tmp;
         char quiet[LOG_SIZE] = "";   /* its -v lines were printed */
-        struct options *w = use == 1 ? &off : &dense;
+        struct options *w = &K[use]->opt;
         w->points_out = o->points_out;
         w->log = quiet;
         if (build_single(w, R, &tmp) == 0) compat_free(&tmp);
     }
     return K[use]->q;
-}
-
-/* One more candidate after a result below the goal: the matching again
- * with the options alt (twice --match-points, or the spread term), built,
- * triangulated, refined to its end, and the larger worst angle kept (the
- * first on a tie).  cp: the refined mesh, q1 its worst angle (degrees),
- * cur: its name for -v; returns the kept one's. */
-static double retry(const struct options *o, struct options *alt, struct rings *R, struct compat *cp, double q1,
-                    const char *name, const char *cur)
-{
-    struct candidate k;
-    memset(&k, 0, sizeof k);
-    alt->points_out = NULL;
-    alt->match_default = 0;
-    k.name = name;
-    info(1, "below the goal (%.2f deg): %s too; at %.3f s", q1, name, elapsed());
-    if (dense_start(alt, R, &k) < 0) {
-        info(1, "%s: %s; left out", name, cm_errmsg());
-        if (k.r) compat_refine_abandon(k.r);
-        compat_free(&k.cp);
-        return q1;
-    }
-    int st;
-    while ((st = compat_refine_step(k.r)) > 0) {}
-    if (st < 0) die("%s", cm_errmsg());
-    if (compat_refine_finish(k.r) < 0) die("%s", cm_errmsg());
-    double q2 = refine_report(alt, &k.cp, k.q0, &k.rs, &k.pa, name);
-    if (!(q2 > q1)) {
-        info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", cur, q1, name, q2);
-        compat_free(&k.cp);
-        return q1;
-    }
-    info(1, "kept %s: worst angle %.2f deg (%s: %.2f deg)", name, q2, cur, q1);
-    compat_free(cp);
-    *cp = k.cp;
-    if (o->points_out) {   /* the rows actually used */
-        struct compat tmp;
-        char quiet[LOG_SIZE] = "";
-        alt->points_out = o->points_out;
-        alt->log = quiet;
-        if (build_single(alt, R, &tmp) == 0) compat_free(&tmp);
-    }
-    return q2;
 }
 
 int main(int argc, char **argv)
@@ -1611,45 +1650,10 @@ int main(int argc, char **argv)
             "min angle %.2f deg; at %.3f s", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
          cp.stage_count[2], o.split != COMPAT_LINKPATH ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
     char kept[96] = "the matched points";   /* -v: the name of the mesh in cp */
-    double q1 = o.match_default && o.refine ? race(&o, R, &cp, q0, &ah, kept, sizeof kept) : improve(&o, &cp, q0);
+    /* the default matching: its candidates raced (race) */
+    double q1 = !multi && o.refine && o.match_auto && o.match >= 0 ? race(&o, R, &cp, q0, &ah, kept, sizeof kept)
+                                                                     : improve(&o, &cp, q0);
     if (q1 < 0) die("%s", cm_errmsg());
-    /* the default matching with fewer than 3 given rows (no race: nothing
-     * else to compare) below the goal: the matching with twice --match-points */
-    if (!multi && o.refine && o.match_auto && !o.match_default && o.match >= 0 && below_goal(&o, &cp, q1) &&
-        o.match_points < 1000 && !o.match_points_given) {
-        struct options dense = o;
-        dense.match_points = DENSE_FACTOR * o.match_points < 1000 ? DENSE_FACTOR * o.match_points : 1000;
-        char name[64];
-        snprintf(name, sizeof name, "the matching with %d points", dense.match_points);
-        double q2 = retry(&o, &dense, R, &cp, q1, name, kept);
-        if (q2 > q1) snprintf(kept, sizeof kept, "%s", name);
-        q1 = q2;
-    }
-    /* any default matching still below the goal: the matching with the
-     * spread term (--spread SPREAD_RETRY), where the stretch of a leg
-     * bunched at one end is what keeps it there */
-    if (!multi && o.refine && o.match_auto && o.match >= 0 && below_goal(&o, &cp, q1) && !o.spread_given) {
-        struct options spread = o;
-        spread.spread = SPREAD_RETRY;
-        if (!o.match_points_given)
-            spread.match_points = SPREAD_POINTS * o.match_points < 1000 ? SPREAD_POINTS * o.match_points : 1000;
-        char name[64];
-        snprintf(name, sizeof name, "the matching with %d points and --spread %g", spread.match_points, (double)SPREAD_RETRY);
-        q1 = retry(&o, &spread, R, &cp, q1, name, kept);
-    }
-    /* still below the goal, with 3 or more given rows: the matched points
-     * moved along the outlines so that they force as little stretch as the
-     * given rows allow (modulus_match_polish; measured in compat-tri(1):
-     * without given rows, on the traced camel, it gained on 1 of 16 runs
-     * for 89% more CPU) */
-    if (!multi && o.refine && o.match_default && o.match >= 0 && below_goal(&o, &cp, q1) && !o.mpolish_given) {
-        struct options mp = o;
-        mp.mpolish = MPOLISH_STEPS;
-        mp.mpolish_soft = 1;
-        char name[96];
-        snprintf(name, sizeof name, "the matched points with --match-polish %d", MPOLISH_STEPS);
-        q1 = retry(&o, &mp, R, &cp, q1, name, kept);
-    }
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
         compat_pose_quality(&cp, s, &mn, &u10, &u20);
