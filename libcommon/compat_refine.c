@@ -2209,11 +2209,6 @@ void compat_refine_threads(struct compat_refiner *r, int threads)
     r->pa.threads = threads;
 }
 
-void compat_refine_grow(struct compat_refiner *r, int on)
-{
-    r->pa.grow = on;
-}
-
 void compat_refine_abandon(struct compat_refiner *r)
 {
     if (r) refiner_free(r);

@@ -255,7 +255,6 @@ int compat_refine(struct compat *c, const struct compat_refine_params *pa,
  *                      coarsening, renumbering; frees the refiner.  0 or -1.
  * compat_refine_threads sets the threads of the later steps (pa->threads;
  *                      the result does not depend on it).
- * compat_refine_grow   sets pa->grow for the later steps.
  * compat_refine_abandon frees the refiner; c stays a valid compatible
  *                      triangulation of the last round (unpolished, its
  *                      vertices not renumbered) to be freed by the caller. */
@@ -266,10 +265,6 @@ int compat_refine_step(struct compat_refiner *r);
 void compat_refine_progress(const struct compat_refiner *r, double *worst, int *nbad, int *fewest);
 int compat_refine_finish(struct compat_refiner *r);
 void compat_refine_threads(struct compat_refiner *r, int threads);
-/* compat_refine_grow sets pa->grow for the later rounds (compat-tri: off
- * while two candidates race, whose progress the race compares round by
- * round; on for one refined alone). */
-void compat_refine_grow(struct compat_refiner *r, int on);
 void compat_refine_abandon(struct compat_refiner *r);
 /* compat_refine_pass: the current pass (0: every bad triangle split, 1:
  * the share, 2: the lookahead; see split_share), its rounds so far, and

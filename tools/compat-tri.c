@@ -61,12 +61,13 @@ static const char help[] =
 "                        'off' (3 or more rows: only the given rows, arc length\n"
 "                        between them: the earlier default); no -m and the\n"
 "                        matched points not at --min-angle after 3 rounds:\n"
-"                        'off' (3 or more rows), the matching with twice\n"
-"                        --match-points and the same with --spread 3 are\n"
-"                        refined side by side, the least work first, one\n"
-"                        falling behind dropped, the first at the goal kept\n"
-"                        (-v); all below it: (3 or more rows) the matched\n"
-"                        points moved by --match-polish 64 too, the best kept\n"
+"                        'off' (3 or more rows) is refined beside them, and\n"
+"                        once no first pass is at the goal the matching with\n"
+"                        twice --match-points and the same with --spread 3;\n"
+"                        the least work first, one falling behind dropped,\n"
+"                        the first at the goal kept (-v); all below it: (3 or\n"
+"                        more rows) the matched points moved by\n"
+"                        --match-polish 64 too, the best kept\n"
 "      --match-points K  correspondence points placed by the matching: the given\n"
 "                        rows plus SHAPE0's most salient corners (default 12;\n"
 "                        given, no matching with twice K is tried)\n"
@@ -1217,18 +1218,41 @@ static double best_q(struct candidate *const *K)
     return q;
 }
 
-/* a is behind b (both running, each RACE_ROUNDS rounds or more into the
- * current pass of its refinement, b after no more work): a's last round
+/* the largest worst angle (degrees) a candidate has kept so far: a
+ * finished one's, or a running one's best (compat_refine_progress; 0:
+ * none) */
+static double best_sofar(struct candidate *const *K)
+{
+    double q = 0;
+    for (int a = 0; a < NCAND; a++) {
+        if (!K[a]->built) continue;
+        double w = K[a]->q;
+        if (K[a]->r) {
+            compat_refine_progress(K[a]->r, &w, NULL, NULL);
+            w *= 180 / M_PI;
+        }
+        if (w > q) q = w;
+    }
+    return q;
+}
+
+/* a is behind b (both running; b RACE_ROUNDS rounds or more into the
+ * current pass of its refinement after no more work or no more rounds
+ * than a, a one round or more into its own): a's last round
  * has RACE_BEHIND times b's triangles below the goal or more and a
  * smaller worst angle than b's last round -- smaller by RACE_MARGIN
  * degrees or more, and the best a kept (an earlier pass's result
- * included) too, where either is in a later pass (the second and third
- * split only the worst share of those triangles, so their count says
- * less there: measured, t0587 horse poses 2 5 with --spread 0 kept 15.49
- * deg instead of 16.17 without the margin, the rows alone dropped at
- * 10.41 deg against 11.09).  The -v words for it in why (wsize bytes). */
+ * included) too, where either is in a later pass, and b within
+ * RACE_MARGIN of the goal (radians) where a is.  The second and third passes split only the
+ * worst share of those triangles, and their result gains most in the
+ * final polish, so their last round says less (measured: t0587 horse
+ * poses 2 5 with --spread 0 kept 15.49 deg instead of 16.17 without the
+ * margin, the rows alone dropped at 10.41 deg against 11.09; the traced
+ * camel's side frames 1 4 5 kept 18.10 instead of 19.08 without the
+ * nearness to the goal, the spread candidate dropped at 11.84 against
+ * 16.74).  The -v words for it in why (wsize bytes). */
 #define RACE_MARGIN 3
-static int cand_behind(const struct candidate *a, const struct candidate *b, char *why, size_t wsize)
+static int cand_behind(const struct candidate *a, const struct candidate *b, double goal, char *why, size_t wsize)
 {
     int pa, pb, ra, rb, na, nb;
     double wa, wb, best;
@@ -1236,9 +1260,11 @@ static int cand_behind(const struct candidate *a, const struct candidate *b, cha
     compat_refine_pass(a->r, &pa, &ra, &wa, &na);
     compat_refine_pass(b->r, &pb, &rb, &wb, &nb);
     compat_refine_progress(a->r, &best, NULL, NULL);
-    if (ra < RACE_ROUNDS || rb < RACE_ROUNDS || b->work > a->work || (double)na < RACE_BEHIND * (double)nb) return 0;
+    if (ra < 1 || rb < RACE_ROUNDS || (b->work > a->work && b->rounds > a->rounds) || (double)na < RACE_BEHIND * (double)nb)
+        return 0;
     double margin = pa || pb ? RACE_MARGIN * M_PI / 180 : 0;
     if (!(wa < wb - margin && (margin == 0 || best < wb - margin))) return 0;
+    if (pa && wb < goal - margin) return 0;   /* a in a later pass, b not near the goal yet */
     snprintf(why, wsize, "%s dropped after %d rounds: worst angle %.2f deg with %d triangles below the goal (%s after %d: "
              "%.2f deg, %d)", a->name, a->rounds, wa * 180 / M_PI, na, b->name, b->rounds, wb * 180 / M_PI, nb);
     return 1;
@@ -1370,24 +1396,30 @@ static int cand_start(struct candidate *k, struct ahead *ah, int threads)
 
 /* The default matching (cp: the matched points, built and triangulated,
  * q0 its worst angle, radians) against the other candidates of the run
- * (C_MATCHED..C_POLISH, those its options leave).  The matched points are
- * refined alone while their triangles below the goal keep falling; once
- * they are not at the goal after RACE_ROUNDS rounds (or finished below
- * it), the others are built and every live candidate is refined a round
- * at a time, the one with the least work (ROUND_WORK) so far first.  The
- * first to finish at the goal is kept and the others stopped, so a
- * candidate whose maps are stretched does not run to --max-vertices
- * before the one that reaches the goal in a few rounds starts (measured
- * in compat-tri(1)).  A candidate is dropped once it falls behind: a
- * smaller worst angle than another's, with at least RACE_BEHIND times its
- * triangles below the goal, that other after no more work and both after
- * RACE_ROUNDS rounds or more (on the six elephant poses the matched
- * points have 434 bad triangles at 3.7 deg against 201 at 6.8 and would
- * go on to 3041 vertices at 18.5 deg).  If none reaches the goal, the
- * largest worst angle is kept (the first in the order above on a tie).
- * ah: the rows alone built ahead (struct ahead; not started: built here
- * when needed).  On return cp holds the kept mesh and kept (ksize bytes)
- * its name for -v; returns its worst angle (degrees). */
+ * (C_MATCHED..C_POLISH, those its options leave), in stages:
+ *   0  the matched points alone, while their triangles below the goal
+ *      keep falling;
+ *   1  not at the goal after RACE_ROUNDS rounds (or finished below it):
+ *      the rows alone beside them (3 or more rows);
+ *   2  no candidate left in its first pass (every first pass ended below
+ *      the goal): the matching with twice --match-points and the spread
+ *      candidate as well -- where a first pass reaches the goal they are
+ *      never built (the traced elephant walk without rows, the six shared
+ *      elephant poses: measured in compat-tri(1));
+ *   3  every one finished below the goal: the polished matching.
+ * Every live candidate is refined a round at a time, the one with the
+ * least work (ROUND_WORK) so far first; the first to finish at the goal is
+ * kept and the others stopped, so a candidate whose maps are stretched
+ * does not run to --max-vertices before the one that reaches the goal in
+ * a few rounds starts (t0587's six horse poses: 8.75 -> 1.8 s).  A
+ * candidate falling behind another is dropped (cand_behind; on the six
+ * elephant poses the matched points have 434 bad triangles at 3.7 deg
+ * against the rows alone's 201 at 6.8 and would go on to 3041 vertices at
+ * 18.5 deg).  If none reaches the goal, the largest worst angle is kept
+ * (the first in the order of the enum on a tie).  ah: the rows alone
+ * built ahead (struct ahead; not started: built here when needed).  On
+ * return cp holds the kept mesh and kept (ksize bytes) its name for -v;
+ * returns its worst angle (degrees). */
 /* the further matching has DENSE_FACTOR times --match-points (measured on
  * the survey of compat-tri(1): 2 raised the mean worst angle of the 37
  * subsets below 20 deg from 8.40 to 9.34 at 64 -> 97 s of CPU, 3 to 9.52
@@ -1449,43 +1481,66 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     if (!(m->r = compat_refine_begin(&m->cp, &m->pa, &m->rs))) die("%s", cm_errmsg());
     struct progress pr;
     long done = 0;
-    int others = 0, win = -1;
+    int stage = 0, win = -1;   /* 0: the matched points alone, 1: and the rows alone, 2: and the further matchings */
     progress_start(&pr, "compat-tri: refinement rounds", 0);
     for (;;) {
         if (m->r && ah->started && atomic_load(&ah->done)) compat_refine_threads(m->r, o->threads);
         if (!m->r && !below_goal(o, &m->cp, m->q)) { win = C_MATCHED; break; }   /* at the goal alone */
         int nbad0 = 0, fewest0 = 0;
         if (m->r) compat_refine_progress(m->r, NULL, &nbad0, &fewest0);
-        if (!others && (!m->r || (m->rounds >= RACE_ROUNDS && nbad0 > fewest0))) {
-            /* the matched points fall short: the others */
-            others = 1;
+        /* the rows alone (3 or more rows) once the matched points fall
+         * short after RACE_ROUNDS rounds */
+        if (stage == 0 && (!m->r || (m->rounds >= RACE_ROUNDS && nbad0 > fewest0))) {
+            stage = 1;
+            if (K[C_ROWS]->want) {
+                if (m->r)
+                    info(1, "the matched points not at the goal after %d rounds, %d triangles below it (%d after an "
+                            "earlier round): %s too; at %.3f s", m->rounds, nbad0, fewest0, K[C_ROWS]->name, elapsed());
+                else info(1, "below the goal with the matched points (%.2f deg): %s too; at %.3f s", m->q,
+                          K[C_ROWS]->name, elapsed());
+                K[C_ROWS]->R = R;
+                if (!ah->started) cand_build(K[C_ROWS], R);
+                if (cand_start(K[C_ROWS], ah, o->threads) == 0 && K[C_ROWS]->pa.threads == 1)
+                    compat_refine_threads(K[C_ROWS]->r, o->threads);
+                if (m->r) compat_refine_threads(m->r, o->threads);
+                continue;
+            }
+        }
+        /* the further matchings once no first pass is left (every live
+         * candidate's ended below the goal): where one reaches it there,
+         * as the matched points alone on the traced elephant walk or the
+         * rows alone on the six shared elephant poses, nothing more is
+         * built (measured: with them from the start 0.6 -> 1.55 s there) */
+        int first = 0;
+        for (int a = 0; a < NCAND; a++)
+            if (K[a]->built && K[a]->r) {
+                int pass;
+                compat_refine_pass(K[a]->r, &pass, NULL, NULL, NULL);
+                if (!pass || K[a]->used < K[a]->pre) first = 1;
+            }
+        if (stage == 1 && !first) {
+            stage = 2;
             char names[512] = "";
-            for (int a = 1; a < C_POLISH; a++)
+            for (int a = C_DENSE; a < C_POLISH; a++)
                 if (K[a]->want) {
                     size_t l = strlen(names);
                     snprintf(names + l, sizeof names - l, "%s%s", l ? "; " : "", K[a]->name);
                 }
-            if (!*names) continue;   /* (the polish, if any, once the matched points finish) */
-            if (m->r)
-                info(1, "the matched points not at the goal after %d rounds, %d triangles below it (%d after an earlier "
-                        "round): %s too; at %.3f s", m->rounds, nbad0, fewest0, names, elapsed());
-            else info(1, "below the goal with the matched points (%.2f deg): %s too; at %.3f s", m->q, names, elapsed());
-            /* built side by side where there are threads (the rows alone
-             * may be on the thread of struct ahead already) */
+            if (!*names) continue;
+            info(1, "no first pass at the goal (%.2f deg kept so far): %s too; at %.3f s", best_sofar(K), names, elapsed());
+            /* built side by side where there are threads */
             pthread_t th[NCAND];
             int on[NCAND] = {0}, par = parallel_threads(o->threads) > 1;
-            for (int a = 1; a < C_POLISH; a++) {
-                if (!K[a]->want || (a == C_ROWS && ah->started)) continue;
+            for (int a = C_DENSE; a < C_POLISH; a++) {
+                if (!K[a]->want) continue;
                 K[a]->R = R;
                 if (par) on[a] = pthread_create(&th[a], NULL, cand_build_run, K[a]) == 0;
                 if (!on[a]) cand_build(K[a], R);
             }
-            for (int a = 1; a < C_POLISH; a++)
+            for (int a = C_DENSE; a < C_POLISH; a++)
                 if (on[a]) pthread_join(th[a], NULL);
-            for (int a = 1; a < C_POLISH; a++)
-                if (K[a]->want && cand_start(K[a], a == C_ROWS ? ah : NULL, o->threads) == 0 && K[a]->pa.threads == 1)
-                    compat_refine_threads(K[a]->r, o->threads);
-            if (m->r) compat_refine_threads(m->r, o->threads);
+            for (int a = C_DENSE; a < C_POLISH; a++)
+                if (K[a]->want) cand_start(K[a], NULL, o->threads);
             continue;
         }
         int pick = -1;   /* the least work first */
@@ -1508,7 +1563,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
             if (!K[a]->built || !K[a]->r) continue;
             for (int b = 0; b < NCAND; b++) {
                 char why[512];
-                if (b != a && K[b]->built && K[b]->r && cand_behind(K[a], K[b], why, sizeof why)) {
+                if (b != a && K[b]->built && K[b]->r && cand_behind(K[a], K[b], m->pa.goal, why, sizeof why)) {
                     info(1, "%s; at %.3f s", why, elapsed());
                     compat_refine_abandon(K[a]->r);
                     K[a]->r = NULL;
@@ -1541,7 +1596,9 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
             K[a]->r = NULL;
             K[a]->q = -1;
         }
-    if (others) {
+    int nbuilt = 0;
+    for (int a = 1; a < NCAND; a++) nbuilt += K[a]->built;
+    if (nbuilt) {
         char rest[512] = "";
         for (int a = 0; a < NCAND; a++)
             if (a != use && K[a]->built && K[a]->q >= 0) {
