@@ -230,3 +230,12 @@ given_on_vertices() {
 		if (!f) { print "pose " s ": given row " c + 1 " is not a vertex at its point"; bad = 1 } }
 		exit bad }' "$gm" "$gc" "$@"
 }
+
+# same_bytes_threads ARGS...: compat-tri ARGS gives the same bytes with
+# --threads 1, 2 and 3
+same_bytes_threads() {
+	compat-tri --threads 1 "$@" >sbt1.mesh &&
+	compat-tri --threads 2 "$@" >sbt2.mesh &&
+	compat-tri --threads 3 "$@" >sbt3.mesh &&
+	test_cmp sbt1.mesh sbt2.mesh && test_cmp sbt1.mesh sbt3.mesh
+}
