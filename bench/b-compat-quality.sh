@@ -118,3 +118,21 @@ if [ -e "$W" ]; then
 else
 	echo "compat-tri traced walk: skipped (no $W)"
 fi
+
+# 5. The stretched characters of tests/t0587-stick-character.awk (a horse
+#    and a flamingo whose thin legs, neck and tail bend from pose to pose;
+#    traced by img2rings, 70-132 outline points per pose), all six poses
+#    with the five given rows of the tests (feet, head, neck, tail), default
+#    options: wall and CPU against 1 s, and the worst angle.  The horse
+#    reaches 20 degrees; the flamingo does not (its pose 0 hides a leg in a
+#    slit, compat-tri(1) BUGS).
+TEST_DIRECTORY="$ROOT/tests"
+. "$ROOT/tests/morph2d-lib.sh"
+mkdir -p "$T/stick"
+for ch in horse flamingo; do
+	(cd "$T/stick" && stick_poses $ch 0 1 2 3 4 5 && stick_rows $ch 0 1 2 3 4 5 >$ch.corr) || exit 1
+	tw=$(cpu "$T/k.log" compat-tri -v -c "$T/stick/$ch.corr" "$T/stick/${ch}0.rings" "$T/stick/${ch}1.rings" \
+		"$T/stick/${ch}2.rings" "$T/stick/${ch}3.rings" "$T/stick/${ch}4.rings" "$T/stick/${ch}5.rings") || exit 1
+	set -- $(ct_stats "$T/k.log")
+	echo "compat-tri default, six stick-$ch poses (t0587, five rows): $(cat "$T/wall") s wall ($tw s CPU, worst $1 deg, $2 vertices, load $(cut -d' ' -f1 /proc/loadavg)) | baseline goal: 1 s | ratio $(awk -v a="$(cat "$T/wall")" 'BEGIN { printf "%.2f", a }')"
+done

@@ -643,6 +643,8 @@ struct pose_jobs {
     const unsigned char *bnd, *seed;
     const int *seg;
     const int *bsucc;     /* next outline vertex (for the sliding ones) */
+    const int *be;        /* nbe: the outline edges' first vertices a (bnd[a], bsucc[a] >= 0), ascending */
+    int nbe;
     const double *stol;   /* work.stol */
     int mips, smooth, polish; /* sweeps of each part of pose_job (0: none) */
     double goal;
@@ -839,6 +841,13 @@ static double mstar_below(struct mstar *st, const double *p, double ceiling)
     return INFINITY;   /* not reached */
 }
 
+/* |(x, y)|: hypot without its care for overflow, which costs a tenth of
+ * the smoothing's time (coordinates here are far from 1e150) */
+static inline double len2(double x, double y)
+{
+    return sqrt(x * x + y * y);
+}
+
 /* Per-shape smoothing by the MIPS energy of star_mips: every interior
  * vertex takes a gradient step (backtracking from a quarter of its mean
  * edge length) that lowers its star's energy and keeps every triangle
@@ -866,21 +875,21 @@ static void mips_job(void *ctx, int s)
                 if ((bnd[v] && !sl) || t->VFs[v + 1] == t->VFs[v]) continue;
                 double g[2] = {0, 0}, *x = X + 2 * v;
                 struct mstar st;
-                st.first = 0;
+                st.first = st.n = 0;
                 int big = !mstar_load(c, t, s, v, &st);
                 double E0 = big ? star_mips(c, t, s, v, x, g, INFINITY) : mstar_mips(&st, x, g);
-                double gn = hypot(g[0], g[1]);
+                double gn = len2(g[0], g[1]);
                 if (!(gn > 0) || !isfinite(E0)) continue;
                 double L = 0;
                 int nn = t->VVs[v + 1] - t->VVs[v];
                 for (int i = t->VVs[v]; i < t->VVs[v + 1]; i++)
-                    L += hypot(X[2 * t->VV[i]] - x[0], X[2 * t->VV[i] + 1] - x[1]);
+                    L += len2(X[2 * t->VV[i]] - x[0], X[2 * t->VV[i] + 1] - x[1]);
                 L /= nn;
                 const double *A = sl ? X + 2 * seg[2 * v] : NULL, *B = sl ? X + 2 * seg[2 * v + 1] : NULL;
                 double ux = 0, uy = 0, tv = 0, lab = 1;
                 if (sl) {   /* the gradient along the segment A-B; v = A + tv (B - A) */
                     ux = B[0] - A[0]; uy = B[1] - A[1];
-                    lab = hypot(ux, uy);
+                    lab = len2(ux, uy);
                     if (!(lab > 0)) continue;
                     tv = ((x[0] - A[0]) * ux + (x[1] - A[1]) * uy) / (lab * lab);
                     gn = (g[0] * ux + g[1] * uy) / lab;
@@ -929,13 +938,13 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
     if (!nn) return 0;
     double L = 0;
     for (int i = t->VVs[v]; i < t->VVs[v + 1]; i++)
-        L += hypot(X[2 * t->VV[i]] - x[0], X[2 * t->VV[i] + 1] - x[1]);
+        L += len2(X[2 * t->VV[i]] - x[0], X[2 * t->VV[i] + 1] - x[1]);
     L /= nn;
     const double *A = sl ? X + 2 * seg[2 * v] : NULL, *B = sl ? X + 2 * seg[2 * v + 1] : NULL;
     double ux = 0, uy = 0, lab = 1;
     if (sl) {
         ux = B[0] - A[0]; uy = B[1] - A[1];
-        lab = hypot(ux, uy);
+        lab = len2(ux, uy);
         if (!(lab > 0)) return 0;
     }
     static const double D[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
@@ -944,10 +953,12 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
                                    {0.7071067811865476, -0.7071067811865476}};
     double p[2] = {x[0], x[1]};
     int moved = 0;
+    int k0 = 0;   /* the direction that gained last: tried first */
     for (double h = 0.2 * L; h > 1e-3 * L;) {
         double bq = q, bp[2] = {0, 0};
         int nd = sl ? 2 : 8, found = 0;
-        for (int k = 0; k < nd; k++) {
+        for (int i = 0; i < nd && !found; i++) {
+            int k = (k0 + i) % nd;
             double cp[2];
             if (sl) {
                 double tv = ((p[0] - A[0]) * ux + (p[1] - A[1]) * uy) / (lab * lab);
@@ -959,7 +970,7 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
             }
             double thr = bq * (1 + 1e-9);
             double cq = big ? star_quality_above(c, t, s, v, cp, thr) : star_above(&st, cp, thr);
-            if (cq > thr) { bq = cq; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; }
+            if (cq > thr) { bq = cq; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; k0 = k; }
         }
         if (found) { q = bq; p[0] = bp[0]; p[1] = bp[1]; moved = 1; }
         else h *= 0.5;
@@ -996,7 +1007,7 @@ static double bseglen(const double *B, int M, double i)
 {
     int k = (((int)i % M) + M) % M;
     const double *a = B + 2 * k, *b = B + 2 * ((k + 1) % M);
-    return hypot(b[0] - a[0], b[1] - a[1]);
+    return len2(b[0] - a[0], b[1] - a[1]);
 }
 
 static double bwalk(const double *B, int M, double u, double d, double lo, double hi)
@@ -1113,9 +1124,9 @@ static int polish_slide(const struct pose_jobs *pj, int s, int v)
             SLIDE_Q(cq);
             int ok = cq > bq * (1 + 1e-9) && chord_ok(B, M, up, cu, pj->stol[s]) && chord_ok(B, M, cu, un, pj->stol[s]);
             /* no other outline edge touched by the two new edges */
-            for (int a = 0; a < c->nv && ok; a++) {
-                int b = pj->bnd[a] ? pj->bsucc[a] : -1;
-                if (b < 0 || a == v || b == v) continue;
+            for (int e = 0; e < pj->nbe && ok; e++) {
+                int a = pj->be[e], b = pj->bsucc[a];
+                if (a == v || b == v) continue;
                 int inch = 0;
                 for (int i = 0; i < nch && !inch; i++) inch = a == ch[i] || b == ch[i];
                 if (inch) continue;
@@ -1205,12 +1216,18 @@ static int smooth_poses(struct compat *c, const struct work *w, const unsigned c
                         double goal, int mips, int smooth, int polish, int threads, double *cost)
 {
     struct topology t;
-    if (topology_build(c->F, c->nf, c->nv, &t) < 0) return -1;
+    int *be = malloc((c->nv ? c->nv : 1) * sizeof *be), nbe = 0;
+    if (!be) return cm_seterr("out of memory");
+    for (int a = 0; a < c->nv; a++)
+        if (w->bnd[a] && w->bsucc[a] >= 0) be[nbe++] = a;
+    if (topology_build(c->F, c->nf, c->nv, &t) < 0) { free(be); return -1; }
     struct pose_jobs pj = {.c = c, .t = &t, .bnd = w->bnd, .seed = seed, .seg = w->seg, .bsucc = w->bsucc,
+                           .be = be, .nbe = nbe,
                            .stol = w->slide_now ? w->stol : NULL, .mips = mips, .smooth = smooth,
                            .polish = polish, .goal = goal, .threads = threads, .cost = cost};
     int moves = run_poses(&pj);
     topology_free(&t);
+    free(be);
     return moves;
 }
 
