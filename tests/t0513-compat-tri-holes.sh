@@ -111,7 +111,7 @@ test_expect_success 'two pieces (a separate tail): one mesh of two components' '
 	compat-tri -e 0 -l 0 -s 0 -c tail.corr $mi_files >tail0.mesh &&
 	: >nopts && check_holes tail0.mesh tail.corr nopts 0 2 "1 5" $mi_files
 '
-test_expect_success 'hole counts differ: one-line error naming the file' '
+test_expect_success 'hole counts differ: one-line error naming the file, the pieces and holes of each, and the remedy' '
 	for k in 0 1 2 3; do
 		awk -v pose=$k -v tips=tips$k -v pts=pts$k -f "$TEST_DIRECTORY/t0513-holey.awk" >p$k.rings &&
 		tr " " "\n" <tips$k >tips$k.col || return 1
@@ -119,7 +119,8 @@ test_expect_success 'hole counts differ: one-line error naming the file' '
 	awk -v pose=2 -v eyes=1 -v tips=t2 -v pts=q2 -f "$TEST_DIRECTORY/t0513-holey.awk" >oneeye.rings &&
 	cut -d" " -f1,2 all.corr >c01 &&
 	test_fails_cleanly compat-tri -c c01 p0.rings oneeye.rings &&
-	grep -q "cannot read .oneeye.rings.: 3 rings, but .p0.rings. has 4" .err
+	grep -q "cannot read .oneeye.rings.: 3 rings (1 piece, 2 holes), but .p0.rings. has 4 (1 piece, 3 holes)" .err &&
+	grep -q "trace the outer outlines alone (img2rings -1)" .err
 '
 test_expect_success 'an interior point outside its outline or in an eye: error naming file and line' '
 	make_inputs two 0 1 &&

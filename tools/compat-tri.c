@@ -933,14 +933,38 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
     return out;
 }
 
+/* "P piece(s), H hole(s)" of one shape's rings by their nesting (a ring
+ * inside an odd number of rings is a hole); r's rings may be reversed */
+static void ring_kinds(struct rings *r, char *out, size_t size)
+{
+    int nr = r->nrings, *parent = malloc((nr ? nr : 1) * sizeof *parent), holes = 0;
+    unsigned char *flipped = malloc(nr ? nr : 1);
+    if (!parent || !flipped || compat_nest(1, r, parent, flipped) < 0) {
+        snprintf(out, size, "?");
+    } else {
+        for (int k = 0; k < nr; k++) holes += compat_is_hole(parent, k);
+        snprintf(out, size, "%d piece%s, %d hole%s", nr - holes, nr - holes == 1 ? "" : "s", holes,
+                 holes == 1 ? "" : "s");
+    }
+    free(parent);
+    free(flipped);
+}
+
 /* several rings or interior points: compat_holes.h */
 static void build_multi(const struct options *o, struct rings *R, struct compat *cp)
 {
     int N = o->nshapes, nr = R[0].nrings;
     for (int s = 1; s < N; s++)
-        if (R[s].nrings != nr)
-            die("cannot read '%s': %d ring%s, but '%s' has %d (rings are matched by order)", R[s].name,
-                R[s].nrings, R[s].nrings == 1 ? "" : "s", R[0].name, nr);
+        if (R[s].nrings != nr) {
+            /* traced frames: a gap between two legs that closes in some
+             * frames is a hole in the others only */
+            char ka[64], k0[64];
+            ring_kinds(&R[s], ka, sizeof ka);
+            ring_kinds(&R[0], k0, sizeof k0);
+            die("cannot read '%s': %d ring%s (%s), but '%s' has %d (%s); every shape needs the same rings "
+                "(matched by order): where a hole shows in some frames only, trace the outer outlines alone "
+                "(img2rings -1)", R[s].name, R[s].nrings, R[s].nrings == 1 ? "" : "s", ka, R[0].name, nr, k0);
+        }
     struct columns C = {0}, I = {0};
     if (o->corr && columns_read(o->corr, N, -1, NULL, &C) < 0) die("%s", cm_errmsg());
     int *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
