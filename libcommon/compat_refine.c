@@ -953,12 +953,10 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
                                    {0.7071067811865476, -0.7071067811865476}};
     double p[2] = {x[0], x[1]};
     int moved = 0;
-    int k0 = 0;   /* the direction that gained last: tried first */
     for (double h = 0.2 * L; h > 1e-3 * L;) {
         double bq = q, bp[2] = {0, 0};
         int nd = sl ? 2 : 8, found = 0;
-        for (int i = 0; i < nd && !found; i++) {
-            int k = (k0 + i) % nd;
+        for (int k = 0; k < nd; k++) {
             double cp[2];
             if (sl) {
                 double tv = ((p[0] - A[0]) * ux + (p[1] - A[1]) * uy) / (lab * lab);
@@ -970,7 +968,7 @@ static int polish_vertex(struct compat *c, const struct topology *t, int s, int 
             }
             double thr = bq * (1 + 1e-9);
             double cq = big ? star_quality_above(c, t, s, v, cp, thr) : star_above(&st, cp, thr);
-            if (cq > thr) { bq = cq; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; k0 = k; }
+            if (cq > thr) { bq = cq; bp[0] = cp[0]; bp[1] = cp[1]; found = 1; }
         }
         if (found) { q = bq; p[0] = bp[0]; p[1] = bp[1]; moved = 1; }
         else h *= 0.5;

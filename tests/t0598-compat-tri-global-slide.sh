@@ -8,8 +8,9 @@ test_expect_success 'generate: horse poses 2 5' '
 	stick_rows horse 2 5 >c25
 '
 # measured (compat-tri(1), REFINEMENT, The global polish with outline
-# slides): poses 2 5 16.00 deg with --slide local, 16.17 by default (stop
-# 42's cheaper vertex polish: 15.73 and 15.76); --spread 0 leaves out the
+# slides): poses 2 5 16.00 deg with --slide local, 16.17 by default (since
+# stop 42's smoothing lengths, plain square roots that differ from hypot in
+# the last bit: 15.98 and 16.01); --spread 0 leaves out the
 # spread candidate, which takes this pair to 20.01 deg either way (t0575).
 # Both runs are the same up to that last polish, so the default must end
 # above --slide local, by the raise its -v line reports.
