@@ -434,6 +434,388 @@ static void region_free(struct region *g)
 
 static int solve(struct compat *c, struct region *g, int depth);
 
+/* ------------------------------------------------------------------ */
+/* bent cuts */
+
+/* A cut from hole vertex H->v[i] to outer vertex O->v[j] through k new
+ * vertices (0: straight) at P (N by k by 2: P[2 * (s * k + t)] is point t
+ * of shape s, from the hole's end) */
+struct bcut { int i, j, k; double score; double *P; };
+
+/* does the segment AB stay off the region's rings: it meets no ring edge
+ * and no interior point except at ring vertices ua, ub (-1: none; AB's
+ * ends where they are ring vertices) (exact) */
+static int seg_clear(const double *X, const struct region *g, const double *A, const double *B, int ua, int ub)
+{
+    for (int y = -1; y < g->nh; y++) {
+        const struct cyc *C = y < 0 ? &g->outer : &g->holes[y];
+        if (C->m == 1) {
+            if (C->v[0] != ua && C->v[0] != ub && on_seg(A, B, X + 2 * C->v[0])) return 0;
+            continue;
+        }
+        for (int e = 0; e < C->m; e++) {
+            int a = C->v[e], b = C->v[(e + 1) % C->m];
+            if (a == ua || b == ua || a == ub || b == ub) continue;
+            if (segments_meet(A, B, X + 2 * a, X + 2 * b)) return 0;
+        }
+    }
+    return 1;
+}
+
+/* exact point in polygon of explicit points (q not on it) */
+static int inside_pts(const double *P, int m, const double *q)
+{
+    int in = 0;
+    for (int i = 0; i < m; i++) {
+        const double *a = P + 2 * i, *b = P + 2 * ((i + 1) % m);
+        if (a[1] <= q[1] && q[1] < b[1]) { if (orient2_sign(a, b, q) > 0) in ^= 1; }
+        else if (b[1] <= q[1] && q[1] < a[1]) { if (orient2_sign(a, b, q) < 0) in ^= 1; }
+    }
+    return in;
+}
+
+/* The region's ring vertices (outer cycle and holes of 2 or more
+ * vertices) as the nodes of a visibility graph: node k is position ix[k]
+ * of cycle cy[k] (-1: the outer cycle, else a hole) */
+struct vgraph {
+    const struct region *g;
+    int n, *cy, *ix;
+    int *hnode;   /* node of position 0 of hole h (-1: a point) */
+};
+
+static const struct cyc *vg_cyc(const struct vgraph *G, int k)
+{
+    return G->cy[k] < 0 ? &G->g->outer : &G->g->holes[G->cy[k]];
+}
+
+static const double *vg_pt(const double *X, const struct vgraph *G, int k)
+{
+    return X + 2 * vg_cyc(G, k)->v[G->ix[k]];
+}
+
+/* are nodes a and b joined by a segment inside the domain of shape X (vis:
+ * n by n cache, -1 unknown) */
+static int vg_sees(const double *X, const struct vgraph *G, signed char *vis, int a, int b)
+{
+    signed char *v = vis + (size_t)a * G->n + b;
+    if (*v < 0) {
+        const struct cyc *Ca = vg_cyc(G, a), *Cb = vg_cyc(G, b);
+        const double *A = vg_pt(X, G, a), *B = vg_pt(X, G, b);
+        int ok = a != b && incone(X, Ca, G->ix[a], B) && incone(X, Cb, G->ix[b], A) &&
+                 seg_clear(X, G->g, A, B, Ca->v[G->ix[a]], Cb->v[G->ix[b]]);
+        *v = vis[(size_t)b * G->n + a] = (signed char)ok;
+    }
+    return *v;
+}
+
+/* shortest paths inside the domain of shape X from node src to every node
+ * (Dijkstra on the visibility graph): dist (INFINITY: none), prev */
+static void vg_paths(const double *X, const struct vgraph *G, signed char *vis, int src, double *dist, int *prev,
+                     unsigned char *done)
+{
+    int n = G->n;
+    for (int k = 0; k < n; k++) { dist[k] = INFINITY; prev[k] = -1; done[k] = 0; }
+    dist[src] = 0;
+    for (;;) {
+        int a = -1;
+        for (int k = 0; k < n; k++)
+            if (!done[k] && dist[k] < INFINITY && (a < 0 || dist[k] < dist[a])) a = k;
+        if (a < 0) break;
+        done[a] = 1;
+        const double *A = vg_pt(X, G, a);
+        for (int b = 0; b < n; b++) {
+            if (done[b]) continue;
+            const double *B = vg_pt(X, G, b);
+            double d = dist[a] + hypot(B[0] - A[0], B[1] - A[1]);
+            if (d < dist[b] && vg_sees(X, G, vis, a, b)) { dist[b] = d; prev[b] = a; }
+        }
+    }
+}
+
+/* the bends of path (np nodes, hole end first) in shape X moved off the
+ * rings into the domain along each corner's bisector, as far as the
+ * segments stay inside (a share of the shorter edge there); the np - 2
+ * points in out.  0, or 1 if no share fits. */
+static int vg_bends(const double *X, const struct vgraph *G, const int *path, int np, double *out)
+{
+    static const double share[] = {0.9, 0.6, 0.3, 0.1, 0.03, 0.01, 0.001};
+    int nb = np - 2;
+    if (nb == 0) return 0;
+    const struct cyc *Cu = vg_cyc(G, path[0]), *Cw = vg_cyc(G, path[np - 1]);
+    int u = Cu->v[G->ix[path[0]]], w = Cw->v[G->ix[path[np - 1]]];
+    const double *U = X + 2 * u, *W = X + 2 * w;
+    for (size_t f = 0; f < sizeof share / sizeof *share; f++) {
+        for (int t = 1; t <= nb; t++) {
+            const struct cyc *C = vg_cyc(G, path[t]);
+            int i = G->ix[path[t]];
+            const double *a = X + 2 * C->v[i], *pr = X + 2 * C->v[(i + C->m - 1) % C->m],
+                         *nx = X + 2 * C->v[(i + 1) % C->m];
+            double d1x = a[0] - pr[0], d1y = a[1] - pr[1], d2x = nx[0] - a[0], d2y = nx[1] - a[1];
+            double l1 = hypot(d1x, d1y), l2 = hypot(d2x, d2y);
+            d1x /= l1; d1y /= l1; d2x /= l2; d2y /= l2;
+            /* the domain is on the left of every cycle */
+            double bx = -d1y - d2y, by = d1x + d2x, lb = hypot(bx, by);
+            if (lb < 1e-9) {   /* a hairpin: straight on at a notch, back at a spike */
+                int reflex = orient2_sign(pr, a, nx) <= 0;
+                bx = reflex ? d1x : -d1x; by = reflex ? d1y : -d1y; lb = 1;
+            }
+            const double *q = vg_pt(X, G, path[t - 1]), *r = vg_pt(X, G, path[t + 1]);
+            double len = fmin(fmin(l1, l2), fmin(hypot(q[0] - a[0], q[1] - a[1]), hypot(r[0] - a[0], r[1] - a[1])));
+            out[2 * (t - 1)] = a[0] + share[f] * len * bx / lb;
+            out[2 * (t - 1) + 1] = a[1] + share[f] * len * by / lb;
+        }
+        /* every segment inside, the path simple */
+        int ok = incone(X, Cu, G->ix[path[0]], out) && incone(X, Cw, G->ix[path[np - 1]], out + 2 * (nb - 1));
+        for (int t = 0; t <= nb && ok; t++) {
+            const double *A = t ? out + 2 * (t - 1) : U, *B = t < nb ? out + 2 * t : W;
+            ok = seg_clear(X, G->g, A, B, t ? -1 : u, t < nb ? -1 : w);
+            for (int e = 0; e + 1 < t && ok; e++)
+                ok = !segments_meet(e ? out + 2 * (e - 1) : U, out + 2 * e, A, B);
+        }
+        if (ok) return 0;
+    }
+    return 1;
+}
+
+/* the points of cut (k of them) in shape s, ends included, into out
+ * (k + 2 points) */
+static void cut_points(const struct compat *c, const struct region *g, int h, const struct bcut *cu, int s, double *out)
+{
+    const double *X = c->X[s];
+    memcpy(out, X + 2 * g->holes[h].v[cu->i], 2 * sizeof *out);
+    memcpy(out + 2, cu->P + 2 * (size_t)s * cu->k, 2 * (size_t)cu->k * sizeof *out);
+    memcpy(out + 2 * (cu->k + 1), X + 2 * g->outer.v[cu->j], 2 * sizeof *out);
+}
+
+/* do the cuts a and b (each k + 2 points, from the hole) keep apart; from
+ * the same point (a hole of one vertex) they meet only there */
+static int cuts_apart(const double *a, int ka, const double *b, int kb, int point)
+{
+    for (int x = 0; x <= ka; x++)
+        for (int y = 0; y <= kb; y++) {
+            if (point && x == 0 && y == 0) {
+                if (orient2_sign(a + 2, a, b + 2) == 0) return 0;
+                continue;
+            }
+            if (segments_meet(a + 2 * x, a + 2 * x + 2, b + 2 * y, b + 2 * y + 2)) return 0;
+        }
+    return 1;
+}
+
+static int cmp_bcut(const void *a, const void *b)
+{
+    double x = ((const struct bcut *)a)->score, y = ((const struct bcut *)b)->score;
+    return (x < y) - (x > y);
+}
+
+/* Two cuts that may bend for hole h of region g (no two straight ones fit;
+ * dg: the shapes' diagonals): the shortest paths inside every shape
+ * between hole and outer vertices, the pairs tried as cut_hole tries
+ * straight ones.  0 with c1, c2 (P malloc'd) and side (every other hole's
+ * side, as cut_hole), 1 if none. */
+#define BENT_MAX 12      /* bends a cut may have */
+#define BENT_TRY 400     /* cuts realised, shortest first */
+#define BENT_KEEP 48     /* of them kept for the pairs */
+static int bent_cuts(const struct compat *c, const struct region *g, int h, const double *dg, struct bcut *c1,
+                     struct bcut *c2, unsigned char *side)
+{
+    int N = c->N, rc = 1;
+    const struct cyc *H = &g->holes[h], *O = &g->outer;
+    int mh = H->m, mo = O->m;
+    struct vgraph G = {g, 0, NULL, NULL, NULL};
+    /* the nodes; a point (a hole of one vertex) cut off is a node of its
+     * own, last, where its paths start */
+    int pt = mh == 1, n = mo + pt;
+    for (int y = 0; y < g->nh; y++) n += g->holes[y].m > 1 ? g->holes[y].m : 0;
+    G.cy = malloc(n * sizeof *G.cy);
+    G.ix = malloc(n * sizeof *G.ix);
+    G.hnode = malloc((g->nh + 1) * sizeof *G.hnode);
+    for (int i = 0; i < mo; i++) { G.cy[G.n] = -1; G.ix[G.n++] = i; }
+    for (int y = 0; y < g->nh; y++) {
+        G.hnode[y] = -1;
+        if (g->holes[y].m < 2) continue;
+        G.hnode[y] = G.n;
+        for (int i = 0; i < g->holes[y].m; i++) { G.cy[G.n] = y; G.ix[G.n++] = i; }
+    }
+    if (pt) { G.hnode[h] = G.n; G.cy[G.n] = h; G.ix[G.n++] = 0; }
+    int src0 = G.hnode[h];
+    double *dist = malloc((size_t)N * mh * n * sizeof *dist);
+    int *prev = malloc((size_t)N * mh * n * sizeof *prev);
+    unsigned char *done = malloc(n);
+    struct bcut *cd = calloc((size_t)mh * mo, sizeof *cd);
+    int ncd = 0;
+    signed char *vis = malloc((size_t)n * n);
+    for (int s = 0; s < N; s++) {
+        memset(vis, -1, (size_t)n * n);
+        for (int i = 0; i < mh; i++)
+            vg_paths(c->X[s], &G, vis, src0 + i, dist + ((size_t)s * mh + i) * n, prev + ((size_t)s * mh + i) * n, done);
+    }
+    /* every pair with a path in every shape, shortest (over the shapes) first */
+    for (int i = 0; i < mh; i++)
+        for (int j = 0; j < mo; j++) {
+            double len = 0;
+            for (int s = 0; s < N && len < INFINITY; s++) len = fmax(len, dist[((size_t)s * mh + i) * n + j] / dg[s]);
+            if (len < INFINITY) { cd[ncd].i = i; cd[ncd].j = j; cd[ncd].score = -len; ncd++; }
+        }
+    qsort(cd, ncd, sizeof *cd, cmp_bcut);
+    int *path = malloc((n + 2) * sizeof *path);
+    double *bend = malloc(2 * (size_t)N * (BENT_MAX + 1) * sizeof *bend);
+    int *nbend = malloc(N * sizeof *nbend), nk = 0;
+    for (int x = 0; x < ncd && x < BENT_TRY && nk < BENT_KEEP; x++) {
+        int i = cd[x].i, j = cd[x].j, k = 0, ok = 1;
+        for (int s = 0; s < N && ok; s++) {
+            const int *pv = prev + ((size_t)s * mh + i) * n;
+            int np = 0;
+            for (int v = j; v >= 0 && np <= BENT_MAX + 2; v = pv[v]) path[np++] = v;
+            if (np > BENT_MAX + 2) { ok = 0; break; }
+            for (int a = 0, b = np - 1; a < b; a++, b--) { int t = path[a]; path[a] = path[b]; path[b] = t; }
+            ok = vg_bends(c->X[s], &G, path, np, bend + 2 * (size_t)s * BENT_MAX) == 0;
+            nbend[s] = np - 2;
+            if (nbend[s] > k) k = nbend[s];
+        }
+        if (!ok) continue;
+        struct bcut *cu = &cd[nk];
+        double sc = -cd[x].score;
+        cu->i = i; cu->j = j; cu->k = k;
+        cu->P = malloc(2 * (size_t)N * (k ? k : 1) * sizeof *cu->P);
+        double q = M_PI;
+        for (int s = 0; s < N; s++) {
+            /* as many points in every shape: a shape whose path bends less
+             * gets the others at the middle of its longest segments */
+            double *Q = cu->P + 2 * (size_t)s * k, *B = bend + 2 * (size_t)s * BENT_MAX;
+            const double *U = c->X[s] + 2 * H->v[i], *W = c->X[s] + 2 * O->v[j];
+            int m = nbend[s];
+            memcpy(Q, B, 2 * (size_t)m * sizeof *Q);
+            while (m < k) {
+                int best = 0;
+                double bl = -1;
+                for (int t = 0; t <= m; t++) {
+                    const double *A = t ? Q + 2 * (t - 1) : U, *E = t < m ? Q + 2 * t : W;
+                    double l = hypot(E[0] - A[0], E[1] - A[1]);
+                    if (l > bl) { bl = l; best = t; }
+                }
+                const double *A = best ? Q + 2 * (best - 1) : U, *E = best < m ? Q + 2 * best : W;
+                double mid[2] = {0.5 * (A[0] + E[0]), 0.5 * (A[1] + E[1])};
+                memmove(Q + 2 * (best + 1), Q + 2 * best, 2 * (size_t)(m - best) * sizeof *Q);
+                memcpy(Q + 2 * best, mid, sizeof mid);
+                m++;
+            }
+            q = fmin(q, fmin(cone_q(c->X[s], H, i, k ? Q : W), cone_q(c->X[s], O, j, k ? Q + 2 * (k - 1) : U)));
+        }
+        cu->score = fmin(q, M_PI / 4) - 0.5 * sc - 0.05 * k;
+        nk++;
+    }
+    for (int x = nk; x < ncd; x++) cd[x].P = NULL;
+    qsort(cd, nk, sizeof *cd, cmp_bcut);
+    /* the pair: as cut_hole's */
+    double *pa = malloc(2 * (size_t)(BENT_MAX + 2) * sizeof *pa), *pb = malloc(2 * (size_t)(BENT_MAX + 2) * sizeof *pb);
+    double *poly = malloc(2 * ((size_t)mh + mo + 2 * BENT_MAX + 4) * sizeof *poly);
+    unsigned char *sd = malloc(g->nh + 1);
+    int b1 = -1, b2 = -1;
+    double best = -INFINITY;
+    for (int x = 0; x < nk; x++) {
+        for (int y = 0; y < nk; y++) {
+            const struct bcut *u1 = &cd[x], *u2 = &cd[y];
+            if (u2->j == u1->j || (mh > 1 && u2->i == u1->i)) continue;
+            int fo = ((u2->j - u1->j) % mo + mo) % mo;
+            double bal = 2 * fmin((double)fo / mo, 1 - (double)fo / mo);
+            if (mh > 1) {
+                double fh = (double)(((u1->i - u2->i) % mh + mh) % mh) / mh;
+                bal = 0.5 * bal + fmin(fh, 1 - fh);
+            }
+            double sc = u1->score + u2->score + 0.3 * bal;
+            if (sc <= best) continue;
+            int ok = 1;
+            for (int s = 0; s < N && ok; s++) {
+                cut_points(c, g, h, u1, s, pa);
+                cut_points(c, g, h, u2, s, pb);
+                if (!(ok = cuts_apart(pa, u1->k, pb, u2->k, pt))) break;
+                /* piece A: outer j1 -> j2, cut 2 back to the hole, hole
+                 * i2 -> i1, cut 1 out; every other hole on one side */
+                int m = 0;
+                for (int t = u1->j;; t = (t + 1) % mo) {
+                    memcpy(poly + 2 * m++, c->X[s] + 2 * O->v[t], 2 * sizeof *poly);
+                    if (t == u2->j) break;
+                }
+                for (int t = u2->k; t >= 1; t--) memcpy(poly + 2 * m++, pb + 2 * t, 2 * sizeof *poly);
+                for (int t = u2->i;; t = (t + 1) % mh) {
+                    memcpy(poly + 2 * m++, c->X[s] + 2 * H->v[t], 2 * sizeof *poly);
+                    if (t == u1->i) break;
+                }
+                for (int t = 1; t <= u1->k; t++) memcpy(poly + 2 * m++, pa + 2 * t, 2 * sizeof *poly);
+                for (int q = 0; q < g->nh && ok; q++) {
+                    if (q == h) continue;
+                    int in = inside_pts(poly, m, c->X[s] + 2 * g->holes[q].v[0]);
+                    if (s == 0) sd[q] = (unsigned char)in;
+                    else if (in != sd[q]) ok = 0;
+                }
+            }
+            if (!ok) continue;
+            best = sc; b1 = x; b2 = y;
+            memcpy(side, sd, g->nh + 1);
+        }
+        if (b1 >= 0 && x >= 3) break;
+    }
+    if (b1 >= 0) {
+        *c1 = cd[b1]; *c2 = cd[b2];
+        cd[b1].P = cd[b2].P = NULL;
+        rc = 0;
+    }
+    for (int x = 0; x < nk; x++) free(cd[x].P);
+    free(cd); free(path); free(bend); free(nbend); free(pa); free(pb); free(poly); free(sd);
+    free(vis); free(dist); free(prev); free(done); free(G.cy); free(G.ix); free(G.hnode);
+    return rc;
+}
+
+/* region g cut by c1 and c2 (from hole h; their points become new
+ * vertices), both pieces solved; side: every other hole's piece (1: the
+ * one from c1's outer end to c2's) */
+static int split_region(struct compat *c, const struct region *g, int h, const struct bcut *c1, const struct bcut *c2,
+                        const unsigned char *side, int depth)
+{
+    const struct cyc *H = &g->holes[h], *O = &g->outer;
+    int mh = H->m, mo = O->m, v1 = c->nv, v2 = c->nv + c1->k;
+    if (c1->k + c2->k) {
+        if (compat_reserve_vertices(c, c->nv + c1->k + c2->k) < 0) return -1;
+        c->nsteiner += c1->k + c2->k;
+        c->nbent += (c1->k > 0) + (c2->k > 0);
+        c->nbend += c1->k + c2->k;
+        for (int s = 0; s < c->N; s++) {
+            memcpy(c->X[s] + 2 * v1, c1->P + 2 * (size_t)s * c1->k, 2 * (size_t)c1->k * sizeof(double));
+            memcpy(c->X[s] + 2 * v2, c2->P + 2 * (size_t)s * c2->k, 2 * (size_t)c2->k * sizeof(double));
+        }
+        c->nv += c1->k + c2->k;
+    }
+    struct region ga = {0}, gb = {0};
+    int cap = mh + mo + 2 + c1->k + c2->k;
+    ga.outer.v = malloc(cap * sizeof(int));
+    gb.outer.v = malloc(cap * sizeof(int));
+    /* A: outer j1 -> j2, cut 2 inwards, hole i2 -> i1, cut 1 outwards */
+    ga.outer.m = walk(O, c1->j, c2->j, ga.outer.v);
+    for (int t = c2->k - 1; t >= 0; t--) ga.outer.v[ga.outer.m++] = v2 + t;
+    ga.outer.m += walk(H, c2->i, c1->i, ga.outer.v + ga.outer.m);
+    for (int t = 0; t < c1->k; t++) ga.outer.v[ga.outer.m++] = v1 + t;
+    /* B: outer j2 -> j1, cut 1 inwards, hole i1 -> i2, cut 2 outwards */
+    gb.outer.m = walk(O, c2->j, c1->j, gb.outer.v);
+    for (int t = c1->k - 1; t >= 0; t--) gb.outer.v[gb.outer.m++] = v1 + t;
+    gb.outer.m += walk(H, c1->i, c2->i, gb.outer.v + gb.outer.m);
+    for (int t = 0; t < c2->k; t++) gb.outer.v[gb.outer.m++] = v2 + t;
+    ga.holes = malloc((g->nh + 1) * sizeof *ga.holes);
+    gb.holes = malloc((g->nh + 1) * sizeof *gb.holes);
+    for (int k = 0; k < g->nh; k++) {
+        if (k == h) continue;
+        struct region *t = side[k] ? &ga : &gb;
+        t->holes[t->nh] = g->holes[k];
+        t->holes[t->nh].v = malloc(g->holes[k].m * sizeof(int));
+        memcpy(t->holes[t->nh].v, g->holes[k].v, g->holes[k].m * sizeof(int));
+        t->nh++;
+    }
+    int rc = solve(c, &ga, depth + 1);
+    if (rc == 0) rc = solve(c, &gb, depth + 1);
+    region_free(&ga); region_free(&gb);
+    return rc;
+}
+
 /* cut hole h off region g by the best pair of cuts; 1 if none exists */
 static int cut_hole(struct compat *c, struct region *g, int h, int depth)
 {
@@ -461,6 +843,7 @@ static int cut_hole(struct compat *c, struct region *g, int h, int depth)
     double best = -INFINITY;
     unsigned char *side = malloc(g->nh + 1), *bside = malloc(g->nh + 1);
     int *A = malloc((mh + mo + 2) * sizeof *A);
+    struct bcut c1b = {0}, c2b = {0};
     for (int x = 0; x < nc && x < 24; x++) {
         int i1 = cd[x].i, j1 = cd[x].j;
         for (int y = 0; y < nc; y++) {
@@ -502,27 +885,12 @@ static int cut_hole(struct compat *c, struct region *g, int h, int depth)
     }
     int rc = 1;
     if (b1 >= 0) {
-        int i1 = cd[b1].i, j1 = cd[b1].j, i2 = cd[b2].i, j2 = cd[b2].j;
-        struct region ga = {0}, gb = {0};
-        ga.outer.v = malloc((mh + mo + 2) * sizeof(int));
-        gb.outer.v = malloc((mh + mo + 2) * sizeof(int));
-        ga.outer.m = walk(O, j1, j2, ga.outer.v);
-        ga.outer.m += walk(H, i2, i1, ga.outer.v + ga.outer.m);
-        gb.outer.m = walk(O, j2, j1, gb.outer.v);
-        gb.outer.m += walk(H, i1, i2, gb.outer.v + gb.outer.m);
-        ga.holes = malloc((g->nh + 1) * sizeof *ga.holes);
-        gb.holes = malloc((g->nh + 1) * sizeof *gb.holes);
-        for (int k = 0; k < g->nh; k++) {
-            if (k == h) continue;
-            struct region *t = bside[k] ? &ga : &gb;
-            t->holes[t->nh] = g->holes[k];
-            t->holes[t->nh].v = malloc(g->holes[k].m * sizeof(int));
-            memcpy(t->holes[t->nh].v, g->holes[k].v, g->holes[k].m * sizeof(int));
-            t->nh++;
-        }
-        rc = solve(c, &ga, depth + 1);
-        if (rc == 0) rc = solve(c, &gb, depth + 1);
-        region_free(&ga); region_free(&gb);
+        struct bcut c1 = {cd[b1].i, cd[b1].j, 0, 0, NULL}, c2 = {cd[b2].i, cd[b2].j, 0, 0, NULL};
+        rc = split_region(c, g, h, &c1, &c2, bside, depth);
+    } else {
+        rc = bent_cuts(c, g, h, dg, &c1b, &c2b, bside);
+        if (rc == 0) rc = split_region(c, g, h, &c1b, &c2b, bside, depth);
+        free(c1b.P); free(c2b.P);
     }
     free(cd); free(dg); free(side); free(bside); free(A);
     return rc;
@@ -547,11 +915,11 @@ static int solve(struct compat *c, struct region *g, int depth)
     if (rc == 1) {
         int l = g->holes[order[0]].label;
         if (l >= 0)
-            cm_seterr("compatible triangulation failed: hole ring %d: no two straight cuts to its outline lie "
-                      "inside the shape in every pose", l + 1);
+            cm_seterr("compatible triangulation failed: hole ring %d: no two cuts to its outline, straight or "
+                      "bent, lie inside the shape in every pose with the other holes on the same side", l + 1);
         else
-            cm_seterr("compatible triangulation failed: interior point %d: no two straight cuts to the outline "
-                      "lie inside the shape in every pose", -l);
+            cm_seterr("compatible triangulation failed: interior point %d: no two cuts to the outline, straight "
+                      "or bent, lie inside the shape in every pose with the other holes on the same side", -l);
         rc = -1;
     }
     free(order);

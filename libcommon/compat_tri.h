@@ -45,6 +45,9 @@ struct compat {
     int *F;           /* #F by 3, counter-clockwise in every shape */
     int nsteiner;     /* interior vertices added by stages II-III */
     int nrefine;      /* interior vertices added by refinement */
+    int nbent, nbend; /* cuts joining holes to their pieces that bend
+                       * (compat_multi_triangulate), and their bend points
+                       * (counted in nsteiner too) */
     int stage_count[3]; /* splits made by stage I, II, III (or overlays) */
     int split_mode;   /* COMPAT_OVERLAY (default), COMPAT_OVERLAY_FEWEST or COMPAT_LINKPATH */
     int threads;      /* the split search runs on this many threads (0: one

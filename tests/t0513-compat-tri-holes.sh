@@ -1,51 +1,7 @@
 #!/bin/sh
 test_description='compat-tri: holes (eyes, the gap between the legs), several pieces, interior points'
 . "$(dirname "$0")/test-lib.sh"
-
-# check a plain MESH stream of N frames against the input ring files:
-# every triangle positive in every frame (> 0 as printed), every
-# correspondence row (global vertex indices) and every interior point a
-# vertex at exactly its input position, the triangles' area equal to the
-# rings' (PIECES, 1-based ring numbers, minus the other rings) within REL
-# (0: to 1e-9, and every input vertex must be a mesh vertex), COMP
-# connected components
-check_holes() {   # check_holes MESH CORR PTS REL COMP PIECES RING...
-	ch_mesh=$1 ch_corr=$2 ch_pts=$3 ch_rel=$4 ch_comp=$5 ch_pieces=$6; shift 6
-	awk -v nr=$# -v rel="$ch_rel" -v comp="$ch_comp" -v pieces="$ch_pieces" '
-	function flush() { if (rs) { a = 0; for (i = 0; i < rs; i++) { j = (i + 1) % rs; a += RX[i] * RY[j] - RX[j] * RY[i] }
-		a = (a > 0 ? a : -a) / 2; A[ri] += (rk in PC) ? a : -a }; rs = 0 }
-	function find(x) { while (P[x] != x) x = P[x] = P[P[x]]; return x }
-	BEGIN { ri = -1; nf = 0; rs = 0; np = split(pieces, pp, " "); for (i = 1; i <= np; i++) PC[pp[i]] = 1 }
-	FILENAME == ARGV[1] {
-		if ($1 == "f") { F0[nf] = $2; F1[nf] = $3; F2[nf] = $4; nf++; next }
-		if ($1 == "frame") { fr = $2; k = 0; next }
-		if (fr != "" && NF == 3) { X[fr, k] = $1; Y[fr, k] = $2; V[fr, $1 " " $2] = 1; k++; nv = k }
-		next }
-	FILENAME == ARGV[2] { for (s = 0; s < NF; s++) C[FNR - 1, s] = $(s + 1); nc = FNR; next }
-	FILENAME == ARGV[3] { for (s = 0; s < NF / 2; s++) { QX[FNR - 1, s] = $(2 * s + 1); QY[FNR - 1, s] = $(2 * s + 2) }; nq = FNR; next }
-	FNR == 1 { flush(); ri++; pi = 0; rk = 0 }
-	$1 == "ring" { flush(); rk++; next }
-	{ PX[ri, pi] = $1; PY[ri, pi] = $2; RX[rs] = $1; RY[rs] = $2; rs++; pi++; NP[ri] = pi }
-	END { flush(); bad = 0; tol = rel ? rel : 1e-9
-		for (s = 0; s < nr; s++) { tot = 0
-			for (t = 0; t < nf; t++) {
-				a = (X[s,F1[t]]-X[s,F0[t]])*(Y[s,F2[t]]-Y[s,F0[t]]) - (Y[s,F1[t]]-Y[s,F0[t]])*(X[s,F2[t]]-X[s,F0[t]])
-				if (!(a > 0)) { print "frame " s ": triangle " t " has area " a; bad = 1 }
-				tot += a / 2 }
-			d = tot - A[s]
-			if (!(d < tol * A[s] && -d < tol * A[s])) { print "frame " s ": mesh area " tot ", rings " A[s]; bad = 1 }
-			for (c = 0; c < nc; c++) { i = C[c, s]
-				if (!((s, PX[s, i] " " PY[s, i]) in V)) { print "shape " s ": correspondence " c " (vertex " i ") is not a mesh vertex"; bad = 1 } }
-			for (c = 0; c < nq; c++)
-				if (!((s, QX[c, s] " " QY[c, s]) in V)) { print "shape " s ": interior point " c " is not a mesh vertex"; bad = 1 }
-			if (!rel) for (i = 0; i < NP[s]; i++)
-				if (!((s, PX[s, i] " " PY[s, i]) in V)) { print "shape " s ": input vertex " i " is not a mesh vertex"; bad = 1 } }
-		for (v = 0; v < nv; v++) P[v] = v
-		for (t = 0; t < nf; t++) { P[find(F0[t])] = find(F1[t]); P[find(F1[t])] = find(F2[t]) }
-		for (t = 0; t < nf; t++) if (!(find(F0[t]) in R)) { R[find(F0[t])] = 1; nco++ }
-		if (nco != comp) { print nco " components, expected " comp; bad = 1 }
-		exit bad }' "$ch_mesh" "$ch_corr" "$ch_pts" "$@"
-}
+. "$TEST_DIRECTORY/morph2d-lib.sh"
 
 # poses K..: rings pK.rings, columns of the tips and points of those poses
 make_inputs() {   # make_inputs NAME K...

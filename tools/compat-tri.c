@@ -1016,6 +1016,9 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     cp->split_mode = o->split;
     cp->threads = o->threads;
     if (compat_multi_triangulate(cp) < 0) die("%s", cm_errmsg());
+    if (cp->nbent)
+        info(1, "%d cut%s joining holes to their pieces bend%s (no two straight cuts fit): %d bend points", cp->nbent,
+             cp->nbent == 1 ? "" : "s", cp->nbent == 1 ? "s" : "", cp->nbend);
     free(parent); free(flipped); free(corr); free(rows);
     columns_free(&C);
     if (o->interior) columns_free(&I);
