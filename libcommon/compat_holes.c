@@ -816,8 +816,9 @@ static int split_region(struct compat *c, const struct region *g, int h, const s
     return rc;
 }
 
-/* cut hole h off region g by the best pair of cuts; 1 if none exists */
-static int cut_hole(struct compat *c, struct region *g, int h, int depth)
+/* cut hole h off region g by the best pair of straight cuts (bent: of
+ * cuts that may bend, bent_cuts); 1 if none exists */
+static int cut_hole(struct compat *c, struct region *g, int h, int depth, int bent)
 {
     int N = c->N;
     const struct cyc *H = &g->holes[h], *O = &g->outer;
@@ -826,7 +827,7 @@ static int cut_hole(struct compat *c, struct region *g, int h, int depth)
     for (int s = 0; s < N; s++) dg[s] = diag_of(c->X[s], c->nb);
     struct cand *cd = malloc((size_t)mh * mo * sizeof *cd);
     int nc = 0;
-    for (int i = 0; i < mh; i++)
+    for (int i = 0; i < mh && !bent; i++)
         for (int j = 0; j < mo; j++) {
             double q = M_PI, len = 0;
             int ok = 1;
@@ -887,7 +888,7 @@ static int cut_hole(struct compat *c, struct region *g, int h, int depth)
     if (b1 >= 0) {
         struct bcut c1 = {cd[b1].i, cd[b1].j, 0, 0, NULL}, c2 = {cd[b2].i, cd[b2].j, 0, 0, NULL};
         rc = split_region(c, g, h, &c1, &c2, bside, depth);
-    } else {
+    } else if (bent) {
         rc = bent_cuts(c, g, h, dg, &c1b, &c2b, bside);
         if (rc == 0) rc = split_region(c, g, h, &c1b, &c2b, bside, depth);
         free(c1b.P); free(c2b.P);
@@ -911,7 +912,10 @@ static int solve(struct compat *c, struct region *g, int depth)
             int t = order[b]; order[b] = order[b - 1]; order[b - 1] = t;
         }
     int rc = 1;
-    for (int k = 0; k < g->nh && rc == 1; k++) rc = cut_hole(c, g, order[k], depth);
+    /* straight cuts for any hole first; cuts that bend only where no hole
+     * has two straight ones */
+    for (int k = 0; k < g->nh && rc == 1; k++) rc = cut_hole(c, g, order[k], depth, 0);
+    for (int k = 0; k < g->nh && rc == 1; k++) rc = cut_hole(c, g, order[k], depth, 1);
     if (rc == 1) {
         int l = g->holes[order[0]].label;
         if (l >= 0)
