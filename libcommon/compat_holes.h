@@ -26,7 +26,14 @@
  *                     compat_triangulate_poly (diagonals, Steiner points,
  *                     overlay).  The two cuts of a hole are chosen to keep
  *                     the angles they make with the rings large, to be short
- *                     and to split the hole and the outline evenly.
+ *                     and to split the hole and the outline evenly.  Where
+ *                     no hole of a piece has two straight cuts that fit,
+ *                     cuts may bend: each follows the shortest path inside
+ *                     every shape (visibility graph of the ring vertices,
+ *                     Dijkstra), its bends moved off the rings into the
+ *                     domain and made new vertices, as many in every shape;
+ *                     a pair is kept where the pieces have the same cycles
+ *                     and holes in every shape (c->nbent, c->nbend).
  */
 #ifndef CM_COMPAT_HOLES_H
 #define CM_COMPAT_HOLES_H
