@@ -383,6 +383,26 @@ static double cone_q(const double *X, const struct cyc *y, int i, const double *
                 ccw_angle(q[0] - a[0], q[1] - a[1], pr[0] - a[0], pr[1] - a[1]));
 }
 
+/* does the segment AB stay off the region's rings: it meets no ring edge
+ * and no interior point except at ring vertices ua, ub (-1: none; AB's
+ * ends where they are ring vertices) (exact) */
+static int seg_clear(const double *X, const struct region *g, const double *A, const double *B, int ua, int ub)
+{
+    for (int y = -1; y < g->nh; y++) {
+        const struct cyc *C = y < 0 ? &g->outer : &g->holes[y];
+        if (C->m == 1) {
+            if (C->v[0] != ua && C->v[0] != ub && on_seg(A, B, X + 2 * C->v[0])) return 0;
+            continue;
+        }
+        for (int e = 0; e < C->m; e++) {
+            int a = C->v[e], b = C->v[(e + 1) % C->m];
+            if (a == ua || b == ua || a == ub || b == ub) continue;
+            if (segments_meet(A, B, X + 2 * a, X + 2 * b)) return 0;
+        }
+    }
+    return 1;
+}
+
 /* is the segment from hole corner (h, i) to outer corner j inside the
  * region's domain in shape X (exact) */
 static int cut_inside(const double *X, const struct region *g, int h, int i, int j)
@@ -390,20 +410,7 @@ static int cut_inside(const double *X, const struct region *g, int h, int i, int
     const struct cyc *H = &g->holes[h], *O = &g->outer;
     int u = H->v[i], w = O->v[j];
     const double *U = X + 2 * u, *W = X + 2 * w;
-    if (!incone(X, H, i, W) || !incone(X, O, j, U)) return 0;
-    for (int y = -1; y < g->nh; y++) {
-        const struct cyc *C = y < 0 ? O : &g->holes[y];
-        if (C->m == 1) {
-            if (C->v[0] != u && C->v[0] != w && on_seg(U, W, X + 2 * C->v[0])) return 0;
-            continue;
-        }
-        for (int e = 0; e < C->m; e++) {
-            int a = C->v[e], b = C->v[(e + 1) % C->m];
-            if (a == u || b == u || a == w || b == w) continue;
-            if (segments_meet(U, W, X + 2 * a, X + 2 * b)) return 0;
-        }
-    }
-    return 1;
+    return incone(X, H, i, W) && incone(X, O, j, U) && seg_clear(X, g, U, W, u, w);
 }
 
 struct cand { int i, j; double score; };
@@ -441,26 +448,6 @@ static int solve(struct compat *c, struct region *g, int depth);
  * vertices (0: straight) at P (N by k by 2: P[2 * (s * k + t)] is point t
  * of shape s, from the hole's end) */
 struct bcut { int i, j, k; double score; double *P; };
-
-/* does the segment AB stay off the region's rings: it meets no ring edge
- * and no interior point except at ring vertices ua, ub (-1: none; AB's
- * ends where they are ring vertices) (exact) */
-static int seg_clear(const double *X, const struct region *g, const double *A, const double *B, int ua, int ub)
-{
-    for (int y = -1; y < g->nh; y++) {
-        const struct cyc *C = y < 0 ? &g->outer : &g->holes[y];
-        if (C->m == 1) {
-            if (C->v[0] != ua && C->v[0] != ub && on_seg(A, B, X + 2 * C->v[0])) return 0;
-            continue;
-        }
-        for (int e = 0; e < C->m; e++) {
-            int a = C->v[e], b = C->v[(e + 1) % C->m];
-            if (a == ua || b == ua || a == ub || b == ub) continue;
-            if (segments_meet(A, B, X + 2 * a, X + 2 * b)) return 0;
-        }
-    }
-    return 1;
-}
 
 /* exact point in polygon of explicit points (q not on it) */
 static int inside_pts(const double *P, int m, const double *q)
