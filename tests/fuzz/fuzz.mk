@@ -8,7 +8,7 @@
 # input, once fixed, into tests/fuzz/regress/NAME): make check replays both
 # through the normal build (tests/unit/fuzz_replay.c).
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= mesh meshio gltf columns rings compat
+FUZZ_TARGETS ?= mesh meshio gltf columns rings compat holes
 FUZZ_CC  ?= clang
 FUZZ_CXX ?= clang++
 FB := build-fuzz
@@ -18,7 +18,7 @@ CFLAGS   := -O1 -g -std=c11 -pthread $(SAN) -fsanitize=fuzzer-no-link
 CXXFLAGS := -O1 -g -std=c++17 -pthread -frounding-math $(SAN) -fsanitize=fuzzer-no-link
 LDLIBS   := -lOpenMeshCore -lassimp -lz -lgmp -lmpfr -lfmt -lstdc++ -lm
 # the readers and what they call (the closure over their #includes)
-SRC := $(shell sh tests/fuzz/deps.sh mesh columns landmarks rings compat_tri meshio anim_import)
+SRC := $(shell sh tests/fuzz/deps.sh mesh columns landmarks rings compat_tri compat_holes meshio anim_import)
 OBJ := $(SRC:%=$(FB)/%.o)
 BIN := $(FUZZ_TARGETS:%=$(FB)/fuzz_%)
 

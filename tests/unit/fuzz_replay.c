@@ -17,10 +17,11 @@
 #include "../fuzz/fuzz_columns.c"
 #include "../fuzz/fuzz_rings.c"
 #include "../fuzz/fuzz_compat.c"
+#include "../fuzz/fuzz_holes.c"
 
 static const struct { const char *name; int (*run)(const uint8_t *, size_t); } targets[] = {
     {"mesh", fuzz_mesh}, {"meshio", fuzz_meshio}, {"gltf", fuzz_gltf},
-    {"columns", fuzz_columns}, {"rings", fuzz_rings}, {"compat", fuzz_compat}};
+    {"columns", fuzz_columns}, {"rings", fuzz_rings}, {"compat", fuzz_compat}, {"holes", fuzz_holes}};
 
 /* run every file of dir through fn in a child (a crash is a failure of that
  * input, named, not of the whole test); returns the count, *bad the failures */
