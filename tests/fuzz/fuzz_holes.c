@@ -9,20 +9,16 @@
  * succeeds is positively oriented in both shapes by the exact predicate,
  * every boundary vertex is used, and its area is the rings' area (pieces
  * minus holes) to 1e-9 in each shape. */
-#include "fuzz_common.h"
+#include "fuzz_shapes.h"
 #include "compat_holes.h"
-#include "predicates2.h"
 #include <math.h>
 
-/* every triangle counter-clockwise in every shape, exactly */
-static int holes_positive(const struct compat *c)
+/* simple rings, at most 6 of at most 48 points, none degenerate */
+static int holes_keep(const struct rings *r)
 {
-    for (int t = 0; t < c->nf; t++)
-        for (int s = 0; s < c->N; s++) {
-            const int *f = c->F + 3 * t;
-            const double *X = c->X[s];
-            if (orient2_sign(X + 2 * f[0], X + 2 * f[1], X + 2 * f[2]) <= 0) return 0;
-        }
+    if (r->nrings > 6 || rings_check_simple(r) != 0) return 0;
+    for (int k = 0; k < r->nrings; k++)
+        if (rings_count(r, k) > 48 || rings_degenerate(r, k)) return 0;
     return 1;
 }
 
@@ -47,22 +43,8 @@ static int holes_area_ok(const struct compat *c, int s)
 
 FUZZ_TARGET(holes)(const uint8_t *data, size_t size)
 {
-    const uint8_t *sep = NULL;
-    for (size_t i = 0; i + 4 <= size; i++)
-        if (!memcmp(data + i, "\n--\n", 4)) { sep = data + i; break; }
-    if (!sep) return 0;
     struct rings R[2];
-    memset(R, 0, sizeof R);
-    int ok = 1;
-    for (int s = 0; s < 2 && ok; s++) {
-        const uint8_t *a = s ? sep + 4 : data;
-        size_t n = s ? size - (size_t)(sep + 4 - data) : (size_t)(sep - data) + 1;
-        char path[64];
-        fuzz_file(a, n, ".rings", path);
-        ok = rings_read(path, &R[s]) == 0 && R[s].nrings <= 6 && rings_check_simple(&R[s]) == 0;
-        fuzz_file_done(path);
-        for (int k = 0; ok && k < R[s].nrings; k++) ok = rings_count(&R[s], k) <= 48 && !rings_degenerate(&R[s], k);
-    }
+    int ok = fuzz_two_shapes(data, size, R, holes_keep);
     int nr = ok ? R[0].nrings : 0;
     int parent[6];
     unsigned char flipped[12];
@@ -71,7 +53,7 @@ FUZZ_TARGET(holes)(const uint8_t *data, size_t size)
         double st[4];
         if (compat_multi(2, R, parent, flipped, NULL, 0, NULL, 0, 0.01, &c, st) == 0) {
             if (compat_multi_triangulate(&c) == 0) {
-                if (!holes_positive(&c)) fuzz_fail("holes: inverted triangle after compat_multi_triangulate");
+                if (!fuzz_all_positive(&c)) fuzz_fail("holes: inverted triangle after compat_multi_triangulate");
                 unsigned char *used = calloc(c.nb + 1, 1);
                 for (int t = 0; t < 3 * c.nf; t++)
                     if (c.F[t] < c.nb) used[c.F[t]] = 1;
