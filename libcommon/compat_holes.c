@@ -632,6 +632,10 @@ static int bent_cuts(const struct compat *c, const struct region *g, int h, cons
     struct bcut *cd = calloc((size_t)mh * mo, sizeof *cd);
     int ncd = 0;
     signed char *vis = malloc((size_t)n * n);
+    if (!G.cy || !G.ix || !G.hnode || !dist || !prev || !done || !cd || !vis) {
+        free(vis); free(dist); free(prev); free(done); free(cd); free(G.cy); free(G.ix); free(G.hnode);
+        return cm_seterr("out of memory (bent cuts of a hole of %d vertices in a piece of %d ring vertices)", mh, n);
+    }
     for (int s = 0; s < N; s++) {
         memset(vis, -1, (size_t)n * n);
         for (int i = 0; i < mh; i++)
