@@ -173,6 +173,9 @@ struct options {
     char **shapes;
     char *log;             /* non-NULL: build_single's -v lines go here (LOG_SIZE bytes) */
     const int *flipped;    /* one outer ring: per shape, 1 if its file runs clockwise (reversed in R) */
+    double forced;         /* the certificate's lower bound of the stretch the given points force
+                            * (certify; 0: fewer than 4 rows, -1: not computed) */
+    long cert_meshes;      /* its cost: quadruples of given rows times shapes (certify) */
 };
 #define LOG_SIZE 4096
 /* relative width of the certificate's modulus brackets */
@@ -204,6 +207,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 0.2;
     o->slide = 1;
+    o->forced = -1;
     o->match = -1; o->match_points = 12; o->bend = 0.03; o->feature = 10;
     int c;
     while ((c = getopt_long(argc, argv, "c:i:e:l:s:a:o:m:vh", lo, NULL)) != -1) {
@@ -329,9 +333,10 @@ static double elapsed(void) { return now_seconds() - t_start; }
  * to -v.  Returns the ceiling in degrees (60: none; -1: not computed, the
  * line says why: -v goes on without it, --bound refuses) */
 static double cert_line(int N, double **P, const int *n, const int *corr, int nc, const int *row, const char *name,
-                        const char *who, char *line, size_t len)
+                        const char *who, char *line, size_t len, double *ratio)
 {
     struct modulus_cert mc;
+    *ratio = 0;
     if (modulus_certificate(N, P, n, corr, nc, CERT_TOL, &mc) < 0) {
         snprintf(line, len, "certificate: not computed: %s", cm_errmsg());
         return -1;
@@ -341,6 +346,7 @@ static double cert_line(int N, double **P, const int *n, const int *corr, int nc
                  nc, nc == 1 ? "" : "s");
         return mc.ceiling;
     }
+    *ratio = mc.ratio;
     int wl = (int)strcspn(who, "(");   /* without the parenthesis */
     while (wl > 0 && who[wl - 1] == ' ') wl--;
     info(1, "certificate: %d quadruples of %.*s in %d shapes, brackets to %g, largest mesh %d vertices; at %.3f s",
@@ -450,9 +456,10 @@ static int *match_points(const struct options *o, int N, double **P, const int *
         if (!row) die("out of memory");
         for (int k = 0; k < nc; k++) row[k] = (flipped[0] ? (nc - k) % nc : k) + 1;   /* rows of --points-out */
         char line[1024];
+        double ratio;
         cert_line(N, P, n, corr, nc, row, o->points_out ? o->points_out : "--points-out",
                   "the matched points (chosen by the matching, not given: this speaks of that matching only)",
-                  line, sizeof line);
+                  line, sizeof line, &ratio);
         info(1, "%s", line);
         free(row);
     }
@@ -586,8 +593,10 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
  * between two poses, which bounds the worst angle of any compatible
  * triangulation honouring the points (modulus_cert.h).  Written as one
  * line into line (size len); returns the ceiling in degrees (-1: fewer than
- * 4 rows, no certificate). */
-static double certify(const struct options *o, struct rings *R, const int *flipped, char *line, size_t len)
+ * 4 rows, no certificate).  Sets o->forced and o->cert_meshes; with
+ * budget > 0 a certificate of more meshes (one per quadruple and shape)
+ * is not computed (-1, o->forced left as it was). */
+static double certify(struct options *o, struct rings *R, const int *flipped, char *line, size_t len, long budget)
 {
     int N = o->nshapes;
     struct columns C = {0};
@@ -629,7 +638,10 @@ static double certify(const struct options *o, struct rings *R, const int *flipp
         }
         for (int a = 0, b = nc - 1; a < b; a++, b--) { int t = row[a]; row[a] = row[b]; row[b] = t; }
     }
-    double ceiling = cert_line(N, P, n, corr, nc, row, o->corr, "the given points", line, len);
+    o->cert_meshes = (long)nc * (nc - 1) * (nc - 2) * (nc - 3) / 24 * N;
+    double ceiling = -1;
+    if (budget > 0 && o->cert_meshes > budget) snprintf(line, len, "certificate: not computed");
+    else ceiling = cert_line(N, P, n, corr, nc, row, o->corr, "the given points", line, len, &o->forced);
     columns_free(&C);
     free(n); free(corr); free(row); free(P);
     return nc >= 4 ? ceiling : -1;   /* -1 also where it was not computed */
@@ -1462,6 +1474,19 @@ static int cand_start(struct candidate *k, struct ahead *ah, int threads)
 #ifndef SPREAD_POINTS
 #define SPREAD_POINTS 2
 #endif
+/* the stretch the given points force (the certificate) from which the
+ * polished matching starts beside the rows alone instead of last:
+ * measured on t0587's flamingo (five rows), whose subsets forcing 5.2-8.2x
+ * reach the goal only with the polish, see compat-tri(1) */
+#ifndef POLISH_FIRST
+#define POLISH_FIRST 4
+#endif
+/* the certificate's cost the race pays for that: one mesh of each
+ * quadruple of given rows in each pose, 2-5 ms each (t0587's five rows,
+ * six poses: 30 meshes, 0.07 s; seven rows, two poses: 70, 0.14-0.37 s) */
+#ifndef CERT_RACE_MESHES
+#define CERT_RACE_MESHES 40
+#endif
 static double race(struct options *o, struct rings *R, struct compat *cp, double q0, struct ahead *ah,
                    char *kept, size_t ksize)
 {
@@ -1519,6 +1544,23 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
          * short after RACE_ROUNDS rounds */
         if (stage == 0 && (!m->r || (m->rounds >= RACE_ROUNDS && nbad0 > fewest0))) {
             stage = 1;
+            /* the polished matching now too where the given points force
+             * a stretch of POLISH_FIRST or more (the certificate, computed
+             * here if -v did not: a run at the goal in its first rounds
+             * does not pay for it; not where it costs more than
+             * CERT_RACE_MESHES meshes, with or without -v) */
+            if (K[C_POLISH]->want) {
+                if (o->forced < 0) {
+                    char line[1024];
+                    certify(o, R, o->flipped, line, sizeof line, CERT_RACE_MESHES);
+                }
+                if (o->cert_meshes <= CERT_RACE_MESHES && o->forced >= POLISH_FIRST) {
+                    info(1, "the given points force a stretch of at least %.3gx (certificate): %s too; at %.3f s",
+                         o->forced, K[C_POLISH]->name, elapsed());
+                    cand_build(K[C_POLISH], R);
+                    cand_start(K[C_POLISH], NULL, o->threads);
+                }
+            }
             if (K[C_ROWS]->want) {
                 if (m->r)
                     info(1, "the matched points not at the goal after %d rounds, %d triangles below it (%d after an "
@@ -1688,7 +1730,7 @@ int main(int argc, char **argv)
         char line[1024];
         if (multi) snprintf(line, sizeof line, "certificate: not computed for several rings or interior points "
                                                 "(the quadrilateral moduli are those of one outer ring)");
-        else ceiling = certify(&o, R, flipped, line, sizeof line);
+        else ceiling = certify(&o, R, flipped, line, sizeof line, 0);
         /* --bound with nothing to bound is refused, not answered with a note */
         if (o.bound && ceiling < 0) die("--bound: %s", line + strlen("certificate: "));
         if (o.bound) {
