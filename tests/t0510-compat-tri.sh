@@ -60,7 +60,8 @@ test_expect_success 'usage errors exit 2' '
 	test_must_fail_usage compat-tri --match off a.rings 2>/dev/null &&
 	test_must_fail_usage compat-tri --match arclength a.rings b.rings 2>/dev/null &&
 	test_must_fail_usage compat-tri --match-points 2 a.rings b.rings 2>/dev/null &&
-	test_must_fail_usage compat-tri -c corr.txt 2>/dev/null
+	test_must_fail_usage compat-tri -c corr.txt 2>/dev/null &&
+	test_must_fail_usage compat-tri -c - - <corr.txt 2>err && grep -q "stdin (.-.) can be only one of" err
 '
 need_shared_data shapes2d/poses/elephant-pose6.rings.txt
 test_expect_success 'elephant poses 1 2 3 6: compatible, Steiner count and min angle printed' '

@@ -30,6 +30,13 @@ test_expect_success 'without -v (the certificate computed where the race needs i
 	compat-tri --threads 1 -c c45 flamingo4.rings flamingo5.rings >q.mesh &&
 	test_cmp f.mesh q.mesh
 '
+# every candidate of the race reads the rows again: before, "-c -" gave
+# the matched points the rows and the next candidate none ("0
+# correspondence points")
+test_expect_success 'the rows on stdin (-c -): read once, the same bytes' '
+	compat-tri --threads 1 -c - flamingo4.rings flamingo5.rings <c45 >s.mesh &&
+	test_cmp f.mesh s.mesh
+'
 # three rows: no certificate (it needs four points), so the polished
 # matching comes last, once every other candidate ended below the goal
 # (measured: the matched points 14.81 deg, the rows alone 13.46, then the

@@ -33,8 +33,9 @@ static const char help[] =
 "frames with one face list, frame i = shape i.  Outlines may have holes and\n"
 "several pieces, matched ring by ring (same rings in the same order).\n"
 "\n"
-"  -c, --corr FILE       correspondence points: one row per point, N columns,\n"
-"                        column i = vertex index (0-based) in SHAPEi's file\n"
+"  -c, --corr FILE       correspondence points (- : stdin): one row per point,\n"
+"                        N columns, column i = vertex index (0-based) in\n"
+"                        SHAPEi's file\n"
 "                        (points of all rings counted in file order); one\n"
 "                        outer ring: at least 3 rows, in the same order along\n"
 "                        every outline (0 rows or no -c, 1 or 2 rows: the rest\n"
@@ -289,9 +290,15 @@ static void parse_args(int argc, char **argv, struct options *o)
     o->nshapes = argc - optind;
     o->shapes = argv + optind;
     if (o->nshapes < 1) usage_error("expected at least one SHAPE file");
+    int stdins = 0;
     for (int i = 0; i < o->nshapes; i++)
-        if (!strcmp(o->shapes[i], "-") && o->nshapes > 1)
-            usage_error("stdin can be only the single shape");
+        if (!strcmp(o->shapes[i], "-")) {
+            if (o->nshapes > 1) usage_error("stdin can be only the single shape");
+            stdins++;
+        }
+    stdins += o->corr && !strcmp(o->corr, "-");
+    stdins += o->interior && !strcmp(o->interior, "-");
+    if (stdins > 1) usage_error("stdin ('-') can be only one of the SHAPE, -c and -i files");
 }
 
 /* file line of data row k (1-based) of a column file, for messages;
@@ -324,6 +331,32 @@ static void die_row(const char *path)
     if (sscanf(m, "row %d:", &k) == 1 && (line = data_line(path, k)) > 0)
         die("cannot read '%s': line %ld:%s", path, line, strchr(m, ':') + 1);
     die("cannot read '%s': %s", path, m);
+}
+
+/* The rows of -c as columns_read gives them.  Every candidate of the race
+ * reads them again, so "-c -" (stdin) is read once, by corr_stdin before
+ * any thread starts, and each read gets a copy. */
+static struct columns corr_kept;
+static int corr_kept_ok;
+
+static void corr_stdin(const struct options *o)
+{
+    if (!o->corr || strcmp(o->corr, "-")) return;
+    if (columns_read("-", 0, -1, NULL, &corr_kept) < 0) die("%s", cm_errmsg());
+    corr_kept_ok = 1;
+}
+
+static int corr_read(const char *path, int want_cols, struct columns *C)
+{
+    if (strcmp(path, "-") || !corr_kept_ok) return columns_read(path, want_cols, -1, NULL, C);
+    if (want_cols > 0 && corr_kept.rows > 0 && corr_kept.cols != want_cols)
+        return cm_seterr("cannot read '<stdin>': its first row: expected %d number%s, got %d", want_cols,
+                         want_cols == 1 ? "" : "s", corr_kept.cols);
+    *C = corr_kept;
+    size_t sz = (size_t)corr_kept.rows * corr_kept.cols * sizeof *C->x;
+    if (!(C->x = malloc(sz ? sz : 1))) return cm_seterr("out of memory");
+    memcpy(C->x, corr_kept.x, sz);
+    return 0;
 }
 
 /* seconds since the start (the -v lines say when each stage ended) */
@@ -486,7 +519,7 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
     }
     /* correspondences: rows by N columns of integer indices */
     struct columns C = {0};
-    if (o->corr && columns_read(o->corr, 0, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    if (o->corr && corr_read(o->corr, 0, &C) < 0) die("%s", cm_errmsg());
     if (o->corr && C.rows > 0 && C.cols != N)
         die("cannot read '%s': line 1: %d columns, but there are %d shapes", o->corr, C.cols, N);
     /* full rows; rows "v -1 -1 ...": a point on SHAPE0 only, to be placed by the matching */
@@ -603,7 +636,7 @@ static double certify(struct options *o, struct rings *R, const int *flipped, ch
 {
     int N = o->nshapes;
     struct columns C = {0};
-    if (columns_read(o->corr, 0, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    if (corr_read(o->corr, 0, &C) < 0) die("%s", cm_errmsg());
     if (C.rows > 0 && C.cols != N)
         die("cannot read '%s': line 1: %d columns, but there are %d shapes", o->corr, C.cols, N);
     int *n = malloc(N * sizeof *n), *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
@@ -981,7 +1014,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
                 "(img2rings -1)", R[s].name, R[s].nrings, R[s].nrings == 1 ? "" : "s", ka, R[0].name, nr, k0);
         }
     struct columns C = {0}, I = {0};
-    if (o->corr && columns_read(o->corr, N, -1, NULL, &C) < 0) die("%s", cm_errmsg());
+    if (o->corr && corr_read(o->corr, N, &C) < 0) die("%s", cm_errmsg());
     int *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
     for (size_t k = 0; k < (size_t)C.rows * N; k++) {
         double x = C.x[k];
@@ -1703,6 +1736,7 @@ int main(int argc, char **argv)
     parse_args(argc, argv, &o);
     int N = o.nshapes;
     t_start = now_seconds();
+    corr_stdin(&o);
 
     /* read and check every outline */
     struct rings *R = calloc(N, sizeof *R);
