@@ -1518,7 +1518,7 @@ static int cand_start(struct candidate *k, struct ahead *ah, int threads)
 #define POLISH_FIRST 4
 #endif
 /* the certificate's cost the race pays for that: one mesh of each
- * quadruple of given rows in each pose, 2-5 ms each (t0587's five rows,
+ * quadruple of given rows in each pose, 2-6 ms each (t0587's five rows,
  * six poses: 30 meshes, 0.07 s; seven rows, two poses: 70, 0.14-0.37 s) */
 #ifndef CERT_RACE_MESHES
 #define CERT_RACE_MESHES 40
