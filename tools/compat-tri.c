@@ -1517,11 +1517,14 @@ static int cand_start(struct candidate *k, struct ahead *ah, int threads)
 #ifndef POLISH_FIRST
 #define POLISH_FIRST 4
 #endif
-/* the certificate's cost the race pays for that: one mesh of each
- * quadruple of given rows in each pose, 2-6 ms each (t0587's five rows,
- * six poses: 30 meshes, 0.07 s; seven rows, two poses: 70, 0.14-0.37 s) */
+/* the certificate's cost the race pays for that at most: one mesh of
+ * each quadruple of given rows in each pose (7 rows on 7 poses, 6 on 16,
+ * 8 on 3).  Measured on t0587's characters with all seven rows: runs at
+ * the goal soon after 3 rounds pay 0.03-0.06 s (horse poses 0 1 4 0.06
+ * -> 0.10 s, 1 3 4 0.04 -> 0.10), flamingo poses 2 3 reach it with the
+ * polish 3.52 -> 0.53 s, 1 2 3 8.08 -> 1.16 s (the same meshes) */
 #ifndef CERT_RACE_MESHES
-#define CERT_RACE_MESHES 40
+#define CERT_RACE_MESHES 250
 #endif
 static double race(struct options *o, struct rings *R, struct compat *cp, double q0, struct ahead *ah,
                    char *kept, size_t ksize)
