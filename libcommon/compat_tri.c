@@ -1659,6 +1659,27 @@ static int defer_leaf(struct compat *c, struct tri_defer *df, const int *poly, i
 
 static int triangulate_rec(struct compat *c, int *poly, int m, int depth, struct tri_defer *df);
 
+/* twice the area of the piece poly (m corners) in shape 0 */
+static double piece_area2(const struct compat *c, const int *poly, int m)
+{
+    const double *X = c->X[0];
+    double a = 0;
+    for (int i = 0; i < m; i++) {
+        const double *p = X + 2 * poly[i], *q = X + 2 * poly[(i + 1) % m];
+        a += p[0] * q[1] - p[1] * q[0];
+    }
+    return a;
+}
+
+/* the piece poly (m corners) is done or left for the threads: the
+ * progress callback told (struct compat.progress) */
+static void piece_done(struct compat *c, const int *poly, int m)
+{
+    if (!c->progress || !(c->prog_total > 0)) return;
+    c->prog_done += piece_area2(c, poly, m);
+    c->progress(c->progress_ctx, fmin(1, c->prog_done / c->prog_total));
+}
+
 /* triangulates leaf order[i] of the struct tri_defer ctx on its own */
 static void leaf_job(void *ctx, int i)
 {
@@ -1757,6 +1778,8 @@ static int splice_leaves(struct compat *c, struct tri_defer *df, int nv0)
  * the overlays are left for leaf_job (struct tri_defer) */
 static int triangulate_top(struct compat *c, int *poly, int m)
 {
+    c->prog_done = 0;
+    c->prog_total = c->progress ? piece_area2(c, poly, m) : 0;
     if (parallel_threads(c->threads) < 2) return triangulate_rec(c, poly, m, 0, NULL);
     struct tri_defer df = {c, 0, 0, NULL, NULL};
     int nv0 = c->nv;
@@ -1797,15 +1820,23 @@ static int triangulate_top(struct compat *c, int *poly, int m)
 static int triangulate_rec(struct compat *c, int *poly, int m, int depth, struct tri_defer *df)
 {
     if (m < 3) return cm_seterr("internal: degenerate sub-polygon");
-    if (m == 3) return add_face(c, poly[0], poly[1], poly[2]);
+    if (m == 3) {
+        piece_done(c, poly, m);
+        return add_face(c, poly[0], poly[1], poly[2]);
+    }
     if (depth > 100000) return cm_seterr("compatible triangulation failed: recursion too deep");
-    if (df && m < PAIR_SEARCH_PARALLEL) return defer_leaf(c, df, poly, m, depth, 0);
+    if (df && m < PAIR_SEARCH_PARALLEL) {
+        piece_done(c, poly, m);
+        return defer_leaf(c, df, poly, m, depth, 0);
+    }
     struct split sp = {0};
     int rc0 = choose_split(c, poly, m, &sp);
     if (rc0 < 0) return -1;
     if (rc0 > 0) {
         c->stage_count[2]++;
-        return df ? defer_leaf(c, df, poly, m, depth, 1) : overlay_piece(c, poly, m);
+        int rc = df ? defer_leaf(c, df, poly, m, depth, 1) : overlay_piece(c, poly, m);
+        piece_done(c, poly, m);
+        return rc;
     }
     c->stage_count[sp.stage]++;
     int k = sp.k, base = c->nv;

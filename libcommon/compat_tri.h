@@ -74,6 +74,14 @@ struct compat {
      * never slide along the outline (compat_refine_params.slide) */
     int *bidx;
     unsigned char *bpin;
+    /* progress of compat_triangulate (and _poly), NULL: none.  Called on
+     * the calling thread (never from the split search's threads) with done,
+     * the share (0..1) of the piece's area in shape 0 already in finished
+     * triangles or in pieces left for the threads; for a progress bar of
+     * a long triangulation (the first cuts of a large piece take longest) */
+    void (*progress)(void *ctx, double done);
+    void *progress_ctx;
+    double prog_total, prog_done;   /* private: of the triangulation running */
 };
 
 /* Room for nv vertices in every shape's X (grows c->cap by doubling;

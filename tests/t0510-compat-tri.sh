@@ -30,6 +30,16 @@ test_expect_success 'one face list, N frames, every triangle positive in every s
 	sed -n 4p abc.mesh >frames && echo "frames 3" >expect && test_cmp expect frames &&
 	test_le 1e-12 $(min_area abc.mesh)
 '
+# the bar shows every 0.1 s and at its end, so even this quick run ends
+# with a full one; the mesh does not change with it
+test_expect_success 'a triangulation bar on a terminal (STOPMO_PROGRESS=1 forces it), none in a pipe' '
+	STOPMO_PROGRESS=1 compat-tri -c corr.txt a.rings b.rings c.rings >p.mesh 2>p.err &&
+	tr "\r" "\n" <p.err >p.lines &&
+	grep "^compat-tri: triangulation \[#*\] 1000/1000 [0-9.]*s$" p.lines &&
+	test_cmp abc.mesh p.mesh &&
+	compat-tri -c corr.txt a.rings b.rings c.rings >n.mesh 2>n.err &&
+	! test -s n.err
+'
 test_expect_success 'without refinement and simplification it still is compatible' '
 	compat-tri -e 0 -l 0 -s 0 -c corr.txt a.rings b.rings c.rings >raw.mesh &&
 	test_le 1e-12 $(min_area raw.mesh)

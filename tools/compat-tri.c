@@ -1731,6 +1731,13 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     return K[use]->q;
 }
 
+/* the triangulation's progress (struct compat.progress) in TRI_STEPS */
+#define TRI_STEPS 1000
+static void tri_progress(void *ctx, double done)
+{
+    progress_step(ctx, lround(done * TRI_STEPS));
+}
+
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -1793,7 +1800,16 @@ int main(int argc, char **argv)
     ah.k = &k1;
     if (!multi && o.match_default && o.refine && o.threads != 1 && parallel_threads(o.threads) > 1)
         ahead_start(&ah, &o, R, &k1);
-    if (!multi && compat_triangulate(&cp) < 0) {
+    /* a bar on a terminal while the first triangulation runs (the
+     * candidates' on other threads show none) */
+    struct progress tp;
+    progress_start(&tp, "compat-tri: triangulation", TRI_STEPS);
+    cp.progress = tri_progress;
+    cp.progress_ctx = &tp;
+    int tri_rc = multi ? 0 : compat_triangulate(&cp);
+    cp.progress = NULL;
+    progress_end(&tp);
+    if (tri_rc < 0) {
         if (ah.started) {   /* the rows alone are built again below */
             ahead_join(&ah, 1);
             if (k1.r) compat_refine_abandon(k1.r);
