@@ -834,12 +834,29 @@ struct cone_cache {
     const int *nc;        /* N: candidates of each shape */
     struct cone_val { _Atomic double an, pm; } **v;
                           /* N: m by nc[s] (corner-major: the pair search runs
-                           * over the candidates), the angle (NAN: not yet) and
+                           * over the candidates), the angle (cache_unset: not yet) and
                            * the smaller pseudo-angle side by side, one stream */
     _Atomic double **from, **to;
                           /* N: m by nc[s], clearance_cut of corner i -> a and of
-                           * a -> corner i, in full (NAN: not yet) */
+                           * a -> corner i, in full (cache_unset: not yet) */
 };
+
+/* The caches start as zero bytes (calloc: the pages a search never
+ * touches are never written; a piece of 300 corners has some 3000
+ * candidates, 14 MB of entries a shape, and a large piece is cut many
+ * times), so an entry of all zero bits is "not yet": a value worked out
+ * as +0 is kept as -0, which compares and computes as +0 does. */
+static inline int cache_unset(double v)
+{
+    uint64_t b;
+    memcpy(&b, &v, sizeof b);
+    return b == 0;
+}
+
+static inline double cache_value(double v)
+{
+    return v == 0 ? -0.0 : v;
+}
 
 /* cone_quality_cut(corner i, candidate a of shape s, cut), pc =
  * cone_cut_pseudo(cut) */
@@ -848,9 +865,9 @@ static inline double cone_cached(struct cone_cache *cc, int s, int a, int i, dou
     size_t k = (size_t)i * cc->nc[s] + a;
     struct cone_val *x = cc->v[s] + k;
     double e = atomic_load_explicit(&x->an, memory_order_acquire), pm;
-    if (isnan(e)) {   /* (a NAN angle is worked out again: the same) */
+    if (cache_unset(e)) {
         pm = 0;
-        e = cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1);
+        e = cache_value(cone_parts(&cc->sp[s], i, cc->C[s] + 2 * a, &pm, 1));
         atomic_store_explicit(&x->pm, pm, memory_order_relaxed);
         atomic_store_explicit(&x->an, e, memory_order_release);
     } else pm = atomic_load_explicit(&x->pm, memory_order_relaxed);
@@ -866,9 +883,11 @@ static double clearance_cached(struct cone_cache *cc, int s, int a, int i, int t
     size_t k = (size_t)i * cc->nc[s] + a;
     _Atomic double *x = (to ? cc->to : cc->from)[s] + k;
     double v = atomic_load_explicit(x, memory_order_relaxed);
-    if (isnan(v)) {   /* both ways at once (clearance_pair) */
+    if (cache_unset(v)) {   /* both ways at once (clearance_pair) */
         double f, t;
         clearance_pair(&cc->sp[s], i, cc->C[s] + 2 * a, &f, &t);
+        f = cache_value(f);
+        t = cache_value(t);
         atomic_store_explicit(cc->from[s] + k, f, memory_order_relaxed);
         atomic_store_explicit(cc->to[s] + k, t, memory_order_relaxed);
         v = to ? t : f;
@@ -1145,18 +1164,12 @@ static void stage2_prep_job(void *ctx, int s)
     const struct sub *p = &pp->sp[s];
     int m = p->m, n = pp->nc[s] = candidates(p, &pp->C[s]);
     uint64_t *nh = pp->nohug[s] = calloc((size_t)(n + 63) / 64 + 1, sizeof *nh);
-    cc->v[s] = malloc(((size_t)n * m + 1) * sizeof **cc->v);
-    cc->from[s] = malloc(((size_t)n * m + 1) * sizeof **cc->from);
-    cc->to[s] = malloc(((size_t)n * m + 1) * sizeof **cc->to);
+    cc->v[s] = calloc((size_t)n * m + 1, sizeof **cc->v);   /* "not yet" (cache_unset) */
+    cc->from[s] = calloc((size_t)n * m + 1, sizeof **cc->from);
+    cc->to[s] = calloc((size_t)n * m + 1, sizeof **cc->to);
     if (!pp->C[s] || !nh || !cc->v[s] || !cc->from[s] || !cc->to[s]) { atomic_store(&pp->oom, 1); return; }
     for (int a = 0; a < n; a++)
         if (!hugs_edge(p, pp->C[s] + 2 * a)) nh[a >> 6] |= (uint64_t)1 << (a & 63);
-    for (size_t k = 0; k < (size_t)n * m; k++) {
-        atomic_init(&cc->from[s][k], NAN);
-        atomic_init(&cc->to[s][k], NAN);
-        atomic_init(&cc->v[s][k].an, NAN);
-        atomic_init(&cc->v[s][k].pm, 0);
-    }
 }
 
 /* the rows of the search on the threads (small pieces: this thread); the
