@@ -83,13 +83,20 @@ static int innermost(const struct rings *r, int self, const double *q)
     return best;
 }
 
+/* every shape has shape 0's ring count; -1 (cm_errmsg) if not */
+static int same_ring_counts(int N, const struct rings *R)
+{
+    for (int s = 1; s < N; s++)
+        if (R[s].nrings != R[0].nrings)
+            return cm_seterr("shape %d has %d ring%s, but shape 0 has %d (rings are matched by order)", s,
+                             R[s].nrings, R[s].nrings == 1 ? "" : "s", R[0].nrings);
+    return 0;
+}
+
 int compat_nest(int N, struct rings *R, int *parent, unsigned char *flipped)
 {
     int nr = R[0].nrings;
-    for (int s = 1; s < N; s++)
-        if (R[s].nrings != nr)
-            return cm_seterr("shape %d has %d ring%s, but shape 0 has %d (rings are matched by order)", s,
-                             R[s].nrings, R[s].nrings == 1 ? "" : "s", nr);
+    if (same_ring_counts(N, R) < 0) return -1;
     int *par = malloc(nr * sizeof *par);
     for (int s = 0; s < N; s++) {
         struct rings *r = &R[s];
@@ -120,6 +127,19 @@ int compat_nest(int N, struct rings *R, int *parent, unsigned char *flipped)
     return 0;
 }
 
+int compat_layers(int N, struct rings *R, int *parent, unsigned char *flipped)
+{
+    int nr = R[0].nrings;
+    if (same_ring_counts(N, R) < 0) return -1;
+    for (int k = 0; k < nr; k++) parent[k] = COMPAT_LAYER;
+    for (int s = 0; s < N; s++)
+        for (int k = 0; k < nr; k++) {
+            flipped[(size_t)s * nr + k] = rings_orientation(&R[s], k) < 0;   /* exact */
+            if (flipped[(size_t)s * nr + k]) rings_reverse(&R[s], k);
+        }
+    return 0;
+}
+
 /* ------------------------------------------------------------------ */
 /* matching, simplification, stacking */
 
@@ -130,6 +150,7 @@ static int layout_ok(struct compat *cr, int nr, const int *parent, int s, const 
 {
     for (int a = 0; a < nr; a++)
         for (int b = a + 1; b < nr; b++) {
+            if (parent[a] == COMPAT_LAYER && parent[b] == COMPAT_LAYER) continue;   /* layers may cross */
             const double *A = cr[a].X[s], *B = cr[b].X[s];
             int na = cr[a].nb, nb = cr[b].nb;
             for (int i = 0; i < na; i++)

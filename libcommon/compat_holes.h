@@ -52,6 +52,18 @@ extern "C" {
  * (cm_errmsg names the shape and ring). */
 int compat_nest(int N, struct rings *R, int *parent, unsigned char *flipped);
 
+/* The parent of a layer (compat_layers): a piece that may overlap the
+ * other layers of its shape (never a hole, holds no hole). */
+#define COMPAT_LAYER (-2)
+
+/* Every ring a layer: parent[k] = COMPAT_LAYER, every ring made
+ * counter-clockwise (flipped as for compat_nest).  Layers are matched by
+ * order and triangulated each on its own, so they may cross each other
+ * (a leg drawn over the body in one pose and apart in another); each
+ * ring must be simple (rings_check_each_simple).  Returns -1 if the
+ * shapes have different ring counts. */
+int compat_layers(int N, struct rings *R, int *parent, unsigned char *flipped);
+
 /* Put every shape's rings in shape 0's order (for traced frames, whose
  * rings come in an order of their own, e.g. img2rings: by area): the
  * top-level rings, then recursively the rings inside matched rings, are

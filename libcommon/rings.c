@@ -330,7 +330,8 @@ static int cmp_seg(const void *x, const void *y)
     return (s->xmin > t->xmin) - (s->xmin < t->xmin);
 }
 
-int rings_first_crossing(const struct rings *r, int *e1, int *e2)
+/* rings_first_crossing; within: only edges of the same ring */
+static int first_crossing(const struct rings *r, int within, int *e1, int *e2)
 {
     int total = r->start[r->nrings];
     struct seg *S = malloc((size_t)total * sizeof *S + 1);
@@ -348,6 +349,7 @@ int rings_first_crossing(const struct rings *r, int *e1, int *e2)
     int bad = 0;
     for (int s = 0; s < m && !bad; s++)
         for (int t = s + 1; t < m && S[t].xmin <= S[s].xmax; t++) {
+            if (within && S[t].ring != S[s].ring) continue;
             const double *a = r->P + 2 * S[s].a, *b = r->P + 2 * S[s].b;
             const double *c = r->P + 2 * S[t].a, *d = r->P + 2 * S[t].b;
             int shared = -1;   /* which endpoints coincide by index */
@@ -371,6 +373,19 @@ int rings_first_crossing(const struct rings *r, int *e1, int *e2)
     return bad;
 }
 
+int rings_first_crossing(const struct rings *r, int *e1, int *e2)
+{
+    return first_crossing(r, 0, e1, e2);
+}
+
+/* the ring holding vertex v */
+static int ring_of(const struct rings *r, int v)
+{
+    int k = 0;
+    while (k + 1 < r->nrings && r->start[k + 1] <= v) k++;
+    return k;
+}
+
 int rings_check_simple(const struct rings *r)
 {
     int e1, e2, rc = rings_first_crossing(r, &e1, &e2);
@@ -378,6 +393,16 @@ int rings_check_simple(const struct rings *r)
     if (rc)
         return cm_seterr("cannot read '%s': line %ld: outline intersects itself (edge from line %ld crosses edge from line %ld)",
                          r->name, r->line[e2], r->line[e1], r->line[e2]);
+    return 0;
+}
+
+int rings_check_each_simple(const struct rings *r)
+{
+    int e1, e2, rc = first_crossing(r, 1, &e1, &e2);
+    if (rc < 0) return -1;
+    if (rc)
+        return cm_seterr("cannot read '%s': line %ld: ring %d intersects itself (edge from line %ld crosses edge from "
+                         "line %ld)", r->name, r->line[e2], ring_of(r, e2) + 1, r->line[e1], r->line[e2]);
     return 0;
 }
 

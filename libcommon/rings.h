@@ -73,6 +73,10 @@ int rings_collinear(const struct rings *r, int k);
  * onto its neighbour.  Error names both edges by file line. */
 int rings_check_simple(const struct rings *r);
 
+/* rings_check_simple within each ring only: rings may cross each other
+ * (layers of a drawing, compat-tri --layers).  The error names the ring. */
+int rings_check_each_simple(const struct rings *r);
+
 /* The first crossing rings_check_simple would report: 1 and the start
  * points e1 < e2 of the two edges (edge e runs from point e to the next
  * point of its ring), 0 if the rings are simple, -1 if out of memory. */

@@ -9,6 +9,9 @@
 # neck, a beak).  Landmarks in outline order: horse rear hoofs, front
 # hoofs, snout, ear, tail; flamingo toe, beak, head, two neck bends, tail,
 # toe.  The legs never cross, so the order is the same in every pose.
+# Horse layers (compat-tri --layers): -v omit=K draws it without leg K
+# (0 front left .. 3 rear right), -v only=K draws leg K alone (its
+# landmarks are still those of the whole horse).
 function rad(d) { return d * 3.141592653589793 / 180 }
 function cap(ax, ay, bx, by, ra, rb) { CA[nc] = ax; CB[nc] = ay; CC[nc] = bx; CD[nc] = by; CR[nc] = ra; CS[nc] = rb; nc++ }
 function ell(cx, cy, a, b, th) { EX[ne] = cx; EY[ne] = cy; EA[ne] = a; EB[ne] = b; ET[ne] = rad(th); ne++ }
@@ -18,11 +21,13 @@ function mark(name, x, y) { LN[nl] = name; LX[nl] = x; LY[nl] = y; nl++ }
 function tip(ax, ay, bx, by, r, name,   l) { l = sqrt((bx - ax) ^ 2 + (by - ay) ^ 2); mark(name, bx + r * (bx - ax) / l, by + r * (by - ay) / l) }
 function side(ax, ay, bx, by, r, name,   l) { l = sqrt((bx - ax) ^ 2 + (by - ay) ^ 2); mark(name, bx - r * (by - ay) / l, by + r * (bx - ax) / l) }
 function inside(x, y,   i, u, v, p, q, dx, dy, t, r) {
-	for (i = 0; i < ne; i++) {
+	for (i = 0; i < ne && only == ""; i++) {
 		u = x - EX[i]; v = y - EY[i]; p = u * cos(ET[i]) + v * sin(ET[i]); q = -u * sin(ET[i]) + v * cos(ET[i])
 		if ((p / EA[i]) ^ 2 + (q / EB[i]) ^ 2 <= 1) return 1
 	}
 	for (i = 0; i < nc; i++) {
+		if (only != "" && (i < LEG0[only] || i >= LEG1[only])) continue
+		if (omit != "" && i >= LEG0[omit] && i < LEG1[omit]) continue
 		dx = CC[i] - CA[i]; dy = CD[i] - CB[i]
 		t = ((x - CA[i]) * dx + (y - CB[i]) * dy) / (dx * dx + dy * dy); t = t < 0 ? 0 : t > 1 ? 1 : t
 		r = CR[i] + t * (CS[i] - CR[i])
@@ -46,7 +51,8 @@ function horse(   P, L, k, hip, sx, sy, hx, hy, ex, ey, tx, ty, kx, ky, fx, fy) 
 	for (k = 0; k < 4; k++) {
 		step(hip[k + 1], 150, P[4 + 2 * k], 42); kx = PX; ky = PY
 		step(kx, ky, P[5 + 2 * k], 48); fx = PX; fy = PY
-		cap(hip[k + 1], 150, kx, ky, 9, 5); cap(kx, ky, fx, fy, 4.5, 4); tip(kx, ky, fx, fy, 4, "hoof" k)
+		LEG0[k] = nc; cap(hip[k + 1], 150, kx, ky, 9, 5); cap(kx, ky, fx, fy, 4.5, 4); LEG1[k] = nc
+		tip(kx, ky, fx, fy, 4, "hoof" k)
 	}
 	split("hoof2 hoof3 hoof0 hoof1 snout ear tail", ORD, " ")
 }

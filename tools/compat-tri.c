@@ -12,6 +12,7 @@
 #include "columns.h"
 #include "mesh.h"
 #include "rings.h"
+#include "topology.h"
 #include "tool.h"
 #include "progress.h"
 #include "parallel.h"
@@ -47,6 +48,11 @@ static const char help[] =
 "                        2N columns x0 y0 x1 y1 ... (the point in SHAPE0,\n"
 "                        SHAPE1, ...); each becomes one vertex at exactly\n"
 "                        those positions\n"
+"      --layers          every ring is a layer of the drawing, triangulated on\n"
+"                        its own: rings may overlap (a leg drawn over the body\n"
+"                        in one pose and apart in another), no ring is a hole;\n"
+"                        the faces are written layer by layer, the first ring's\n"
+"                        first (drawn first, at the back); not with -i\n"
 "      --match-rings M   how rings are paired across shapes: 'order' (default:\n"
 "                        ring k with ring k) or 'nearest' (each shape's rings\n"
 "                        reordered to SHAPE0's by nesting and nearest mean\n"
@@ -169,6 +175,7 @@ struct options {
     double bend, feature, spread;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
+    int layers;               /* --layers: every ring a layer (compat_layers) */
     double min_angle, split_share;
     double sharp_in;      /* degrees: the input outlines' sharpest corner (one ring each; else 0) */
     int slide;        /* --slide: 0 off, 1 in the passes run again, 2 in every pass, 3 as 1
@@ -207,7 +214,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
         {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'},
         {"spread", 1, 0, 'W'}, {"match-polish", 1, 0, 'G'},
-        {"split-share", 1, 0, 'H'}, {"slide", 1, 0, 'L'}, {0, 0, 0, 0}};
+        {"split-share", 1, 0, 'H'}, {"slide", 1, 0, 'L'}, {"layers", 0, 0, 'Y'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 0.2;
     o->slide = 1;
@@ -218,6 +225,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         switch (c) {
         case 'c': o->corr = optarg; break;
         case 'i': o->interior = optarg; break;
+        case 'Y': o->layers = 1; break;
         case 'e': o->err = arg_double(optarg, "--error"); break;
         case 'l': o->edge = arg_double(optarg, "--edge-length"); break;
         case 's': o->smooth = arg_int(optarg, "--smooth"); break;
@@ -299,6 +307,8 @@ static void parse_args(int argc, char **argv, struct options *o)
     stdins += o->corr && !strcmp(o->corr, "-");
     stdins += o->interior && !strcmp(o->interior, "-");
     if (stdins > 1) usage_error("stdin ('-') can be only one of the SHAPE, -c and -i files");
+    /* a point inside two overlapping layers has no one piece */
+    if (o->layers && o->interior) usage_error("--layers and -i cannot be combined");
 }
 
 /* file line of data row k (1-based) of a column file, for messages;
@@ -1029,13 +1039,14 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (o->nearest) info(1, "--match-rings nearest: rings of %d shape%s reordered", moved, moved == 1 ? "" : "s");
     int *parent = malloc(nr * sizeof *parent);
     unsigned char *flipped = malloc((size_t)N * nr);
-    if (compat_nest(N, R, parent, flipped) < 0) die("rings do not match: %s", cm_errmsg());
+    if ((o->layers ? compat_layers(N, R, parent, flipped) : compat_nest(N, R, parent, flipped)) < 0)
+        die("rings do not match: %s", cm_errmsg());
     int nholes = 0, nflip = 0;
     for (int k = 0; k < nr; k++) nholes += compat_is_hole(parent, k);
     for (size_t k = 0; k < (size_t)N * nr; k++) nflip += flipped[k];
-    info(1, "%d ring%s per shape: %d piece%s, %d hole%s; %d ring%s reversed (indices refer to the file order)",
-         nr, nr == 1 ? "" : "s", nr - nholes, nr - nholes == 1 ? "" : "s", nholes, nholes == 1 ? "" : "s",
-         nflip, nflip == 1 ? "" : "s");
+    info(1, "%d ring%s per shape: %d %s%s, %d hole%s; %d ring%s reversed (indices refer to the file order)",
+         nr, nr == 1 ? "" : "s", nr - nholes, o->layers ? "layer" : "piece", nr - nholes == 1 ? "" : "s", nholes,
+         nholes == 1 ? "" : "s", nflip, nflip == 1 ? "" : "s");
     if (o->interior && columns_read(o->interior, 2 * N, -1, NULL, &I) < 0) die("%s", cm_errmsg());
     int nrows;
     int *rows = match_rings(o, N, R, parent, flipped, corr, C.rows, &nrows);
@@ -1731,6 +1742,38 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     return K[use]->q;
 }
 
+/* --layers: the faces sorted by layer (stable: the ring whose vertices
+ * their connected component holds, the first ring first), so that a
+ * renderer drawing them in order puts the later layers in front */
+static void layer_order(struct compat *cp)
+{
+    int nv = cp->nv, nf = cp->nf, nr = cp->nrings;
+    int *lab = malloc(((size_t)nv + 1) * sizeof *lab), *stack = malloc(((size_t)nv + 1) * sizeof *stack);
+    int *F = malloc(3 * ((size_t)nf + 1) * sizeof *F), *cnt = calloc((size_t)nr + 1, sizeof *cnt);
+    struct topology t;
+    if (!lab || !stack || !F || !cnt || topology_build(cp->F, nf, nv, &t) < 0) die("out of memory");
+    for (int v = 0; v < nv; v++) lab[v] = -1;
+    for (int r = 0; r < nr; r++) {   /* each layer's component, from its first ring vertex */
+        int top = 0;
+        lab[cp->ring_start[r]] = r;
+        stack[top++] = cp->ring_start[r];
+        while (top) {
+            int v = stack[--top];
+            for (int k = t.VVs[v]; k < t.VVs[v + 1]; k++)
+                if (lab[t.VV[k]] < 0) { lab[t.VV[k]] = r; stack[top++] = t.VV[k]; }
+        }
+    }
+    for (int f = 0; f < nf; f++) {
+        if (lab[cp->F[3 * f]] < 0) die("internal: a face in no layer");
+        cnt[lab[cp->F[3 * f]] + 1]++;
+    }
+    for (int r = 0; r < nr; r++) cnt[r + 1] += cnt[r];
+    for (int f = 0; f < nf; f++) memcpy(F + 3 * (size_t)cnt[lab[cp->F[3 * f]]]++, cp->F + 3 * (size_t)f, 3 * sizeof *F);
+    memcpy(cp->F, F, 3 * (size_t)nf * sizeof *F);
+    topology_free(&t);
+    free(lab); free(stack); free(F); free(cnt);
+}
+
 /* the triangulation's progress (struct compat.progress) in TRI_STEPS */
 #define TRI_STEPS 1000
 static void tri_progress(void *ctx, double done)
@@ -1757,8 +1800,15 @@ int main(int argc, char **argv)
             if (rings_degenerate(&R[s], k))
                 die("cannot read '%s': line %ld: degenerate outline (ring %d encloses no area)", R[s].name,
                     R[s].line[R[s].start[k]] - 1, k + 1);
-        if (rings_check_simple(&R[s]) < 0) die("%s", cm_errmsg());
-        if (R[s].nrings != 1) multi = 1;
+        if (o.layers ? rings_check_each_simple(&R[s]) < 0 : rings_check_simple(&R[s]) < 0) {
+            /* each ring simple, but two cross: overlapping parts of a drawing */
+            int e1, e2;
+            if (!o.layers && rings_check_each_simple(&R[s]) == 0 && rings_first_crossing(&R[s], &e1, &e2) == 1)
+                die("cannot read '%s': line %ld: two rings cross (edges from lines %ld and %ld); rings drawn "
+                    "over each other as layers need --layers", R[s].name, R[s].line[e2], R[s].line[e1], R[s].line[e2]);
+            die("%s", cm_errmsg());
+        }
+        if (R[s].nrings != 1 || o.layers) multi = 1;
     }
     struct compat cp;
     int *flipped = calloc(N, sizeof *flipped);
@@ -1855,6 +1905,7 @@ int main(int argc, char **argv)
         info(1, "outline after the refinement (--slide): within %.3g of the diagonal of the input (two-sided, largest in %s)",
              hmax, o.shapes[hs]);
     }
+    if (o.layers) layer_order(&cp);
     double minarea, q = compat_min_angle(&cp, &minarea);
     if (!(minarea > 0))
         die("compatible triangulation failed: a triangle is inverted or degenerate in some shape");
