@@ -125,7 +125,8 @@ fi
 #    with the five given rows of the tests (feet, head, neck, tail), default
 #    options: wall and CPU against 1 s, and the worst angle.  The horse
 #    reaches 20 degrees; the flamingo does not (its pose 0 hides a leg in a
-#    slit, compat-tri(1) BUGS).
+#    slit, compat-tri(1) BUGS).  Then the same poses with leg 0 drawn as a
+#    layer of its own (--layers), against the whole silhouettes.
 TEST_DIRECTORY="$ROOT/tests"
 . "$ROOT/tests/morph2d-lib.sh"
 mkdir -p "$T/stick"
@@ -135,4 +136,16 @@ for ch in horse flamingo; do
 		"$T/stick/${ch}2.rings" "$T/stick/${ch}3.rings" "$T/stick/${ch}4.rings" "$T/stick/${ch}5.rings") || exit 1
 	set -- $(ct_stats "$T/k.log")
 	echo "compat-tri default, six stick-$ch poses (t0587, five rows): $(cat "$T/wall") s wall ($tw s CPU, worst $1 deg, $2 vertices, load $(cut -d' ' -f1 /proc/loadavg)) | baseline goal: 1 s | ratio $(awk -v a="$(cat "$T/wall")" 'BEGIN { printf "%.2f", a }')"
+	# the same six poses drawn as two layers (compat-tri --layers): the
+	# body without leg 0, and that leg; the five rows less the leg's
+	wall0=$(cat "$T/wall") q0=$1
+	leg=hoof0; [ $ch = flamingo ] && leg=toe0
+	(cd "$T/stick" && for k in 0 1 2 3 4 5; do stick_layer_pose $ch $k $leg || exit 1; done &&
+		paste -d" " rows50 rows51 rows52 rows53 rows54 rows55 >$ch-layers.corr) || exit 1
+	tw=$(cpu "$T/k.log" compat-tri -v --layers -c "$T/stick/$ch-layers.corr" "$T/stick/layers0.rings" \
+		"$T/stick/layers1.rings" "$T/stick/layers2.rings" "$T/stick/layers3.rings" "$T/stick/layers4.rings" \
+		"$T/stick/layers5.rings") || exit 1
+	set -- $(ct_stats "$T/k.log")
+	echo "compat-tri --layers worst angle, six stick-$ch poses, leg 0 a layer (four rows): $1 deg ($2 vertices) | baseline the whole silhouettes (five rows): $q0 deg | ratio $(awk -v a="$1" -v b="$q0" 'BEGIN { printf "%.2f", a / b }')"
+	echo "compat-tri --layers time, six stick-$ch poses, leg 0 a layer (four rows): $(cat "$T/wall") s wall ($tw s CPU) | baseline the whole silhouettes: $wall0 s | ratio $(awk -v a="$(cat "$T/wall")" -v b="$wall0" 'BEGIN { printf "%.3f", a / b }')"
 done

@@ -166,6 +166,23 @@ stick_pose() {
 	  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 } print b }' $1$2.rings pts$2 >$1lm$2
 }
 
+# stick_layer_pose CHAR K LANDMARK: the stick CHAR of pose K without its
+# leg 0 (bodyK.rings) and that leg alone (legK.rings), both traced;
+# layersK.rings: body then leg (for compat-tri --layers); rowsK: the
+# landmarks other than LANDMARK (the leg's: hoof0, toe0) as indices into
+# bodyK.rings, in CHARlm order; rows5K: the same of stick_rows's five
+stick_layer_pose() {
+	awk -v char=$1 -v pose=$2 -v lm=pts$2 -v omit=0 -f "$TEST_DIRECTORY/t0587-stick-character.awk" >body$2.ppm &&
+	awk -v char=$1 -v pose=$2 -v lm=/dev/null -v only=0 -f "$TEST_DIRECTORY/t0587-stick-character.awk" >leg$2.ppm &&
+	img2rings -1 -s 1 -o body$2.rings body$2.ppm &&
+	img2rings -1 -s 1 -o leg$2.rings leg$2.ppm &&
+	cat body$2.rings leg$2.rings >layers$2.rings &&
+	awk -v leg=$3 'NR == FNR { if (FNR > 1) { x[n] = $1; y[n] = $2; n++ } next }
+	$1 != leg { b = -1; for (i = 0; i < n; i++) { d = ($2 - x[i]) ^ 2 + ($3 - y[i]) ^ 2; if (b < 0 || d < bd) { bd = d; b = i } }
+	  if (bd > 16) { print $1 " far from the outline" >"/dev/stderr"; exit 1 }
+	  print b >"rows" pose; if (FNR == 1 || FNR == 3 || FNR >= 5) print b >"rows5" pose }' pose=$2 body$2.rings pts$2
+}
+
 # stick_poses CHAR K...: stick_pose CHAR K for each K
 stick_poses() {
 	sp_char=$1; shift

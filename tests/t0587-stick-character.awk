@@ -9,9 +9,9 @@
 # neck, a beak).  Landmarks in outline order: horse rear hoofs, front
 # hoofs, snout, ear, tail; flamingo toe, beak, head, two neck bends, tail,
 # toe.  The legs never cross, so the order is the same in every pose.
-# Horse layers (compat-tri --layers): -v omit=K draws it without leg K
-# (0 front left .. 3 rear right), -v only=K draws leg K alone (its
-# landmarks are still those of the whole horse).
+# Layers (compat-tri --layers): -v omit=K draws the character without
+# leg K (horse 0 front left .. 3 rear right; flamingo 0, 1), -v only=K
+# draws leg K alone (the landmarks are still those of the whole one).
 function rad(d) { return d * 3.141592653589793 / 180 }
 function cap(ax, ay, bx, by, ra, rb) { CA[nc] = ax; CB[nc] = ay; CC[nc] = bx; CD[nc] = by; CR[nc] = ra; CS[nc] = rb; nc++ }
 function ell(cx, cy, a, b, th) { EX[ne] = cx; EY[ne] = cy; EA[ne] = a; EB[ne] = b; ET[ne] = rad(th); ne++ }
@@ -76,8 +76,8 @@ function flamingo(   P, L, k, b, bx, by, tx, ty, nx, ny, X, Y, hx, hy, kx, ky, a
 	for (k = 0; k < 2; k++) {
 		step(hip[k + 1], 160, P[7 + 2 * k], 45); kx = PX; ky = PY
 		step(kx, ky, P[8 + 2 * k], 55); ax = PX; ay = PY
-		cap(hip[k + 1], 160, kx, ky, 3.2, 2.6); cap(kx, ky, ax, ay, 2.6, 2.2)
-		step(ax, ay, P[11 + k], 16); cap(ax, ay, PX, PY, 2.4, 1.5); tip(ax, ay, PX, PY, 1.5, "toe" k)
+		LEG0[k] = nc; cap(hip[k + 1], 160, kx, ky, 3.2, 2.6); cap(kx, ky, ax, ay, 2.6, 2.2)
+		step(ax, ay, P[11 + k], 16); cap(ax, ay, PX, PY, 2.4, 1.5); LEG1[k] = nc; tip(ax, ay, PX, PY, 1.5, "toe" k)
 	}
 	split("toe0 beak crown neckB neckA tail toe1", ORD, " ")
 }

@@ -902,7 +902,7 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
         }
         if (mc) {
             info(1, "ring %d (%s): %d correspondence points placed by the boundary matching (%d given)", k + 1,
-                 hole ? "a hole" : "a piece", nmc - nk, nk);
+                 hole ? "a hole" : o->layers ? "a layer" : "a piece", nmc - nk, nk);
             if (!nk) { free_mc[k] = mc; free_n[k] = nmc; continue; }   /* its rows after turn_ring */
         }
         nrows[k] = mc ? nmc : nk;
@@ -963,7 +963,7 @@ static int *match_rings(const struct options *o, int N, const struct rings *R, c
                      "search's", k + 1, cm_errmsg());
             else if (t)
                 info(1, "ring %d (%s): its shape does not tell how it turns (%s): started as its surroundings turn in "
-                        "%d shape%s, %d correspondence points", k + 1, hole ? "a hole" : "a piece",
+                        "%d shape%s, %d correspondence points", k + 1, hole ? "a hole" : o->layers ? "a layer" : "a piece",
                      round ? "round" : "as cheap turned", t, t == 1 ? "" : "s", nmc);
             for (int s = 0; s < N; s++) { free(P[s]); P[s] = NULL; }
         }
