@@ -40,6 +40,11 @@ test_expect_success 'the faces come layer by layer, the body (ring 1) first' '
 	test "$(grep -v vertex0 layers | uniq | tr "\n" " ")" = "0 1 " &&
 	grep -x "vertex0 0" layers
 '
+test_expect_success 'one ring per file: --layers changes nothing (the race of a single outline)' '
+	compat-tri --layers -c rows body0.rings body2.rings >b1.mesh &&
+	compat-tri -c rows body0.rings body2.rings >b2.mesh &&
+	test_cmp b1.mesh b2.mesh
+'
 test_expect_success 'the same bytes on one thread and on two' '
 	compat-tri --layers --threads 1 -c rows layers0.rings layers2.rings >t1.mesh &&
 	compat-tri --layers --threads 2 -c rows layers0.rings layers2.rings >t2.mesh &&

@@ -1808,7 +1808,7 @@ int main(int argc, char **argv)
                     "over each other as layers need --layers", R[s].name, R[s].line[e2], R[s].line[e1], R[s].line[e2]);
             die("%s", cm_errmsg());
         }
-        if (R[s].nrings != 1 || o.layers) multi = 1;
+        if (R[s].nrings != 1) multi = 1;   /* one ring: --layers changes nothing */
     }
     struct compat cp;
     int *flipped = calloc(N, sizeof *flipped);
@@ -1905,7 +1905,7 @@ int main(int argc, char **argv)
         info(1, "outline after the refinement (--slide): within %.3g of the diagonal of the input (two-sided, largest in %s)",
              hmax, o.shapes[hs]);
     }
-    if (o.layers) layer_order(&cp);
+    if (o.layers && multi) layer_order(&cp);
     double minarea, q = compat_min_angle(&cp, &minarea);
     if (!(minarea > 0))
         die("compatible triangulation failed: a triangle is inverted or degenerate in some shape");
