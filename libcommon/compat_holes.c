@@ -140,6 +140,51 @@ int compat_layers(int N, struct rings *R, int *parent, unsigned char *flipped)
     return 0;
 }
 
+int compat_stack(const struct compat *parts, int n, struct compat *c)
+{
+    memset(c, 0, sizeof *c);
+    int N = parts[0].N, nv = 0, nf = 0, nb = 0;
+    for (int r = 0; r < n; r++) { nv += parts[r].nv; nf += parts[r].nf; nb += parts[r].nb; }
+    c->N = N;
+    c->X = calloc(N, sizeof *c->X);
+    c->F = malloc(3 * ((size_t)nf + 1) * sizeof *c->F);
+    c->ring_start = malloc(((size_t)n + 1) * sizeof *c->ring_start);
+    c->ring_parent = malloc(((size_t)n + 1) * sizeof *c->ring_parent);
+    if (!c->X || !c->F || !c->ring_start || !c->ring_parent) goto oom;
+    for (int s = 0; s < N; s++)
+        if (!(c->X[s] = malloc(2 * ((size_t)nv + 1) * sizeof **c->X))) goto oom;
+    c->cap = nv + 1;
+    c->fcap = nf + 1;
+    c->nrings = n;
+    int b = 0, v = nb;
+    for (int r = 0; r < n; r++) {
+        c->ring_start[r] = b;
+        c->ring_parent[r] = COMPAT_LAYER;
+        for (int s = 0; s < N; s++) {
+            memcpy(c->X[s] + 2 * (size_t)b, parts[r].X[s], 2 * (size_t)parts[r].nb * sizeof **c->X);
+            memcpy(c->X[s] + 2 * (size_t)v, parts[r].X[s] + 2 * (size_t)parts[r].nb,
+                   2 * (size_t)(parts[r].nv - parts[r].nb) * sizeof **c->X);
+        }
+        for (int f = 0; f < 3 * parts[r].nf; f++) {
+            int x = parts[r].F[f];
+            c->F[3 * (size_t)c->nf + f] = x < parts[r].nb ? b + x : v + x - parts[r].nb;
+        }
+        c->nf += parts[r].nf;
+        b += parts[r].nb;
+        v += parts[r].nv - parts[r].nb;
+        c->nsteiner += parts[r].nsteiner;
+        c->nrefine += parts[r].nrefine;
+        for (int k = 0; k < 3; k++) c->stage_count[k] += parts[r].stage_count[k];
+    }
+    c->ring_start[n] = nb;
+    c->nv = v;
+    c->nb = c->nm = nb;
+    return 0;
+oom:
+    compat_free(c);
+    return cm_seterr("out of memory");
+}
+
 /* ------------------------------------------------------------------ */
 /* matching, simplification, stacking */
 

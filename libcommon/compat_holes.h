@@ -64,6 +64,15 @@ int compat_nest(int N, struct rings *R, int *parent, unsigned char *flipped);
  * shapes have different ring counts. */
 int compat_layers(int N, struct rings *R, int *parent, unsigned char *flipped);
 
+/* The meshes of n layers, each meshed on its own as one outer ring
+ * (compat_triangulate, boundary vertices 0..nb-1 first), stacked into
+ * one mesh c of the same N shapes: every layer's outline first, layer by
+ * layer (ring r is layer r's: ring_start, parent COMPAT_LAYER), then the
+ * layers' interior vertices in the same order; the faces layer by layer,
+ * the first layer's first.  c: out (compat_free); parts are left as they
+ * are.  Returns -1 out of memory. */
+int compat_stack(const struct compat *parts, int n, struct compat *c);
+
 /* Put every shape's rings in shape 0's order (for traced frames, whose
  * rings come in an order of their own, e.g. img2rings: by area): the
  * top-level rings, then recursively the rings inside matched rings, are

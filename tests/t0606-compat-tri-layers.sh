@@ -17,7 +17,7 @@ face_layers() {
 # measured (2026-11-29): the whole silhouettes of poses 0 and 2 with all
 # seven rows end at 15.91 deg (5.7 s CPU: the front legs overlap in pose
 # 2, so the gap between them must go into a few pixels of its outline);
-# as two layers 20.60 deg, 133 vertices, 0.04 s
+# as two layers meshed jointly 20.60 deg, 133 vertices, 0.04 s
 test_expect_success 'setup: poses 0 and 2 (a foreleg lifted over the other) as body and leg' '
 	stick_layer_pose horse 0 hoof0 && stick_layer_pose horse 2 hoof0 &&
 	paste -d" " rows0 rows2 >rows &&
@@ -29,16 +29,47 @@ test_expect_success 'without --layers the crossing rings are refused, with a poi
 	! test -s out &&
 	grep "^compat-tri: cannot read .layers0.rings.: line [0-9]*: two rings cross (edges from lines [0-9]* and [0-9]*); rings drawn over each other as layers need --layers$" err
 '
-test_expect_success '--layers: compatible, every triangle positive, 20 degrees in both poses' '
+test_expect_success '--layers: each layer meshed on its own, every triangle positive, 20 degrees in both poses' '
 	compat-tri -v --layers -c rows layers0.rings layers2.rings >m.mesh 2>m.log &&
-	grep "2 rings per shape: 2 layers, 0 holes" m.log &&
+	grep "^compat-tri: layer 1 of 2 (ring 1 of every file): 6 correspondence rows;" m.log &&
+	grep "^compat-tri: layer 2 of 2 (ring 2 of every file): 1 correspondence row (its start, as the layers around it turn);" m.log &&
 	test_le 1e-12 $(min_area m.mesh) &&
 	test_le 20 $(worst_angle m.mesh)
 '
-test_expect_success 'the faces come layer by layer, the body (ring 1) first' '
-	face_layers m.mesh >layers &&
-	test "$(grep -v vertex0 layers | uniq | tr "\n" " ")" = "0 1 " &&
-	grep -x "vertex0 0" layers
+test_expect_success '--layers=joint: one matching and refinement of both rings, 20 degrees too' '
+	compat-tri -v --layers=joint -c rows layers0.rings layers2.rings >j.mesh 2>j.log &&
+	grep "2 rings per shape: 2 layers, 0 holes" j.log &&
+	! grep "^compat-tri: layer 1 of 2" j.log &&
+	test_le 1e-12 $(min_area j.mesh) &&
+	test_le 20 $(worst_angle j.mesh) &&
+	test_must_fail_usage compat-tri --layers=both -c rows layers0.rings layers2.rings
+'
+test_expect_success 'the faces come layer by layer, the body (ring 1) first (each and joint)' '
+	for m in m j; do
+		face_layers $m.mesh >layers &&
+		test "$(grep -v vertex0 layers | uniq | tr "\n" " ")" = "0 1 " &&
+		grep -x "vertex0 0" layers || return 1
+	done
+'
+# measured (2026-11-29, one thread): poses 0 1 2 5 with the tests' five
+# rows less the leg's (four on the body): meshed jointly 18.65 deg (one
+# matching of both rings), each layer with the race 20.01 deg, 290
+# vertices, 0.22 s; 51 of the 57 subsets reached 20 deg jointly, 57 of 57
+# each layer on its own
+test_expect_success 'four rows on the body, poses 0 1 2 5: each layer reaches 20 degrees' '
+	mkdir four && (cd four &&
+	for k in 0 1 2 5; do stick_layer_pose horse $k hoof0 || exit 1; done &&
+	paste -d" " rows50 rows51 rows52 rows55 >rows &&
+	test $(wc -l <rows) = 4 &&
+	compat-tri --layers --points-out used -c rows layers0.rings layers1.rings layers2.rings layers5.rings >m.mesh) &&
+	test_le 1e-12 $(min_area four/m.mesh) &&
+	test_le 20 $(worst_angle four/m.mesh)
+'
+test_expect_success '--points-out: the rows of every layer, numbered over both rings, usable as -c' '
+	n0=$(awk "/^ring/ { print \$2; exit }" four/layers0.rings) &&
+	awk -v n0=$n0 "!/^#/ { if (\$1 < n0) a++; else b++ } END { exit !(a >= 4 && b >= 1) }" four/used &&
+	(cd four && compat-tri --layers -m off -c used layers0.rings layers1.rings layers2.rings layers5.rings >off.mesh) &&
+	test_le 1e-12 $(min_area four/off.mesh)
 '
 test_expect_success 'one ring per file: --layers changes nothing (the race of a single outline)' '
 	compat-tri --layers -c rows body0.rings body2.rings >b1.mesh &&
@@ -71,6 +102,13 @@ test_expect_success 'the flamingo, six poses, the leg hidden in pose 0 as a laye
 		layers5.rings >m.mesh) &&
 	test_le 1e-12 $(min_area fl/m.mesh) &&
 	test_le 20 $(worst_angle fl/m.mesh)
+'
+test_expect_success 'bad input: a row on the body in one pose and on the leg in the other is named by its line' '
+	n2=$(awk "/^ring/ { print \$2; exit }" layers2.rings) &&
+	{ cat rows; echo "1 $((n2 + 2))"; } >cross &&
+	test_must_fail compat-tri --layers -c cross layers0.rings layers2.rings >out 2>err &&
+	! test -s out &&
+	grep "^compat-tri: cannot read .cross.: line 7: the point is on ring 1 of .layers0.rings. but on ring 2 of .layers2.rings.; with --layers a row is one point of one layer in every shape$" err
 '
 test_expect_success 'bad input: --layers with -i is a usage error; a layer that crosses itself names its ring' '
 	echo "0 0 0 0" >pts &&

@@ -48,11 +48,15 @@ static const char help[] =
 "                        2N columns x0 y0 x1 y1 ... (the point in SHAPE0,\n"
 "                        SHAPE1, ...); each becomes one vertex at exactly\n"
 "                        those positions\n"
-"      --layers          every ring is a layer of the drawing, triangulated on\n"
+"      --layers[=MODE]   every ring is a layer of the drawing, triangulated on\n"
 "                        its own: rings may overlap (a leg drawn over the body\n"
 "                        in one pose and apart in another), no ring is a hole;\n"
 "                        the faces are written layer by layer, the first ring's\n"
-"                        first (drawn first, at the back); not with -i\n"
+"                        first (drawn first, at the back); not with -i.  MODE\n"
+"                        'each' (default: every layer meshed as one outline,\n"
+"                        with the rows of -c on its ring and the race of\n"
+"                        matchings) or 'joint' (one matching and refinement\n"
+"                        of all rings, as for pieces)\n"
 "      --match-rings M   how rings are paired across shapes: 'order' (default:\n"
 "                        ring k with ring k) or 'nearest' (each shape's rings\n"
 "                        reordered to SHAPE0's by nesting and nearest mean\n"
@@ -164,6 +168,10 @@ static const char help[] =
 "\n"
 "Example: compat-tri -v -c corr.txt pose1.rings pose2.rings | mesh2svg -g >t.svg\n";
 
+enum { LAYERS_EACH = 1, LAYERS_JOINT = 2 };
+/* the rows --points-out would write (write_points): n by N, file order */
+struct kept_points { int *rows, n; };
+
 struct options {
     const char *corr, *output, *interior, *points_out;
     int match, match_points, match_default, match_auto;   /* match_auto: no -m (the matching by default) */
@@ -175,7 +183,9 @@ struct options {
     double bend, feature, spread;
     double err, edge;
     int smooth, raw, split, nearest, refine, max_nv, threads, bound;
-    int layers;               /* --layers: every ring a layer (compat_layers) */
+    int layers;               /* --layers: every ring a layer (compat_layers): LAYERS_EACH, LAYERS_JOINT */
+    const struct columns *corr_rows;   /* non-NULL: the rows of -c (corr_read), o->corr only names them */
+    struct kept_points *points_mem;    /* non-NULL: --points-out's rows kept here, not written (write_points) */
     double min_angle, split_share;
     double sharp_in;      /* degrees: the input outlines' sharpest corner (one ring each; else 0) */
     int slide;        /* --slide: 0 off, 1 in the passes run again, 2 in every pass, 3 as 1
@@ -214,7 +224,7 @@ static void parse_args(int argc, char **argv, struct options *o)
         {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'}, {"version", 0, 0, 'V'}, {"match", 1, 0, 'm'},
         {"match-points", 1, 0, 'K'}, {"bend", 1, 0, 'B'}, {"points-out", 1, 0, 'P'}, {"feature", 1, 0, 'F'}, {"bound", 0, 0, 'b'},
         {"spread", 1, 0, 'W'}, {"match-polish", 1, 0, 'G'},
-        {"split-share", 1, 0, 'H'}, {"slide", 1, 0, 'L'}, {"layers", 0, 0, 'Y'}, {0, 0, 0, 0}};
+        {"split-share", 1, 0, 'H'}, {"slide", 1, 0, 'L'}, {"layers", 2, 0, 'Y'}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->err = 0.005; o->edge = 3; o->smooth = 10; o->refine = 1; o->min_angle = 20; o->split_share = 0.2;
     o->slide = 1;
@@ -225,7 +235,11 @@ static void parse_args(int argc, char **argv, struct options *o)
         switch (c) {
         case 'c': o->corr = optarg; break;
         case 'i': o->interior = optarg; break;
-        case 'Y': o->layers = 1; break;
+        case 'Y':
+            if (!optarg || !strcmp(optarg, "each")) o->layers = LAYERS_EACH;
+            else if (!strcmp(optarg, "joint")) o->layers = LAYERS_JOINT;
+            else usage_error("--layers: '%s' is not 'each' or 'joint'", optarg);
+            break;
         case 'e': o->err = arg_double(optarg, "--error"); break;
         case 'l': o->edge = arg_double(optarg, "--edge-length"); break;
         case 's': o->smooth = arg_int(optarg, "--smooth"); break;
@@ -356,16 +370,19 @@ static void corr_stdin(const struct options *o)
     corr_kept_ok = 1;
 }
 
-static int corr_read(const char *path, int want_cols, struct columns *C)
+/* the rows of -c into C: read from o->corr, or a copy of o->corr_rows
+ * (--layers: a layer's) or of the rows read from stdin */
+static int corr_read(const struct options *o, int want_cols, struct columns *C)
 {
-    if (strcmp(path, "-") || !corr_kept_ok) return columns_read(path, want_cols, -1, NULL, C);
-    if (want_cols > 0 && corr_kept.rows > 0 && corr_kept.cols != want_cols)
+    const struct columns *K = o->corr_rows ? o->corr_rows : &corr_kept;
+    if (!o->corr_rows && (strcmp(o->corr, "-") || !corr_kept_ok)) return columns_read(o->corr, want_cols, -1, NULL, C);
+    if (want_cols > 0 && K->rows > 0 && K->cols != want_cols)
         return cm_seterr("cannot read '<stdin>': its first row: expected %d number%s, got %d", want_cols,
-                         want_cols == 1 ? "" : "s", corr_kept.cols);
-    *C = corr_kept;
-    size_t sz = (size_t)corr_kept.rows * corr_kept.cols * sizeof *C->x;
+                         want_cols == 1 ? "" : "s", K->cols);
+    *C = *K;
+    size_t sz = (size_t)K->rows * K->cols * sizeof *C->x;
     if (!(C->x = malloc(sz ? sz : 1))) return cm_seterr("out of memory");
-    memcpy(C->x, corr_kept.x, sz);
+    memcpy(C->x, K->x, sz);
     return 0;
 }
 
@@ -410,23 +427,41 @@ static double cert_line(int N, double **P, const int *n, const int *corr, int nc
     return mc.ceiling;
 }
 
+/* --points-out into path: nc rows by N of 0-based vertex indices in each
+ * file's order (all: of every ring of the files) */
+static void points_file(const char *path, int N, const int *rows, int nc, int all)
+{
+    FILE *f = out_open(path);
+    fprintf(f, "# compat-tri --points-out: %d correspondence points (rows) of %d shapes (columns),\n"
+               "# 0-based vertex indices in each file's order%s; usable as compat-tri -c\n", nc, N,
+            all ? " (all rings counted)" : "");
+    for (int r = 0; r < nc; r++)
+        for (int s = 0; s < N; s++) fprintf(f, "%d%c", rows[(size_t)r * N + s], s + 1 < N ? ' ' : '\n');
+    out_close(f);
+}
+
 /* the correspondence points used (nc rows, counter-clockwise index order)
- * to --points-out, in file order */
+ * to --points-out (or o->points_mem), in file order */
 static void write_points(const struct options *o, int N, const int *n, const int *flipped, const int *corr, int nc)
 {
-    if (!o->points_out) return;
-    FILE *f = out_open(o->points_out);
-    fprintf(f, "# compat-tri --points-out: %d correspondence points (rows) of %d shapes (columns),\n"
-               "# 0-based vertex indices in each file's order; usable as compat-tri -c\n", nc, N);
+    if (!o->points_out && !o->points_mem) return;
+    int *rows = malloc(((size_t)nc + 1) * N * sizeof *rows);
+    if (!rows) die("out of memory");
     for (int a = 0; a < nc; a++) {
         int k = flipped[0] ? (nc - a) % nc : a;   /* increasing along shape 0's file */
         for (int s = 0; s < N; s++) {
             int v = corr[(size_t)k * N + s];
-            fprintf(f, "%s%d", s ? " " : "", flipped[s] ? n[s] - 1 - v : v);
+            rows[(size_t)a * N + s] = flipped[s] ? n[s] - 1 - v : v;
         }
-        fputc('\n', f);
     }
-    out_close(f);
+    if (o->points_mem) {   /* kept: a layer's (mesh_layers) */
+        free(o->points_mem->rows);
+        o->points_mem->rows = rows;
+        o->points_mem->n = nc;
+        return;
+    }
+    points_file(o->points_out, N, rows, nc, 0);
+    free(rows);
 }
 
 /* the polish candidate's --match-polish steps (see main) and the largest
@@ -529,7 +564,7 @@ static int build_single(struct options *o, struct rings *R, struct compat *cp)
     }
     /* correspondences: rows by N columns of integer indices */
     struct columns C = {0};
-    if (o->corr && corr_read(o->corr, 0, &C) < 0) die("%s", cm_errmsg());
+    if (o->corr && corr_read(o, 0, &C) < 0) die("%s", cm_errmsg());
     if (o->corr && C.rows > 0 && C.cols != N)
         die("cannot read '%s': line 1: %d columns, but there are %d shapes", o->corr, C.cols, N);
     /* full rows; rows "v -1 -1 ...": a point on SHAPE0 only, to be placed by the matching */
@@ -646,7 +681,7 @@ static double certify(struct options *o, struct rings *R, const int *flipped, ch
 {
     int N = o->nshapes;
     struct columns C = {0};
-    if (corr_read(o->corr, 0, &C) < 0) die("%s", cm_errmsg());
+    if (corr_read(o, 0, &C) < 0) die("%s", cm_errmsg());
     if (C.rows > 0 && C.cols != N)
         die("cannot read '%s': line 1: %d columns, but there are %d shapes", o->corr, C.cols, N);
     int *n = malloc(N * sizeof *n), *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
@@ -1008,8 +1043,12 @@ static void ring_kinds(struct rings *r, char *out, size_t size)
     free(flipped);
 }
 
-/* several rings or interior points: compat_holes.h */
-static void build_multi(const struct options *o, struct rings *R, struct compat *cp)
+/* Several rings (R, N shapes): the same count in every shape, else die;
+ * the rows of -c read into C (global vertex indices: every ring of a file
+ * counted), checked, and with --match-rings nearest every shape's rings
+ * put in shape 0's order (the rows follow).  Returns the rows, C.rows by
+ * N (malloc'd). */
+static int *multi_rows(const struct options *o, struct rings *R, struct columns *C)
 {
     int N = o->nshapes, nr = R[0].nrings;
     for (int s = 1; s < N; s++)
@@ -1023,20 +1062,30 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
                 "(matched by order): where a hole shows in some frames only, trace the outer outlines alone "
                 "(img2rings -1)", R[s].name, R[s].nrings, R[s].nrings == 1 ? "" : "s", ka, R[0].name, nr, k0);
         }
-    struct columns C = {0}, I = {0};
-    if (o->corr && corr_read(o->corr, N, &C) < 0) die("%s", cm_errmsg());
-    int *corr = malloc(((size_t)C.rows + 1) * N * sizeof *corr);
-    for (size_t k = 0; k < (size_t)C.rows * N; k++) {
-        double x = C.x[k];
+    memset(C, 0, sizeof *C);
+    if (o->corr && corr_read(o, N, C) < 0) die("%s", cm_errmsg());
+    int *corr = malloc(((size_t)C->rows + 1) * N * sizeof *corr);
+    if (!corr) die("out of memory");
+    for (size_t k = 0; k < (size_t)C->rows * N; k++) {
+        double x = C->x[k];
         if (x != floor(x) || x < 0 || x > 1e9)
             die("cannot read '%s': line %ld: '%g' is not a vertex index", o->corr,
                 data_line(o->corr, (int)(k / N) + 1), x);
         corr[k] = (int)x;
     }
     int moved = 0;
-    if (o->nearest && compat_order_rings(N, R, corr, C.rows, &moved) < 0)
+    if (o->nearest && compat_order_rings(N, R, corr, C->rows, &moved) < 0)
         die("rings do not match: %s", cm_errmsg());
     if (o->nearest) info(1, "--match-rings nearest: rings of %d shape%s reordered", moved, moved == 1 ? "" : "s");
+    return corr;
+}
+
+/* several rings or interior points: compat_holes.h */
+static void build_multi(const struct options *o, struct rings *R, struct compat *cp)
+{
+    int N = o->nshapes, nr = R[0].nrings;
+    struct columns C, I = {0};
+    int *corr = multi_rows(o, R, &C);
     int *parent = malloc(nr * sizeof *parent);
     unsigned char *flipped = malloc((size_t)N * nr);
     if ((o->layers ? compat_layers(N, R, parent, flipped) : compat_nest(N, R, parent, flipped)) < 0)
@@ -1050,15 +1099,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (o->interior && columns_read(o->interior, 2 * N, -1, NULL, &I) < 0) die("%s", cm_errmsg());
     int nrows;
     int *rows = match_rings(o, N, R, parent, flipped, corr, C.rows, &nrows);
-    if (o->points_out) {   /* the rows used, file order */
-        FILE *f = out_open(o->points_out);
-        fprintf(f, "# compat-tri --points-out: %d correspondence points (rows) of %d shapes (columns),\n"
-                   "# 0-based vertex indices in each file's order (all rings counted); usable as compat-tri -c\n",
-                nrows, N);
-        for (int r = 0; r < nrows; r++)
-            for (int s = 0; s < N; s++) fprintf(f, "%d%c", rows[(size_t)r * N + s], s + 1 < N ? ' ' : '\n');
-        out_close(f);
-    }
+    if (o->points_out) points_file(o->points_out, N, rows, nrows, 1);   /* the rows used */
     double st[4];
     if (compat_multi(N, R, parent, flipped, rows, nrows, I.x, I.rows, o->err, cp, st) < 0) {
         const char *m = cm_errmsg();
@@ -1412,6 +1453,7 @@ static int ahead_start(struct ahead *a, const struct options *o, struct rings *R
     a->off = *o;
     a->off.match = -2;
     a->off.points_out = NULL;
+    a->off.points_mem = NULL;
     a->R = R;
     a->k = k;
     a->started = pthread_create(&a->th, NULL, ahead_run, a) == 0;
@@ -1548,6 +1590,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     for (int a = 0; a < NCAND; a++) {
         K[a]->opt = *o;
         K[a]->opt.points_out = NULL;
+        K[a]->opt.points_mem = NULL;
         K[a]->opt.match_default = 0;
         K[a]->q = -1;
     }
@@ -1731,11 +1774,12 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
         if (a != use && K[a]->built) compat_free(&K[a]->cp);
     *cp = K[use]->cp;
     snprintf(kept, ksize, "%s", K[use]->name);
-    if (use > 0 && o->points_out) {   /* the rows actually used */
+    if (use > 0 && (o->points_out || o->points_mem)) {   /* the rows actually used */
         struct compat tmp;
         char quiet[LOG_SIZE] = "";   /* its -v lines were printed */
         struct options *w = &K[use]->opt;
         w->points_out = o->points_out;
+        w->points_mem = o->points_mem;
         w->log = quiet;
         if (build_single(w, R, &tmp) == 0) compat_free(&tmp);
     }
@@ -1781,6 +1825,217 @@ static void tri_progress(void *ctx, double done)
     progress_step(ctx, lround(done * TRI_STEPS));
 }
 
+/* one outer ring per shape (R): made counter-clockwise once, for every
+ * build (flipped[s] = 1 where the file ran clockwise), and o->sharp_in */
+static void single_prepare(struct options *o, struct rings *R, int *flipped)
+{
+    for (int s = 0; s < o->nshapes; s++)
+        if ((flipped[s] = rings_orient(&R[s])))
+            info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
+    o->sharp_in = 180;
+    for (int s = 0; s < o->nshapes; s++) o->sharp_in = fmin(o->sharp_in, rings_sharpest_left(&R[s], 0) * 180 / M_PI);
+}
+
+/* The mesh of R (N shapes; multi: several rings or interior points,
+ * else one outer ring each, oriented by single_prepare) into cp: built,
+ * triangulated, refined (the race of candidates where the matching is
+ * the default) and, one outer ring, its outline checked after the
+ * refinement's slides.  o is changed (the matching used). */
+static void mesh_rings(struct options *o, struct rings *R, int multi, struct compat *cp)
+{
+    int N = o->nshapes;
+    if (multi) build_multi(o, R, cp);
+    else if (build_single(o, R, cp) < 0) die("%s", cm_errmsg());
+    /* the default's second candidate, built ahead on a second thread */
+    struct candidate k1;
+    struct ahead ah;
+    memset(&k1, 0, sizeof k1);
+    memset(&ah, 0, sizeof ah);
+    ah.k = &k1;
+    if (!multi && o->match_default && o->refine && o->threads != 1 && parallel_threads(o->threads) > 1)
+        ahead_start(&ah, o, R, &k1);
+    /* a bar on a terminal while the first triangulation runs (the
+     * candidates' on other threads show none) */
+    struct progress tp;
+    progress_start(&tp, "compat-tri: triangulation", TRI_STEPS);
+    cp->progress = tri_progress;
+    cp->progress_ctx = &tp;
+    int tri_rc = multi ? 0 : compat_triangulate(cp);
+    cp->progress = NULL;
+    progress_end(&tp);
+    if (tri_rc < 0) {
+        if (ah.started) {   /* the rows alone are built again below */
+            ahead_join(&ah, 1);
+            if (k1.r) compat_refine_abandon(k1.r);
+            compat_free(&k1.cp);
+        }
+        /* the points placed by the default matching between 3 or more given
+         * rows can make a piece too thin to split; the given rows alone are
+         * the earlier default (-m off): use them and say so */
+        if (!o->match_default) die("%s", cm_errmsg());
+        char msg[512];
+        snprintf(msg, sizeof msg, "%s", cm_errmsg());
+        compat_free(cp);
+        o->match = -2;
+        o->match_default = 0;   /* the rows alone already: nothing to compare */
+        if (build_single(o, R, cp) < 0 || compat_triangulate(cp) < 0) die("%s", cm_errmsg());
+        warn("with the matched points: %s; used the given rows only (-m off)", msg);
+    }
+    double ma0, q0 = compat_min_angle(cp, &ma0);
+    info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
+            "min angle %.2f deg; at %.3f s", cp->nf, cp->nsteiner, cp->stage_count[0], cp->stage_count[1],
+         cp->stage_count[2], o->split != COMPAT_LINKPATH ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
+    char kept[96] = "the matched points";   /* -v: the name of the mesh in cp */
+    /* the default matching: its candidates raced (race) */
+    double q1 = !multi && o->refine && o->match_auto && o->match >= 0 ? race(o, R, cp, q0, &ah, kept, sizeof kept)
+                                                                     : improve(o, cp, q0);
+    if (q1 < 0) die("%s", cm_errmsg());
+    if (!multi && o->refine && o->slide && o->err > 0) {   /* the outline after the slides (--slide), against the input */
+        double hmax = 0;
+        int hs = 0;
+        for (int s = 0; s < N; s++) {
+            double h = compat_outline_error(cp, s, R[s].P, rings_count(&R[s], 0));
+            if (h > hmax) { hmax = h; hs = s; }
+        }
+        if (hmax > o->err * (1 + 1e-6))
+            die("the outline of %s is %.3g of the diagonal off its input after the refinement's slides (tolerance %g)",
+                o->shapes[hs], hmax, o->err);
+        info(1, "outline after the refinement (--slide): within %.3g of the diagonal of the input (two-sided, largest in %s)",
+             hmax, o->shapes[hs]);
+    }
+}
+
+/* the bounding-box diagonal of n points P (n by 2) */
+static double points_diag(const double *P, int n)
+{
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < n; i++)
+        for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], P[2 * i + d]); hi[d] = fmax(hi[d], P[2 * i + d]); }
+    return hypot(hi[0] - lo[0], hi[1] - lo[1]);
+}
+
+/* --layers (each) with several rings R: every layer meshed on its own as
+ * one outer ring (single_prepare, mesh_rings: the race of the matchings,
+ * the outline checked after the slides), with
+ *   - the rows of -c on its ring (each row on the same ring in every
+ *     shape), re-indexed to it;
+ *   - a layer without rows, where other layers have some, starting as its
+ *     surroundings turn: the first row match_rings gives it;
+ *   - -e of the whole pose's diagonal: the layer's tolerance scaled by the
+ *     smallest ratio of the pose's to the layer's diagonal over the shapes;
+ * then stacked (compat_stack) into cp, the first ring's first.  The rows
+ * used go to --points-out, every ring counted.  Sets o->sharp_in. */
+static void mesh_layers(struct options *o, struct rings *R, struct compat *cp)
+{
+    int N = o->nshapes, nr = R[0].nrings;
+    struct columns C;
+    int *corr = multi_rows(o, R, &C), nc = C.rows;
+    int *ring = malloc(((size_t)nc + 1) * sizeof *ring), *nrow = calloc(nr, sizeof *nrow);
+    if (!ring || !nrow) die("out of memory");
+    for (int r = 0; r < nc; r++)
+        for (int s = 0; s < N; s++) {
+            int v = corr[(size_t)r * N + s], k = 0;
+            if (v >= R[s].start[nr])
+                die("cannot read '%s': line %ld: '%d' is not a vertex index of '%s' (0..%d)", o->corr,
+                    data_line(o->corr, r + 1), v, o->shapes[s], R[s].start[nr] - 1);
+            while (v >= R[s].start[k + 1]) k++;
+            if (s == 0) ring[r] = k;
+            else if (k != ring[r])
+                die("cannot read '%s': line %ld: the point is on ring %d of '%s' but on ring %d of '%s'; with "
+                    "--layers a row is one point of one layer in every shape", o->corr, data_line(o->corr, r + 1),
+                    ring[r] + 1, o->shapes[0], k + 1, o->shapes[s]);
+        }
+    for (int r = 0; r < nc; r++) nrow[ring[r]]++;
+    /* the layers, copied in file order before compat_layers orients R */
+    struct rings **L = malloc(nr * sizeof *L);
+    double *err = malloc(nr * sizeof *err);
+    if (!L || !err) die("out of memory");
+    for (int k = 0; k < nr; k++) {
+        if (!(L[k] = calloc(N, sizeof **L))) die("out of memory");
+        err[k] = INFINITY;
+        for (int s = 0; s < N; s++) {
+            int n = rings_count(&R[s], k);
+            if (rings_from_points(&L[k][s], rings_ring(&R[s], k), n) < 0) die("%s", cm_errmsg());
+            memcpy(L[k][s].line, R[s].line + R[s].start[k], n * sizeof *R[s].line);
+            snprintf(L[k][s].name, sizeof L[k][s].name, "%s", R[s].name);
+            err[k] = fmin(err[k], points_diag(R[s].P, R[s].start[nr]) / points_diag(rings_ring(&R[s], k), n));
+        }
+        err[k] *= o->err;
+    }
+    int nwith = 0, nadd = 0, *add = NULL;   /* a start row for each layer without rows */
+    for (int k = 0; k < nr; k++) nwith += nrow[k] > 0;
+    if (nwith > 0 && nwith < nr && o->match != -2) {
+        int *parent = malloc(nr * sizeof *parent);
+        unsigned char *fl = malloc((size_t)N * nr);
+        if (!parent || !fl) die("out of memory");
+        if (compat_layers(N, R, parent, fl) < 0) die("rings do not match: %s", cm_errmsg());
+        int nm, *m = match_rings(o, N, R, parent, fl, corr, nc, &nm);
+        if (!(add = malloc(((size_t)nr + 1) * N * sizeof *add))) die("out of memory");
+        for (int k = 0; k < nr; k++) {
+            if (nrow[k]) continue;
+            for (int r = 0; r < nm; r++)
+                if (m[(size_t)r * N] >= R[0].start[k] && m[(size_t)r * N] < R[0].start[k + 1]) {
+                    memcpy(add + (size_t)nadd++ * N, m + (size_t)r * N, N * sizeof *add);
+                    break;
+                }
+        }
+        free(parent); free(fl); free(m);
+    }
+    struct compat *part = calloc(nr, sizeof *part);
+    struct kept_points *kp = calloc(nr, sizeof *kp);
+    double *x = malloc(((size_t)nc + nadd + 1) * N * sizeof *x);
+    if (!part || !kp || !x) die("out of memory");
+    o->sharp_in = 180;
+    for (int k = 0; k < nr; k++) {
+        /* its rows, as numbers of its own ring */
+        struct columns Ck = {0, N, x};
+        for (int r = 0; r < nc + nadd; r++) {
+            const int *row = r < nc ? corr + (size_t)r * N : add + (size_t)(r - nc) * N;
+            if (row[0] < R[0].start[k] || row[0] >= R[0].start[k + 1]) continue;
+            for (int s = 0; s < N; s++) x[(size_t)Ck.rows * N + s] = row[s] - R[s].start[k];
+            Ck.rows++;
+        }
+        char name[320];
+        snprintf(name, sizeof name, "%s, its rows on ring %d", o->corr ? o->corr : "-c", k + 1);
+        struct options lo = *o;
+        lo.layers = 0;
+        lo.corr = Ck.rows ? name : NULL;
+        lo.corr_rows = Ck.rows ? &Ck : NULL;
+        lo.points_out = NULL;
+        lo.points_mem = o->points_out ? &kp[k] : NULL;
+        lo.err = err[k];
+        int *fl = calloc(N, sizeof *fl);
+        if (!fl) die("out of memory");
+        lo.flipped = fl;
+        info(1, "layer %d of %d (ring %d of every file): %d correspondence row%s%s; tolerance %.3g of its diagonal; "
+                "at %.3f s", k + 1, nr, k + 1, Ck.rows, Ck.rows == 1 ? "" : "s",
+             nrow[k] ? "" : Ck.rows ? " (its start, as the layers around it turn)" : "", err[k], elapsed());
+        single_prepare(&lo, L[k], fl);
+        mesh_rings(&lo, L[k], 0, &part[k]);
+        o->sharp_in = fmin(o->sharp_in, lo.sharp_in);
+        info(1, "layer %d: %d vertices, %d triangles, worst angle %.2f deg", k + 1, part[k].nv, part[k].nf,
+             compat_min_angle(&part[k], NULL) * 180 / M_PI);
+        free(fl);
+        for (int s = 0; s < N; s++) rings_free(&L[k][s]);
+        free(L[k]);
+    }
+    if (compat_stack(part, nr, cp) < 0) die("%s", cm_errmsg());
+    if (o->points_out) {   /* every layer's rows, numbered over all rings */
+        int np = 0, *rows;
+        for (int k = 0; k < nr; k++) np += kp[k].n;
+        if (!(rows = malloc(((size_t)np + 1) * N * sizeof *rows))) die("out of memory");
+        np = 0;
+        for (int k = 0; k < nr; k++)
+            for (int r = 0; r < kp[k].n; r++, np++)
+                for (int s = 0; s < N; s++) rows[(size_t)np * N + s] = kp[k].rows[(size_t)r * N + s] + R[s].start[k];
+        points_file(o->points_out, N, rows, np, 1);
+        free(rows);
+    }
+    for (int k = 0; k < nr; k++) { compat_free(&part[k]); free(kp[k].rows); }
+    free(part); free(kp); free(x); free(L); free(err); free(add); free(ring); free(nrow); free(corr);
+    columns_free(&C);
+}
+
 int main(int argc, char **argv)
 {
     tool_init(argc, argv);
@@ -1812,16 +2067,9 @@ int main(int argc, char **argv)
     }
     struct compat cp;
     int *flipped = calloc(N, sizeof *flipped);
-    if (!multi)   /* counter-clockwise once, for every build */
-        for (int s = 0; s < N; s++)
-            if ((flipped[s] = rings_orient(&R[s])))
-                info(1, "%s: clockwise outline reversed (indices refer to the file order)", R[s].name);
     o.flipped = flipped;
     o.sharp_in = 0;   /* several rings: the mesh's own corners (mesh_goal) */
-    if (!multi) {
-        o.sharp_in = 180;
-        for (int s = 0; s < N; s++) o.sharp_in = fmin(o.sharp_in, rings_sharpest_left(&R[s], 0) * 180 / M_PI);
-    }
+    if (!multi) single_prepare(&o, R, flipped);
     double ceiling = -1;   /* of the given points, degrees; -1: not computed */
     if (o.bound || (verbose && o.corr)) {
         char line[1024];
@@ -1840,72 +2088,15 @@ int main(int argc, char **argv)
         }
         info(1, "%s", line);
     }
-    if (multi) build_multi(&o, R, &cp);
-    else if (build_single(&o, R, &cp) < 0) die("%s", cm_errmsg());
-    /* the default's second candidate, built ahead on a second thread */
-    struct candidate k1;
-    struct ahead ah;
-    memset(&k1, 0, sizeof k1);
-    memset(&ah, 0, sizeof ah);
-    ah.k = &k1;
-    if (!multi && o.match_default && o.refine && o.threads != 1 && parallel_threads(o.threads) > 1)
-        ahead_start(&ah, &o, R, &k1);
-    /* a bar on a terminal while the first triangulation runs (the
-     * candidates' on other threads show none) */
-    struct progress tp;
-    progress_start(&tp, "compat-tri: triangulation", TRI_STEPS);
-    cp.progress = tri_progress;
-    cp.progress_ctx = &tp;
-    int tri_rc = multi ? 0 : compat_triangulate(&cp);
-    cp.progress = NULL;
-    progress_end(&tp);
-    if (tri_rc < 0) {
-        if (ah.started) {   /* the rows alone are built again below */
-            ahead_join(&ah, 1);
-            if (k1.r) compat_refine_abandon(k1.r);
-            compat_free(&k1.cp);
-        }
-        /* the points placed by the default matching between 3 or more given
-         * rows can make a piece too thin to split; the given rows alone are
-         * the earlier default (-m off): use them and say so */
-        if (!o.match_default) die("%s", cm_errmsg());
-        char msg[512];
-        snprintf(msg, sizeof msg, "%s", cm_errmsg());
-        compat_free(&cp);
-        o.match = -2;
-        o.match_default = 0;   /* the rows alone already: nothing to compare */
-        if (build_single(&o, R, &cp) < 0 || compat_triangulate(&cp) < 0) die("%s", cm_errmsg());
-        warn("with the matched points: %s; used the given rows only (-m off)", msg);
-    }
-    double ma0, q0 = compat_min_angle(&cp, &ma0);
-    info(1, "triangulation: %d triangles, %d Steiner points (splits: %d stage I, %d stage II, %d %s), "
-            "min angle %.2f deg; at %.3f s", cp.nf, cp.nsteiner, cp.stage_count[0], cp.stage_count[1],
-         cp.stage_count[2], o.split != COMPAT_LINKPATH ? "overlays" : "stage III", q0 * 180 / M_PI, elapsed());
-    char kept[96] = "the matched points";   /* -v: the name of the mesh in cp */
-    /* the default matching: its candidates raced (race) */
-    double q1 = !multi && o.refine && o.match_auto && o.match >= 0 ? race(&o, R, &cp, q0, &ah, kept, sizeof kept)
-                                                                     : improve(&o, &cp, q0);
-    if (q1 < 0) die("%s", cm_errmsg());
+    if (o.layers == LAYERS_EACH && multi) mesh_layers(&o, R, &cp);
+    else mesh_rings(&o, R, multi, &cp);
     for (int s = 0; verbose && s < N; s++) {
         double mn, u10, u20;
         compat_pose_quality(&cp, s, &mn, &u10, &u20);
         info(1, "pose %d (%s): worst angle %.2f deg, %.1f%% of triangles under 10 deg, %.1f%% under 20, "
                 "%d vertices, %d triangles", s, o.shapes[s], mn * 180 / M_PI, 100 * u10, 100 * u20, cp.nv, cp.nf);
     }
-    if (!multi && o.refine && o.slide && o.err > 0) {   /* the outline after the slides (--slide), against the input */
-        double hmax = 0;
-        int hs = 0;
-        for (int s = 0; s < N; s++) {
-            double h = compat_outline_error(&cp, s, R[s].P, rings_count(&R[s], 0));
-            if (h > hmax) { hmax = h; hs = s; }
-        }
-        if (hmax > o.err * (1 + 1e-6))
-            die("the outline of %s is %.3g of the diagonal off its input after the refinement's slides (tolerance %g)",
-                o.shapes[hs], hmax, o.err);
-        info(1, "outline after the refinement (--slide): within %.3g of the diagonal of the input (two-sided, largest in %s)",
-             hmax, o.shapes[hs]);
-    }
-    if (o.layers && multi) layer_order(&cp);
+    if (o.layers == LAYERS_JOINT && multi) layer_order(&cp);
     double minarea, q = compat_min_angle(&cp, &minarea);
     if (!(minarea > 0))
         die("compatible triangulation failed: a triangle is inverted or degenerate in some shape");
