@@ -148,4 +148,13 @@ for ch in horse flamingo; do
 	set -- $(ct_stats "$T/k.log")
 	echo "compat-tri --layers worst angle, six stick-$ch poses, leg 0 a layer (four rows): $1 deg ($2 vertices) | baseline the whole silhouettes (five rows): $q0 deg | ratio $(awk -v a="$1" -v b="$q0" 'BEGIN { printf "%.2f", a / b }')"
 	echo "compat-tri --layers time, six stick-$ch poses, leg 0 a layer (four rows): $(cat "$T/wall") s wall ($tw s CPU) | baseline the whole silhouettes: $wall0 s | ratio $(awk -v a="$(cat "$T/wall")" -v b="$wall0" 'BEGIN { printf "%.3f", a / b }')"
+	# each layer meshed on its own (the default) against one joint
+	# matching and refinement of both rings (--layers=joint)
+	wl=$(cat "$T/wall") ql=$1
+	tj=$(cpu "$T/k.log" compat-tri -v --layers=joint -c "$T/stick/$ch-layers.corr" "$T/stick/layers0.rings" \
+		"$T/stick/layers1.rings" "$T/stick/layers2.rings" "$T/stick/layers3.rings" "$T/stick/layers4.rings" \
+		"$T/stick/layers5.rings") || exit 1
+	set -- $(ct_stats "$T/k.log")
+	echo "compat-tri --layers (each) worst angle, six stick-$ch poses (four rows): $ql deg | baseline --layers=joint: $1 deg ($2 vertices) | ratio $(awk -v a="$ql" -v b="$1" 'BEGIN { printf "%.2f", a / b }')"
+	echo "compat-tri --layers (each) time, six stick-$ch poses (four rows): $wl s wall | baseline --layers=joint: $(cat "$T/wall") s ($tj s CPU) | ratio $(awk -v a="$wl" -v b="$(cat "$T/wall")" 'BEGIN { printf "%.3f", a / b }')"
 done

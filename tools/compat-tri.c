@@ -1946,6 +1946,10 @@ static void mesh_layers(struct options *o, struct rings *R, struct compat *cp)
                     ring[r] + 1, o->shapes[0], k + 1, o->shapes[s]);
         }
     for (int r = 0; r < nc; r++) nrow[ring[r]]++;
+    for (int k = 0; k < nr && o->match == -2; k++)   /* -m off: every layer meshed from its own rows */
+        if (nrow[k] < 3)
+            die("cannot read '%s': %d row%s on ring %d; with -m off every layer needs at least 3 (without -m off "
+                "the matching finds the rest)", o->corr ? o->corr : "-c", nrow[k], nrow[k] == 1 ? "" : "s", k + 1);
     /* the layers, copied in file order before compat_layers orients R */
     struct rings **L = malloc(nr * sizeof *L);
     double *err = malloc(nr * sizeof *err);
