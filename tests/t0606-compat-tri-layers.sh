@@ -111,6 +111,11 @@ test_expect_success 'bad input: a row on the body in one pose and on the leg in 
 	! test -s out &&
 	grep "^compat-tri: cannot read .cross.: line 7: the point is on ring 1 of .layers0.rings. but on ring 2 of .layers2.rings.; with --layers a row is one point of one layer in every shape$" err
 '
+test_expect_success 'bad input: -m off with a layer of fewer than 3 rows names the ring' '
+	test_must_fail compat-tri --layers -m off -c rows layers0.rings layers2.rings >out 2>err &&
+	! test -s out &&
+	grep "^compat-tri: cannot read .rows.: 0 rows on ring 2; with -m off every layer needs at least 3 (without -m off the matching finds the rest)$" err
+'
 test_expect_success 'bad input: --layers with -i is a usage error; a layer that crosses itself names its ring' '
 	echo "0 0 0 0" >pts &&
 	test_must_fail_usage compat-tri --layers -i pts layers0.rings layers2.rings &&
