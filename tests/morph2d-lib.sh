@@ -87,6 +87,60 @@ elephant_walk_frames() {
 	tar -xJf "$SHARED_DATA/anim/elephant-walk-457.tar.xz" -C . $files
 }
 
+# face_layers MESH: the layer (connected component, numbered by first
+# appearance) of each face, one line each; then "vertex0 L", the layer
+# holding vertex 0 (the first vertex of ring 1)
+face_layers() {
+	awk 'function find(x) { while (P[x] != x) x = P[x]; return x }
+	$1 == "f" { F[nf++] = $2 " " $3 " " $4; for (k = 2; k <= 4; k++) if (!($k in P)) P[$k] = $k
+		a = find($2); b = find($3); c = find($4); P[b] = a; P[find(c)] = a }
+	END { for (f = 0; f < nf; f++) { split(F[f], v, " "); r = find(v[1]); if (!(r in L)) L[r] = nl++; print L[r] }
+	      print "vertex0", L[find(0)] }' "$1"
+}
+
+# elephant_arm_labels MESH: on stdout one label per face of MESH (a frame
+# of the shared elephant walk, imported): 1 for the left arm -- the faces
+# whose vertices lie beyond x = 22 and are joined through mesh edges to
+# its tip (the largest x among 35 < y < 65) --, 0 for the rest
+elephant_arm_labels() {
+	awk '/^f / { F[nf++] = $2 " " $3 " " $4; next }
+	NF == 3 && $1 !~ /[a-z]/ { x[nv] = $1; y[nv] = $2; nv++ }
+	END {
+		for (f = 0; f < nf; f++) {
+			split(F[f], v, " ")
+			for (k = 1; k <= 3; k++) { a = v[k]; A[a, deg[a]++] = v[k % 3 + 1] }
+		}
+		seed = -1
+		for (i = 0; i < nv; i++) if (y[i] > 35 && y[i] < 65 && (seed < 0 || x[i] > x[seed])) seed = i
+		q[0] = seed; arm[seed] = 1; h = 0; t = 1
+		while (h < t) {
+			u = q[h++]
+			for (k = 0; k < deg[u]; k++) { w = A[u, k]; if (!(w in arm) && x[w] > 22) { arm[w] = 1; q[t++] = w } }
+		}
+		for (f = 0; f < nf; f++) { split(F[f], v, " "); print (v[1] in arm) && (v[2] in arm) && (v[3] in arm) }
+	}' "$1"
+}
+
+# elephant_arm_layers K...: for each frame K of the shared elephant walk
+# (elephant_walk_frames first), layK.rings for compat-tri --layers: the
+# silhouette seen from the left (mesh-render -V left, 300 by 300) without
+# the left arm, then that arm alone (mesh-render --only: the camera of the
+# whole frame for both), each traced by img2rings -1.  The arm is
+# elephant_arm_labels of the first frame, the same faces in every frame
+elephant_arm_layers() {
+	eal_first=
+	for eal_k in "$@"; do
+		mesh-import elephant/frame_$eal_k.obj >e$eal_k.mesh || return 1
+		if [ -z "$eal_first" ]; then eal_first=$eal_k; elephant_arm_labels e$eal_k.mesh >arm.labels || return 1; fi
+		for eal_p in 0 1; do
+			mesh-render -V left -s 300x300 -c 0,0,0 --flat -f ppm -l arm.labels --only $eal_p e$eal_k.mesh \
+				>part$eal_p-$eal_k.ppm &&
+			img2rings -1 -s 1 -o part$eal_p-$eal_k.rings part$eal_p-$eal_k.ppm || return 1
+		done
+		cat part0-$eal_k.rings part1-$eal_k.rings >lay$eal_k.rings || return 1
+	done
+}
+
 # camel_traced_poses: camel1.rings .. camel5.rings, the five gallop frames
 # of the shared scans rendered from the side (300 by 300) and traced
 camel_traced_poses() {

@@ -166,6 +166,24 @@ test_expect_success 'unknown view and other usage errors exit 2' '
 	test_must_fail_usage mesh-render --elevation 100 ico.mesh &&
 	test_must_fail_usage mesh-render a.mesh b.mesh
 '
+test_expect_success '--only K: the faces labelled K in the uniform colour, the camera of the whole frame' '
+	mesh-render -s 120x120 -f ppm -c 0,0,0 ico.mesh >all.ppm &&
+	mesh-render -s 120x120 -f ppm -c 0,0,0 -l two.labels --only 0 ico.mesh >h0.ppm &&
+	mesh-render -s 120x120 -f ppm -c 0,0,0 -l two.labels --only 1 ico.mesh >h1.ppm &&
+	c0=$(ppm_stats h0.ppm | cut -d" " -f3) && c1=$(ppm_stats h1.ppm | cut -d" " -f3) &&
+	ca=$(ppm_stats all.ppm | cut -d" " -f3) &&
+	test_le 0.05 $c0 && test_le 0.05 $c1 && test_le $c0 $ca && test_le $c1 $ca &&
+	test_le $ca $(awk -v a=$c0 -v b=$c1 "BEGIN { print a + b + 0.02 }") &&
+	test "$(ppm_stats h0.ppm | cut -d" " -f6,7)" = "0.0000 0.0000"
+'
+test_expect_success '--only: bad input' '
+	test_must_fail_usage mesh-render --only 1 ico.mesh >out && test ! -s out &&
+	test_fails_cleanly mesh-render -l two.labels --only 7 ico.mesh &&
+	head -3 two.labels >short.labels &&
+	test_fails_cleanly mesh-render -l short.labels --only 1 ico.mesh &&
+	test_must_fail mesh-render -l two.labels --only 7 ico.mesh 2>err &&
+	grep "^mesh-render: cannot read .two.labels.: no face is labelled 7 (--only)$" err
+'
 test_expect_success '--help and --version' '
 	mesh-render --help >help && grep -q "^Usage: mesh-render" help &&
 	mesh-render --version >v && grep -q stopmo v

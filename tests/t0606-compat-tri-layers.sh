@@ -3,17 +3,6 @@ test_description='compat-tri --layers: a leg drawn over the body in one pose and
 . "$(dirname "$0")/test-lib.sh"
 . "$TEST_DIRECTORY/morph2d-lib.sh"
 
-# face_layers MESH: the layer (connected component, numbered by first
-# appearance) of each face, one line each; then "vertex0 L", the layer
-# holding vertex 0 (the first vertex of ring 1)
-face_layers() {
-	awk 'function find(x) { while (P[x] != x) x = P[x]; return x }
-	$1 == "f" { F[nf++] = $2 " " $3 " " $4; for (k = 2; k <= 4; k++) if (!($k in P)) P[$k] = $k
-		a = find($2); b = find($3); c = find($4); P[b] = a; P[find(c)] = a }
-	END { for (f = 0; f < nf; f++) { split(F[f], v, " "); r = find(v[1]); if (!(r in L)) L[r] = nl++; print L[r] }
-	      print "vertex0", L[find(0)] }' "$1"
-}
-
 # measured (2026-11-29): the whole silhouettes of poses 0 and 2 with all
 # seven rows end at 15.91 deg (5.7 s CPU: the front legs overlap in pose
 # 2, so the gap between them must go into a few pixels of its outline);

@@ -38,6 +38,11 @@ static const char help[] =
 "      --points FILE      draw numbered points (1, 2, ... in row order) at the\n"
 "                         vertices named in column 1 of FILE, e.g. a landmark file\n"
 "      --points-column N  take the vertex indices from column N instead\n"
+"      --only K           draw only the faces labelled K in --labels (one label\n"
+"                         per face), in the uniform --color; the camera still\n"
+"                         fits every vertex, so the parts of a frame drawn one\n"
+"                         at a time line up (e.g. a limb and the body without\n"
+"                         it, traced by img2rings for compat-tri --layers)\n"
 RENDER_OPTIONS_HELP
 "  -f, --format FMT       png or ppm (default from the -o extension, else png)\n"
 "  -o, --output FILE      write to FILE (atomically) instead of stdout\n"
@@ -52,16 +57,17 @@ struct options {
     const char *input;
     int frame, w, h, fit_all, column, points_col;
     const char *points;
+    int only, have_only;       /* --only K */
     struct render_options r;   /* camera and look */
 };
 
-enum { O_FITALL = 256, O_VERSION, O_COLUMN, O_POINTS, O_POINTSCOL };
+enum { O_FITALL = 256, O_VERSION, O_COLUMN, O_POINTS, O_POINTSCOL, O_ONLY };
 
 static void parse_args(int argc, char **argv, struct options *o)
 {
     static const struct option lo[] = {
         {"frame", 1, 0, 'k'}, {"size", 1, 0, 's'}, {"fit-all", 0, 0, O_FITALL},
-        {"column", 1, 0, O_COLUMN}, {"points", 1, 0, O_POINTS}, {"points-column", 1, 0, O_POINTSCOL},
+        {"column", 1, 0, O_COLUMN}, {"points", 1, 0, O_POINTS}, {"points-column", 1, 0, O_POINTSCOL}, {"only", 1, 0, O_ONLY},
         RENDER_OPTIONS_LONGOPTS, {"verbose", 0, 0, 'v'}, {"help", 0, 0, 'h'},
         {"version", 0, 0, O_VERSION}, {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -79,6 +85,7 @@ static void parse_args(int argc, char **argv, struct options *o)
             break;
         case O_FITALL: o->fit_all = 1; break;
         case O_POINTS: o->points = optarg; break;
+        case O_ONLY: o->only = arg_int_range(optarg, "--only", -2000000000, 2000000000); o->have_only = 1; break;
         case O_POINTSCOL:
             o->points_col = (int)arg_long(optarg, "--points-column");
             if (o->points_col < 1) usage_error("--points-column must be >= 1");
@@ -99,6 +106,7 @@ static void parse_args(int argc, char **argv, struct options *o)
     render_options_check(&o->r);
     if (o->column && !o->r.scalars) usage_error("--column needs --scalars");
     if (o->points_col && !o->points) usage_error("--points-column needs --points");
+    if (o->have_only && !o->r.labels) usage_error("--only needs --labels");
     if (!o->points_col) o->points_col = 1;
     render_options_format(&o->r, o->r.output);
 }
@@ -186,13 +194,27 @@ int main(int argc, char **argv)
     render_options_style(&o.r, &st);
     struct mesh_colors mc;
     memset(&mc, 0, sizeof mc);
-    if (o.r.labels && mesh_colors_labels(o.r.labels, r.nv, r.nf, &mc) < 0)
+    /* --only K: the faces labelled K, the labels select instead of colour */
+    int *F = r.F, nf = r.nf;
+    if (o.have_only) {
+        int *L, n;
+        if (labels_read(o.r.labels, r.nf, "faces (--only selects faces)", -2000000000, -2000000001, &L, &n) < 0)
+            die("%s", cm_errmsg());
+        if (!(F = malloc(3 * ((size_t)r.nf + 1) * sizeof *F))) die("out of memory");
+        nf = 0;
+        for (int f = 0; f < r.nf; f++)
+            if (L[f] == o.only) memcpy(F + 3 * (size_t)nf++, r.F + 3 * (size_t)f, 3 * sizeof *F);
+        free(L);
+        if (nf == 0) die("cannot read '%s': no face is labelled %d (--only)", o.r.labels, o.only);
+        info(1, "--only %d: %d of %d faces", o.only, nf, r.nf);
+    }
+    if (o.r.labels && !o.have_only && mesh_colors_labels(o.r.labels, r.nv, r.nf, &mc) < 0)
         die("%s", cm_errmsg());
     const double *range = o.r.have_range ? o.r.range : NULL;
     if (o.r.scalars && (o.column ? mesh_colors_scalars_column(o.r.scalars, o.column - 1, want, r.nv, r.nf, range, &mc)
                                  : mesh_colors_scalars(o.r.scalars, r.nv, r.nf, range, &mc)) < 0)
         die("%s", cm_errmsg());
-    if (o.r.labels || o.r.scalars) {
+    if ((o.r.labels && !o.have_only) || o.r.scalars) {
         mesh_colors_apply(&mc, &st);
         if (o.r.labels)
             info(1, "%d distinct labels per %s", mc.nlabels, mc.per_face ? "face" : "vertex");
@@ -215,7 +237,7 @@ int main(int argc, char **argv)
     double t1 = now_seconds();
 
     struct image im;
-    if (raster_render(X, r.F, r.nv, r.nf, &cam, &st, o.w, o.h, &im) < 0)
+    if (raster_render(X, F, r.nv, nf, &cam, &st, o.w, o.h, &im) < 0)
         die("%s", cm_errmsg());
     if (pts.rows > 0) {
         double *P = malloc((size_t)pts.rows * 3 * sizeof *P), *XY = malloc((size_t)pts.rows * 2 * sizeof *XY);
@@ -254,6 +276,7 @@ int main(int argc, char **argv)
          1e3 * (t2 - t1), o.r.format, 1e3 * (t3 - t2));
     image_free(&im);
     mesh_colors_free(&mc);
+    if (F != r.F) free(F);
     mesh_reader_close(&r);
     if (ring) {
         for (int i = 0; i < nbuf; i++) free(ring[i]);
