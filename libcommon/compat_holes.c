@@ -1098,10 +1098,11 @@ static int match_children(const int *par0, const int *pars, int nr, int p0, int 
     return rc;
 }
 
-int compat_order_rings(int N, struct rings *R, int *corr, int ncorr, int *moved)
+int compat_order_rings(int N, struct rings *R, int *corr, int ncorr, int *moved, int *order)
 {
     int nr = R[0].nrings;
     *moved = 0;
+    for (int i = 0; order && i < N * nr; i++) order[i] = i % nr;
     for (int s = 1; s < N; s++)
         if (R[s].nrings != nr)
             return cm_seterr("shape %d has %d ring%s, but shape 0 has %d", s, R[s].nrings,
@@ -1116,6 +1117,7 @@ int compat_order_rings(int N, struct rings *R, int *corr, int ncorr, int *moved)
         if ((rc = match_children(par0, pars, nr, -1, -1, C0, Cs, s, perm)) < 0) break;
         int same = 1;
         for (int k = 0; k < nr; k++) same &= perm[k] == k;
+        if (order) memcpy(order + (size_t)s * nr, perm, nr * sizeof *perm);
         if (same) continue;
         (*moved)++;
         /* rebuild the rings in shape 0's order; remap the indices */

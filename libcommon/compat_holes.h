@@ -82,8 +82,10 @@ int compat_stack(const struct compat *parts, int n, struct compat *c);
  * R        N ring sets (rings of shapes 1.. reordered in place)
  * corr     ncorr by N global vertex indices (remapped in place)
  * moved    out: number of shapes whose order changed
+ * order    out (N by nrings, or NULL): order[s * nrings + k] is the ring
+ *          of shape s's file now at position k (k where unmoved)
  * Returns -1 if the shapes have different ring counts at some level. */
-int compat_order_rings(int N, struct rings *R, int *corr, int ncorr, int *moved);
+int compat_order_rings(int N, struct rings *R, int *corr, int ncorr, int *moved, int *order);
 
 /* Is ring k of a nesting a hole (inside an odd number of rings)? */
 int compat_is_hole(const int *parent, int k);

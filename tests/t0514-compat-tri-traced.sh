@@ -43,6 +43,34 @@ test_expect_success '--match-rings nearest: compatible, positive everywhere, hol
 			print area } }" m.mesh >areas &&
 	test $(wc -l <areas) = 4
 '
+# rows_are_vertices POINTS MESH RINGS...: every row of POINTS (file
+# indices, one column per RINGS file) names, in every file, the position
+# of one and the same vertex of MESH in that frame
+rows_are_vertices() {
+	rv_p=$1 rv_m=$2; shift 2
+	awk 'FILENAME == ARGV[1] { if (!/^#/) row[nr++] = $0; next }
+	FILENAME == ARGV[2] { if ($1 == "frame") { f = $2; v = 0; next }
+		if (f != "" && NF == 3) key[v] = key[v] sprintf("%.10g %.10g|", $1, $2); v++; next }
+	FNR == 1 { s++; g = 0 }
+	$1 != "ring" { P[s, g++] = sprintf("%.10g %.10g|", $1, $2) }
+	END { for (v in key) have[key[v]] = 1
+		for (r = 0; r < nr; r++) { n = split(row[r], ix, " "); k = ""
+			for (t = 1; t <= n; t++) k = k P[t, ix[t]]
+			if (!(k in have)) { print "row " r + 1 " is no vertex of the mesh" >"/dev/stderr"; bad = 1 } }
+		exit bad || nr < 3 }' "$rv_p" "$rv_m" "$@"
+}
+test_expect_success '--match-rings nearest --points-out: the rows in the files'"'"' numbering, each one vertex of the mesh' '
+	compat-tri --match-rings nearest --points-out used.txt -c corr.txt f0000.rings f0080.rings f0180.rings \
+		f0200.rings >pm.mesh &&
+	test_cmp m.mesh pm.mesh &&
+	rows_are_vertices used.txt pm.mesh f0000.rings f0080.rings f0180.rings f0200.rings &&
+	compat-tri --layers=joint --match-rings nearest --points-out lused.txt -c corr.txt f0000.rings f0080.rings \
+		f0180.rings f0200.rings >lm.mesh &&
+	rows_are_vertices lused.txt lm.mesh f0000.rings f0080.rings f0180.rings f0200.rings &&
+	compat-tri --layers --match-rings nearest --points-out eused.txt -c corr.txt f0000.rings f0080.rings \
+		f0180.rings f0200.rings >em.mesh &&
+	rows_are_vertices eused.txt em.mesh f0000.rings f0080.rings f0180.rings f0200.rings
+'
 test_expect_success 'the mesh area is the traced area minus the holes (within 1%)' '
 	for k in $FRAMES; do
 		awk "function ar(   i, j, a) { a = 0; for (i = 0; i < n; i++) { j = (i + 1) % n; a += x[i] * y[j] - x[j] * y[i] }

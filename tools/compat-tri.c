@@ -1046,9 +1046,10 @@ static void ring_kinds(struct rings *r, char *out, size_t size)
 /* Several rings (R, N shapes): the same count in every shape, else die;
  * the rows of -c read into C (global vertex indices: every ring of a file
  * counted), checked, and with --match-rings nearest every shape's rings
- * put in shape 0's order (the rows follow).  Returns the rows, C.rows by
- * N (malloc'd). */
-static int *multi_rows(const struct options *o, struct rings *R, struct columns *C)
+ * put in shape 0's order (the rows follow; *order, N by the ring count,
+ * malloc'd, names the file's ring now at each place, for rows_to_files;
+ * NULL without).  Returns the rows, C.rows by N (malloc'd). */
+static int *multi_rows(const struct options *o, struct rings *R, struct columns *C, int **order)
 {
     int N = o->nshapes, nr = R[0].nrings;
     for (int s = 1; s < N; s++)
@@ -1074,10 +1075,33 @@ static int *multi_rows(const struct options *o, struct rings *R, struct columns 
         corr[k] = (int)x;
     }
     int moved = 0;
-    if (o->nearest && compat_order_rings(N, R, corr, C->rows, &moved) < 0)
+    *order = NULL;
+    if (o->nearest && !(*order = malloc(((size_t)N * nr + 1) * sizeof **order))) die("out of memory");
+    if (o->nearest && compat_order_rings(N, R, corr, C->rows, &moved, *order) < 0)
         die("rings do not match: %s", cm_errmsg());
     if (o->nearest) info(1, "--match-rings nearest: rings of %d shape%s reordered", moved, moved == 1 ? "" : "s");
     return corr;
+}
+
+/* rows (n by N) of indices over the rings of R as --match-rings nearest
+ * put them (order: from multi_rows, NULL: as in the files) back to the
+ * files' numbering, for --points-out */
+static void rows_to_files(int N, const struct rings *R, const int *order, int *rows, int n)
+{
+    int nr = R[0].nrings, *fstart = malloc(((size_t)nr + 1) * sizeof *fstart);
+    if (!fstart) die("out of memory");
+    for (int s = 0; order && s < N; s++) {
+        const int *ord = order + (size_t)s * nr;
+        for (int j = 0; j <= nr; j++) fstart[j] = 0;   /* the file's ring j: its count at j + 1, then its start */
+        for (int k = 0; k < nr; k++) fstart[ord[k] + 1] = rings_count(&R[s], k);
+        for (int j = 0; j < nr; j++) fstart[j + 1] += fstart[j];
+        for (int r = 0; r < n; r++) {
+            int g = rows[(size_t)r * N + s], k = 0;
+            while (g >= R[s].start[k + 1]) k++;
+            rows[(size_t)r * N + s] = fstart[ord[k]] + g - R[s].start[k];
+        }
+    }
+    free(fstart);
 }
 
 /* several rings or interior points: compat_holes.h */
@@ -1085,7 +1109,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
 {
     int N = o->nshapes, nr = R[0].nrings;
     struct columns C, I = {0};
-    int *corr = multi_rows(o, R, &C);
+    int *order, *corr = multi_rows(o, R, &C, &order);
     int *parent = malloc(nr * sizeof *parent);
     unsigned char *flipped = malloc((size_t)N * nr);
     if ((o->layers ? compat_layers(N, R, parent, flipped) : compat_nest(N, R, parent, flipped)) < 0)
@@ -1099,7 +1123,14 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (o->interior && columns_read(o->interior, 2 * N, -1, NULL, &I) < 0) die("%s", cm_errmsg());
     int nrows;
     int *rows = match_rings(o, N, R, parent, flipped, corr, C.rows, &nrows);
-    if (o->points_out) points_file(o->points_out, N, rows, nrows, 1);   /* the rows used */
+    if (o->points_out) {   /* the rows used, numbered as in the files */
+        int *fr = malloc(((size_t)nrows + 1) * N * sizeof *fr);
+        if (!fr) die("out of memory");
+        memcpy(fr, rows, (size_t)nrows * N * sizeof *fr);
+        rows_to_files(N, R, order, fr, nrows);
+        points_file(o->points_out, N, fr, nrows, 1);
+        free(fr);
+    }
     double st[4];
     if (compat_multi(N, R, parent, flipped, rows, nrows, I.x, I.rows, o->err, cp, st) < 0) {
         const char *m = cm_errmsg();
@@ -1119,7 +1150,7 @@ static void build_multi(const struct options *o, struct rings *R, struct compat 
     if (cp->nbent)
         info(1, "%d cut%s joining holes to their pieces bend%s (no two straight cuts fit): %d bend points", cp->nbent,
              cp->nbent == 1 ? "" : "s", cp->nbent == 1 ? "s" : "", cp->nbend);
-    free(parent); free(flipped); free(corr); free(rows);
+    free(parent); free(flipped); free(corr); free(rows); free(order);
     columns_free(&C);
     if (o->interior) columns_free(&I);
 }
@@ -1929,7 +1960,7 @@ static void mesh_layers(struct options *o, struct rings *R, struct compat *cp)
 {
     int N = o->nshapes, nr = R[0].nrings;
     struct columns C;
-    int *corr = multi_rows(o, R, &C), nc = C.rows;
+    int *order, *corr = multi_rows(o, R, &C, &order), nc = C.rows;
     int *ring = malloc(((size_t)nc + 1) * sizeof *ring), *nrow = calloc(nr, sizeof *nrow);
     if (!ring || !nrow) die("out of memory");
     for (int r = 0; r < nc; r++)
@@ -2032,11 +2063,12 @@ static void mesh_layers(struct options *o, struct rings *R, struct compat *cp)
         for (int k = 0; k < nr; k++)
             for (int r = 0; r < kp[k].n; r++, np++)
                 for (int s = 0; s < N; s++) rows[(size_t)np * N + s] = kp[k].rows[(size_t)r * N + s] + R[s].start[k];
+        rows_to_files(N, R, order, rows, np);
         points_file(o->points_out, N, rows, np, 1);
         free(rows);
     }
     for (int k = 0; k < nr; k++) { compat_free(&part[k]); free(kp[k].rows); }
-    free(part); free(kp); free(x); free(L); free(err); free(add); free(ring); free(nrow); free(corr);
+    free(part); free(kp); free(x); free(L); free(err); free(add); free(ring); free(nrow); free(corr); free(order);
     columns_free(&C);
 }
 
