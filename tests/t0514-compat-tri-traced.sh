@@ -68,7 +68,9 @@ test_expect_success '--match-rings nearest --points-out: the rows in the files'"
 		f0180.rings f0200.rings >lm.mesh &&
 	rows_are_vertices lused.txt lm.mesh f0000.rings f0080.rings f0180.rings f0200.rings &&
 	compat-tri --layers --match-rings nearest --points-out eused.txt -c corr.txt f0000.rings f0080.rings \
-		f0180.rings f0200.rings >em.mesh &&
+		f0180.rings f0200.rings >em.mesh 2>err &&
+	grep "^compat-tri: warning: ring 2 lies inside ring 1 in every shape: with --layers it is a layer drawn over it, not a hole (for a hole, mesh without --layers)$" err &&
+	grep -c "lies inside" err >n && echo 2 >two && test_cmp two n &&
 	rows_are_vertices eused.txt em.mesh f0000.rings f0080.rings f0180.rings f0200.rings
 '
 test_expect_success 'the mesh area is the traced area minus the holes (within 1%)' '

@@ -1936,6 +1936,36 @@ static void mesh_rings(struct options *o, struct rings *R, int multi, struct com
     }
 }
 
+/* ring b of r inside ring a: every vertex strictly inside (point_in_ring)
+ * and no two edges meet */
+static int ring_inside(const struct rings *r, int b, int a)
+{
+    const double *A = rings_ring(r, a), *B = rings_ring(r, b);
+    int na = rings_count(r, a), nb = rings_count(r, b);
+    for (int i = 0; i < nb; i++)
+        if (!point_in_ring(A, na, B + 2 * i)) return 0;
+    for (int i = 0; i < nb; i++)
+        for (int j = 0; j < na; j++)
+            if (segments_intersect(B + 2 * i, B + 2 * ((i + 1) % nb), A + 2 * j, A + 2 * ((j + 1) % na))) return 0;
+    return 1;
+}
+
+/* --layers: a ring inside another in every shape is likely a hole (an eye)
+ * drawn as a ring; as a layer it is filled and drawn over the other, not
+ * cut out of it, which is said */
+static void layers_nested(int N, const struct rings *R)
+{
+    int nr = R[0].nrings;
+    for (int b = 0; b < nr; b++)
+        for (int a = 0; a < nr; a++) {
+            int all = a != b;
+            for (int s = 0; s < N && all; s++) all = ring_inside(&R[s], b, a);
+            if (all)
+                warn("ring %d lies inside ring %d in every shape: with --layers it is a layer drawn over it, not a "
+                     "hole (for a hole, mesh without --layers)", b + 1, a + 1);
+        }
+}
+
 /* the bounding-box diagonal of n points P (n by 2) */
 static double points_diag(const double *P, int n)
 {
@@ -2124,6 +2154,7 @@ int main(int argc, char **argv)
         }
         info(1, "%s", line);
     }
+    if (o.layers && multi) layers_nested(N, R);
     if (o.layers == LAYERS_EACH && multi) mesh_layers(&o, R, &cp);
     else mesh_rings(&o, R, multi, &cp);
     for (int s = 0; verbose && s < N; s++) {
