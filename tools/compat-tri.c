@@ -186,6 +186,7 @@ struct options {
     int layers;               /* --layers: every ring a layer (compat_layers): LAYERS_EACH, LAYERS_JOINT */
     const struct columns *corr_rows;   /* non-NULL: the rows of -c (corr_read), o->corr only names them */
     struct kept_points *points_mem;    /* non-NULL: --points-out's rows kept here, not written (write_points) */
+    int layer;                         /* mesh_layers: the ring (1-based) being meshed, for messages; 0: none */
     double min_angle, split_share;
     double sharp_in;      /* degrees: the input outlines' sharpest corner (one ring each; else 0) */
     int slide;        /* --slide: 0 off, 1 in the passes run again, 2 in every pass, 3 as 1
@@ -1928,9 +1929,12 @@ static void mesh_rings(struct options *o, struct rings *R, int multi, struct com
             double h = compat_outline_error(cp, s, R[s].P, rings_count(&R[s], 0));
             if (h > hmax) { hmax = h; hs = s; }
         }
-        if (hmax > o->err * (1 + 1e-6))
-            die("the outline of %s is %.3g of the diagonal off its input after the refinement's slides (tolerance %g)",
-                o->shapes[hs], hmax, o->err);
+        if (hmax > o->err * (1 + 1e-6)) {
+            char in[64] = "";
+            if (o->layer) snprintf(in, sizeof in, "ring %d (a layer) of ", o->layer);
+            die("the outline of %s%s is %.3g of the diagonal off its input after the refinement's slides (tolerance %g)",
+                in, o->shapes[hs], hmax, o->err);
+        }
         info(1, "outline after the refinement (--slide): within %.3g of the diagonal of the input (two-sided, largest in %s)",
              hmax, o->shapes[hs]);
     }
@@ -2069,6 +2073,7 @@ static void mesh_layers(struct options *o, struct rings *R, struct compat *cp)
         lo.points_out = NULL;
         lo.points_mem = o->points_out ? &kp[k] : NULL;
         lo.err = err[k];
+        lo.layer = k + 1;
         int *fl = calloc(N, sizeof *fl);
         if (!fl) die("out of memory");
         lo.flipped = fl;
