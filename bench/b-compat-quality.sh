@@ -14,6 +14,8 @@
 # 3. Time for six poses (elephant: 120-138 input points per pose; creature:
 #    ~280), wall seconds (the refinement smooths the poses on one thread per
 #    core, --threads) and CPU seconds, against the goal of 1 s.
+# 4-6. Traced walk frames, the stick characters (whole and layered) and
+#    layers traced from the elephant walk: see each section below.
 set -u
 ROOT=${ROOT:-$(cd "$(dirname "$0")/.." && pwd)}
 PATH="$ROOT/bin:$ROOT/build/bench:$PATH"
@@ -158,3 +160,29 @@ for ch in horse flamingo; do
 	echo "compat-tri --layers (each) worst angle, six stick-$ch poses (four rows): $ql deg | baseline --layers=joint: $1 deg ($2 vertices) | ratio $(awk -v a="$ql" -v b="$1" 'BEGIN { printf "%.2f", a / b }')"
 	echo "compat-tri --layers (each) time, six stick-$ch poses (four rows): $wl s wall | baseline --layers=joint: $(cat "$T/wall") s ($tj s CPU) | ratio $(awk -v a="$wl" -v b="$(cat "$T/wall")" 'BEGIN { printf "%.3f", a / b }')"
 done
+
+# 6. Layers traced from a 3D animation (tests/t0607): the shared elephant
+#    walk seen from the left, its left arm a layer (elephant_arm_layers:
+#    the arm's faces drawn with mesh-render --only), six frames without
+#    rows.  Each layer meshed on its own against the two rings meshed
+#    jointly, and the wall time against the whole silhouettes.
+if [ -e "$W" ]; then
+	mkdir -p "$T/arm"
+	(cd "$T/arm" && SHARED_DATA=$DATA && elephant_walk_frames 0000 0070 0140 0210 0280 0350 &&
+		elephant_arm_layers 0000 0070 0140 0210 0280 0350 &&
+		for k in 0000 0070 0140 0210 0280 0350; do
+			mesh-render -V left -s 300x300 -c 0,0,0 --flat -f ppm e$k.mesh | img2rings -1 -s 1 -o whole$k.rings || exit 1
+		done) || exit 1
+	lay= whole=
+	for k in 0000 0070 0140 0210 0280 0350; do lay="$lay $T/arm/lay$k.rings" whole="$whole $T/arm/whole$k.rings"; done
+	te=$(cpu "$T/a.log" compat-tri -v --layers $lay) || exit 1
+	set -- $(ct_stats "$T/a.log"); qe=$1 we=$(cat "$T/wall")
+	tj=$(cpu "$T/a.log" compat-tri -v --layers=joint $lay) || exit 1
+	set -- $(ct_stats "$T/a.log"); qj=$1 wj=$(cat "$T/wall")
+	tw=$(cpu "$T/a.log" compat-tri -v $whole) || exit 1
+	set -- $(ct_stats "$T/a.log"); qw=$1 ww=$(cat "$T/wall")
+	echo "compat-tri --layers (each) worst angle, six traced elephant walk frames, left arm a layer: $qe deg | baseline --layers=joint: $qj deg | ratio $(awk -v a="$qe" -v b="$qj" 'BEGIN { printf "%.2f", a / b }')"
+	echo "compat-tri --layers (each) time, six traced elephant walk frames, left arm a layer: $we s wall ($te s CPU) | baseline the whole silhouettes: $ww s ($tw s CPU, $qw deg) | ratio $(awk -v a="$we" -v b="$ww" 'BEGIN { printf "%.2f", a / b }')"
+else
+	echo "compat-tri traced layers: skipped (no $W)"
+fi
