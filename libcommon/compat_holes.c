@@ -39,12 +39,16 @@ static int ring_contains(const struct rings *r, int k, const double *q)
     return in;
 }
 
-static double diag_of(const double *P, int n)
+int compat_ring_inside(const struct rings *r, int b, int a)
 {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int i = 0; i < n; i++)
-        for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], P[2 * i + d]); hi[d] = fmax(hi[d], P[2 * i + d]); }
-    return hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    const double *A = rings_ring(r, a), *B = rings_ring(r, b);
+    int na = rings_count(r, a), nb = rings_count(r, b);
+    for (int i = 0; i < nb; i++)
+        for (int j = 0; j < na; j++)
+            if (segments_intersect(B + 2 * i, B + 2 * ((i + 1) % nb), A + 2 * j, A + 2 * ((j + 1) % na))) return 0;
+    for (int i = 0; i < nb; i++)
+        if (!ring_contains(r, a, B + 2 * i)) return 0;
+    return 1;
 }
 
 /* ------------------------------------------------------------------ */
@@ -143,6 +147,7 @@ int compat_layers(int N, struct rings *R, int *parent, unsigned char *flipped)
 int compat_stack(const struct compat *parts, int n, struct compat *c)
 {
     memset(c, 0, sizeof *c);
+    if (n < 1) return cm_seterr("no layer to stack");
     int N = parts[0].N, nv = 0, nf = 0, nb = 0;
     for (int r = 0; r < n; r++) { nv += parts[r].nv; nf += parts[r].nf; nb += parts[r].nb; }
     c->N = N;
@@ -239,7 +244,7 @@ int compat_multi(int N, struct rings *R, const int *parent, const unsigned char 
     unsigned char **keep = calloc(nr, sizeof *keep);
     int *cc = malloc(((size_t)ncorr + 1) * N * sizeof *cc), *nn = malloc(N * sizeof *nn);
     double **P = malloc(N * sizeof *P), *dpose = malloc(N * sizeof *dpose);
-    for (int s = 0; s < N; s++) dpose[s] = diag_of(R[s].P, R[s].start[nr]);
+    for (int s = 0; s < N; s++) dpose[s] = polygon_diagonal(R[s].P, R[s].start[nr]);
     /* every correspondence row names one ring in all shapes */
     int *rowring = malloc((ncorr + 1) * sizeof *rowring);
     for (int k = 0; k < ncorr; k++)
@@ -329,7 +334,7 @@ int compat_multi(int N, struct rings *R, const int *parent, const unsigned char 
     for (int attempt = 0;; attempt++) {
         for (int r = 0; r < nr; r++) {
             double f = INFINITY;
-            for (int s = 0; s < N; s++) f = fmin(f, dpose[s] / diag_of(cr[r].B[s], cr[r].nm));
+            for (int s = 0; s < N; s++) f = fmin(f, dpose[s] / polygon_diagonal(cr[r].B[s], cr[r].nm));
             cr[r].nb = cr[r].nv = cr[r].nm;
             for (int s = 0; s < N; s++) memcpy(cr[r].X[s], cr[r].B[s], 2 * (size_t)cr[r].nm * sizeof(double));
             if (e > 0) compat_simplify(&cr[r], e * f, keep[r]);
@@ -372,7 +377,7 @@ int compat_multi(int N, struct rings *R, const int *parent, const unsigned char 
                 c->X[s][2 * (v + i) + 1] = cr[r].X[s][2 * j + 1];
             }
             double h = compat_outline_error(&cr[r], s, rings_ring(&R[s], r), rings_count(&R[s], r)) *
-                       diag_of(rings_ring(&R[s], r), rings_count(&R[s], r)) / dpose[s];
+                       polygon_diagonal(rings_ring(&R[s], r), rings_count(&R[s], r)) / dpose[s];
             if (h > hmax) { hmax = h; hs = s; }
         }
         v += cr[r].nb;
@@ -881,7 +886,7 @@ static int cut_hole(struct compat *c, struct region *g, int h, int depth, int be
     const struct cyc *H = &g->holes[h], *O = &g->outer;
     int mh = H->m, mo = O->m;
     double *dg = malloc(N * sizeof *dg);
-    for (int s = 0; s < N; s++) dg[s] = diag_of(c->X[s], c->nb);
+    for (int s = 0; s < N; s++) dg[s] = polygon_diagonal(c->X[s], c->nb);
     struct cand *cd = malloc((size_t)mh * mo * sizeof *cd);
     int nc = 0;
     for (int i = 0; i < mh && !bent; i++)

@@ -70,8 +70,12 @@ int compat_layers(int N, struct rings *R, int *parent, unsigned char *flipped);
  * layer (ring r is layer r's: ring_start, parent COMPAT_LAYER), then the
  * layers' interior vertices in the same order; the faces layer by layer,
  * the first layer's first.  c: out (compat_free); parts are left as they
- * are.  Returns -1 out of memory. */
+ * are.  Returns -1 out of memory or n < 1. */
 int compat_stack(const struct compat *parts, int n, struct compat *c);
+
+/* Ring b of r lies inside ring a: no edge of b meets an edge of a and
+ * every vertex of b is strictly inside a (exact predicates). */
+int compat_ring_inside(const struct rings *r, int b, int a);
 
 /* Put every shape's rings in shape 0's order (for traced frames, whose
  * rings come in an order of their own, e.g. img2rings: by area): the

@@ -413,6 +413,14 @@ static int cmp_xy(const void *x, const void *y)
     return (a[1] > b[1]) - (a[1] < b[1]);
 }
 
+double polygon_diagonal(const double *P, int n)
+{
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < n; i++)
+        for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], P[2 * i + d]); hi[d] = fmax(hi[d], P[2 * i + d]); }
+    return hypot(hi[0] - lo[0], hi[1] - lo[1]);
+}
+
 double polygon_roundness(const double *P, int n)
 {
     double *S = malloc((size_t)n * 2 * sizeof *S), *H = malloc(((size_t)n + 1) * 2 * sizeof *H);

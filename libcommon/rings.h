@@ -104,6 +104,9 @@ double rings_sharpest_left(const struct rings *r, int k);
  * in [0, 1] (0: no area), -1 on out of memory. */
 double polygon_roundness(const double *P, int n);
 
+/* The diagonal of the bounding box of n points P (n by 2). */
+double polygon_diagonal(const double *P, int n);
+
 /* Reverse the point order (and the source lines) of ring k. */
 void rings_reverse(struct rings *r, int k);
 

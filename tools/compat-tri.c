@@ -1940,20 +1940,6 @@ static void mesh_rings(struct options *o, struct rings *R, int multi, struct com
     }
 }
 
-/* ring b of r inside ring a: every vertex strictly inside (point_in_ring)
- * and no two edges meet */
-static int ring_inside(const struct rings *r, int b, int a)
-{
-    const double *A = rings_ring(r, a), *B = rings_ring(r, b);
-    int na = rings_count(r, a), nb = rings_count(r, b);
-    for (int i = 0; i < nb; i++)
-        if (!point_in_ring(A, na, B + 2 * i)) return 0;
-    for (int i = 0; i < nb; i++)
-        for (int j = 0; j < na; j++)
-            if (segments_intersect(B + 2 * i, B + 2 * ((i + 1) % nb), A + 2 * j, A + 2 * ((j + 1) % na))) return 0;
-    return 1;
-}
-
 /* --layers: a ring inside another in every shape is likely a hole (an eye)
  * drawn as a ring; as a layer it is filled and drawn over the other, not
  * cut out of it, which is said */
@@ -1963,20 +1949,11 @@ static void layers_nested(int N, const struct rings *R)
     for (int b = 0; b < nr; b++)
         for (int a = 0; a < nr; a++) {
             int all = a != b;
-            for (int s = 0; s < N && all; s++) all = ring_inside(&R[s], b, a);
+            for (int s = 0; s < N && all; s++) all = compat_ring_inside(&R[s], b, a);
             if (all)
                 warn("ring %d lies inside ring %d in every shape: with --layers it is a layer drawn over it, not a "
                      "hole (for a hole, mesh without --layers)", b + 1, a + 1);
         }
-}
-
-/* the bounding-box diagonal of n points P (n by 2) */
-static double points_diag(const double *P, int n)
-{
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int i = 0; i < n; i++)
-        for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], P[2 * i + d]); hi[d] = fmax(hi[d], P[2 * i + d]); }
-    return hypot(hi[0] - lo[0], hi[1] - lo[1]);
 }
 
 /* --layers (each) with several rings R: every layer meshed on its own as
@@ -2027,7 +2004,7 @@ static void mesh_layers(struct options *o, struct rings *R, struct compat *cp)
             if (rings_from_points(&L[k][s], rings_ring(&R[s], k), n) < 0) die("%s", cm_errmsg());
             memcpy(L[k][s].line, R[s].line + R[s].start[k], n * sizeof *R[s].line);
             snprintf(L[k][s].name, sizeof L[k][s].name, "%s", R[s].name);
-            err[k] = fmin(err[k], points_diag(R[s].P, R[s].start[nr]) / points_diag(rings_ring(&R[s], k), n));
+            err[k] = fmin(err[k], polygon_diagonal(R[s].P, R[s].start[nr]) / polygon_diagonal(rings_ring(&R[s], k), n));
         }
         err[k] *= o->err;
     }
