@@ -1643,8 +1643,12 @@ struct compat_refiner {
     int start_nvin, start_nextid;
     int *start_id;
     unsigned long long *start_sig;
-    struct best alt;          /* the first pass's result (settled) */
+    struct best alt;          /* the best earlier pass's result (settled, or
+                                 not yet: alt_raw) */
     double walt;              /* its worst ratio to the goal */
+    int alt_raw;              /* 1: alt is a first pass cut short
+                                 (COMPAT_REFINE_GROWING), its best round
+                                 without the final polish (settle_alt) */
     struct compat_refine_stats alt_stats;   /* the first pass's stop reason */
     int settled;              /* 1: the first pass settled at the goal (finish
                                  must not polish it again) */
@@ -1987,6 +1991,36 @@ static int settle(struct compat_refiner *r)
     return 0;
 }
 
+/* the final polish of alt kept raw (alt_raw), as settle gives it at the end
+ * of its pass; the working mesh is back as it was after it.  0 or -1. */
+static int settle_alt(struct compat_refiner *r)
+{
+    struct work *w = &r->w;
+    struct compat *c = r->c;
+    struct best cur;
+    memset(&cur, 0, sizeof cur);
+    int *id = malloc((c->nv ? c->nv : 1) * sizeof *id), nv = c->nv, slide = w->slide_now, rc = -1;
+    if (!id) return cm_seterr("out of memory");
+    memcpy(id, w->id, nv * sizeof *id);
+    if (best_take(w, r->nvin, &cur) < 0) goto out;
+    best_restore(w, &r->alt, &r->nvin);
+    w->slide_now = w->stol && r->pa.slide_first;   /* as in the first pass */
+    rc = final_polish(r);
+    w->slide_now = slide;
+    if (rc == 0) {
+        int wf, ws, nb;
+        r->walt = worst_ratio(w, r->pa.goal, &wf, &ws, &nb);
+        rc = r->walt < 0 ? -1 : best_take(w, r->nvin, &r->alt);
+    }
+    best_restore(w, &cur, &r->nvin);
+    memcpy(w->id, id, nv * sizeof *id);
+    r->alt_raw = 0;
+out:
+    best_free(c->N, &cur);
+    free(id);
+    return rc;
+}
+
 /* back to the mesh after compat_refine_begin for the next pass */
 static int restart(struct compat_refiner *r, int pass)
 {
@@ -2035,15 +2069,28 @@ int compat_refine_step(struct compat_refiner *r)
      * over every pose, the best of the three kept. */
     struct work *w = &r->w;
     st->stalled = r->stall;
-    if (settle(r) < 0) return -1;
+    /* a first pass cut short (its bad triangles grew with its vertices)
+     * is kept aside as its best round: its final polish runs only where a
+     * later pass ends below the goal and is compared with it (settle_alt;
+     * the first pass so cut short was never the result, compat-tri(1),
+     * and its polish cost 0.09-0.27 s of t0587's six horse poses' 1.6 s);
+     * one with a stall's polished mesh is settled now */
+    int raw = r->pass == 0 && st->stop == COMPAT_REFINE_GROWING && !r->polished.nv;
+    if (!raw && settle(r) < 0) return -1;
+    if (raw && r->remesh && r->best.nv && r->wbest > r->wcur) {
+        best_restore(w, &r->best, &r->nvin);
+        st->restored = 1;
+    }
     int wf, ws, nb;
     double wk = worst_ratio(w, r->pa.goal, &wf, &ws, &nb);
     if (wk < 0) return -1;
     r->settled = 1;
     if (wk >= 1) return 0;   /* the final polish reached the goal */
     r->settled = 0;
+    if (r->alt_raw && settle_alt(r) < 0) return -1;   /* compared settled */
     if (r->pass == 0 || wk > r->walt) {   /* the best pass so far */
         r->walt = wk;
+        r->alt_raw = raw;
         if (best_take(w, r->nvin, &r->alt) < 0) return -1;
         r->alt_stats = *st;
         r->alt_stats.rerun = r->pass == 0 ? 2 : 1;
@@ -2168,6 +2215,7 @@ int compat_refine_finish(struct compat_refiner *r)
         int wf, ws, nb;
         double wk = worst_ratio(w, goal, &wf, &ws, &nb);
         if (wk < 0) goto out;
+        if (r->alt_raw && wk < 1 && settle_alt(r) < 0) goto out;   /* compared settled */
         if (r->walt >= wk) {
             if (keep_alt(r) < 0) goto out;
         } else if (r->pass == 2 && r->remesh && wk < 1) {

@@ -210,7 +210,10 @@ struct compat_refine_params {
     int grow;          /* (split_share < 1) 1: the first pass ends as soon
                           as its bad triangles grow with its vertices
                           (COMPAT_REFINE_GROWING) and the second starts;
-                          0: it goes on to its own end (a stall, max_nv) */
+                          0: it goes on to its own end (a stall, max_nv).
+                          A first pass cut short is kept aside without its
+                          final polish, which runs only where a later pass
+                          ends below the goal and is compared with it */
 };
 /* rounds of the second pass that split every triangle below the goal
  * before split_share applies */

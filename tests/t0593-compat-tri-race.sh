@@ -54,6 +54,19 @@ test_expect_success 'the same bytes with 1, 2 and 3 threads' '
 	stick_rows horse 0 1 2 >c &&
 	same_bytes_threads -c c horse0.rings horse1.rings horse2.rings
 '
+# six poses: with threads the rows alone are built, triangulated and
+# refined ahead on one core while the matched points' next rounds are
+# stepped ahead on the other; the race judges each round as it takes it
+# (its state kept per round), so the bytes are those of one thread
+test_expect_success 'six horse poses (rounds stepped ahead on both cores): the same bytes with 1, 2 and 3 threads' '
+	stick_poses horse 3 4 5 && stick_rows horse 0 1 2 3 4 5 >c6 &&
+	compat-tri -v -c c6 horse0.rings horse1.rings horse2.rings horse3.rings horse4.rings horse5.rings \
+		>six.mesh 2>six.log &&
+	grep "the given rows only (-m off) dropped after" six.log &&
+	w=$(worst_angle six.mesh) && echo "worst $w deg" && test_le 19.99 $w &&
+	same_bytes_threads -c c6 horse0.rings horse1.rings horse2.rings horse3.rings horse4.rings horse5.rings &&
+	test_cmp six.mesh sbt2.mesh
+'
 test_expect_success 'an explicit -m multiscale is left alone (no other candidate)' '
 	compat-tri -v -m multiscale -c c horse0.rings horse1.rings horse2.rings >m.mesh 2>m.log &&
 	! grep "too; at" m.log

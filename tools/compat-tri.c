@@ -1302,6 +1302,23 @@ enum { C_MATCHED, C_ROWS, C_DENSE, C_SPREAD, C_POLISH, NCAND };
  * (flips, quality, splits); a count, not a clock, so the race's decisions
  * and output do not depend on the machine or its load */
 #define ROUND_WORK 10
+/* what the race reads of a candidate's refinement after a round
+ * (compat_refine_pass, compat_refine_progress): kept per round, so that a
+ * round stepped ahead (struct ahead) is judged when the race takes it, as
+ * if it ran then */
+struct cand_state {
+    int pass, prounds, pnbad;         /* the pass, its rounds, its last round's triangles below the goal */
+    double pworst;                    /* and worst angle (radians) */
+    double worst;                     /* the best kept so far (radians) */
+    int nbad, fewest;                 /* compat_refine_progress's counts */
+};
+
+static void cand_state_read(const struct compat_refiner *r, struct cand_state *s)
+{
+    compat_refine_pass(r, &s->pass, &s->prounds, &s->pworst, &s->pnbad);
+    compat_refine_progress(r, &s->worst, &s->nbad, &s->fewest);
+}
+
 struct candidate {
     const char *name;                 /* for -v */
     struct options opt;               /* its options (C_MATCHED: main's) */
@@ -1317,6 +1334,8 @@ struct candidate {
     int pre, used;                    /* rounds stepped ahead (struct ahead), of them taken */
     int status[RACE_ROUNDS];          /* what those steps returned */
     double prework[RACE_ROUNDS];      /* and their work */
+    struct cand_state prestate[RACE_ROUNDS];   /* and the state after them */
+    struct cand_state now;            /* the state after the last round taken */
     struct rings *R;                  /* cand_build: the outlines, */
     int ok;                           /* built and triangulated, */
     char log[LOG_SIZE], err[512];     /* its -v lines and error */
@@ -1337,8 +1356,12 @@ static int cand_step(const struct options *o, struct candidate *k, struct progre
     int st;
     if (k->used < k->pre) {
         k->work += k->prework[k->used];
+        k->now = k->prestate[k->used];
         st = k->status[k->used++];
-    } else if ((st = compat_refine_step(k->r)) >= 0) k->work += round_work(k);
+    } else if ((st = compat_refine_step(k->r)) >= 0) {
+        k->work += round_work(k);
+        cand_state_read(k->r, &k->now);
+    }
     k->rounds++;
     progress_step(pr, ++*rounds);
     if (st < 0) return -1;
@@ -1386,10 +1409,7 @@ static double best_sofar(struct candidate *const *K)
     for (int a = 0; a < NCAND; a++) {
         if (!K[a]->built) continue;
         double w = K[a]->q;
-        if (K[a]->r) {
-            compat_refine_progress(K[a]->r, &w, NULL, NULL);
-            w *= 180 / M_PI;
-        }
+        if (K[a]->r) w = K[a]->now.worst * 180 / M_PI;
         if (w > q) q = w;
     }
     return q;
@@ -1413,12 +1433,9 @@ static double best_sofar(struct candidate *const *K)
 #define RACE_MARGIN 3
 static int cand_behind(const struct candidate *a, const struct candidate *b, double goal, char *why, size_t wsize)
 {
-    int pa, pb, ra, rb, na, nb;
-    double wa, wb, best;
-    if (a->used < a->pre || b->used < b->pre) return 0;   /* rounds stepped ahead (struct ahead) not taken yet */
-    compat_refine_pass(a->r, &pa, &ra, &wa, &na);
-    compat_refine_pass(b->r, &pb, &rb, &wb, &nb);
-    compat_refine_progress(a->r, &best, NULL, NULL);
+    int pa = a->now.pass, pb = b->now.pass, ra = a->now.prounds, rb = b->now.prounds, na = a->now.pnbad,
+        nb = b->now.pnbad;
+    double wa = a->now.pworst, wb = b->now.pworst, best = a->now.worst;
     if (ra < 1 || rb < RACE_ROUNDS || (b->work > a->work && b->rounds > a->rounds) || (double)na < RACE_BEHIND * (double)nb)
         return 0;
     double margin = pa || pb ? RACE_MARGIN * M_PI / 180 : 0;
@@ -1468,15 +1485,33 @@ static void *ahead_run(void *arg)
     k->pa = refine_params(&a->off, &k->cp);
     k->pa.threads = 1;
     if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) { a->ok = 0; snprintf(a->err, sizeof a->err, "%s", cm_errmsg()); goto out; }
+    cand_state_read(k->r, &k->now);
     while (k->pre < RACE_ROUNDS && !atomic_load(&a->stop) && !atomic_load(&a->wait)) {
         int st = compat_refine_step(k->r);
         k->status[k->pre] = st;
+        if (st >= 0) cand_state_read(k->r, &k->prestate[k->pre]);
         k->prework[k->pre++] = st >= 0 ? round_work(k) : 0;
         if (st <= 0) break;
     }
 out:
     atomic_store(&a->done, 1);
     return NULL;
+}
+
+/* rounds of candidate k stepped ahead on one thread (up to RACE_ROUNDS in
+ * all, taken by cand_step in order) until *until is set: the race waiting
+ * for the thread of struct ahead steps the rounds it will take next */
+static void cand_prestep(struct candidate *k, atomic_int *until, int threads)
+{
+    if (!k->r) return;
+    compat_refine_threads(k->r, 1);
+    while (k->pre < RACE_ROUNDS && !atomic_load(until) && (k->pre == 0 || k->status[k->pre - 1] > 0)) {
+        int st = compat_refine_step(k->r);
+        k->status[k->pre] = st;
+        if (st >= 0) cand_state_read(k->r, &k->prestate[k->pre]);
+        k->prework[k->pre++] = st >= 0 ? round_work(k) : 0;
+    }
+    compat_refine_threads(k->r, threads);
 }
 
 /* starts the thread (a zeroed, k: the candidate to fill); 0 if it did not start */
@@ -1538,7 +1573,7 @@ static int cand_start(struct candidate *k, struct ahead *ah, int threads)
         if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) {
             k->ok = 0;
             snprintf(k->err, sizeof k->err, "%s", cm_errmsg());
-        }
+        } else cand_state_read(k->r, &k->now);
     }
     for (char *l = k->log, *e; *l && (e = strchr(l, '\n')); l = e + 1) {   /* its -v lines */
         *e = 0;
@@ -1656,6 +1691,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
     m->pa = refine_params(o, cp);
     if (ah->started) m->pa.threads = 1;   /* the other core builds the rows alone */
     if (!(m->r = compat_refine_begin(&m->cp, &m->pa, &m->rs))) die("%s", cm_errmsg());
+    cand_state_read(m->r, &m->now);
     struct progress pr;
     long done = 0;
     int stage = 0, win = -1;   /* 0: the matched points alone, 1: and the rows alone, 2: and the further matchings */
@@ -1664,7 +1700,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
         if (m->r && ah->started && atomic_load(&ah->done)) compat_refine_threads(m->r, o->threads);
         if (!m->r && !below_goal(o, &m->cp, m->q)) { win = C_MATCHED; break; }   /* at the goal alone */
         int nbad0 = 0, fewest0 = 0;
-        if (m->r) compat_refine_progress(m->r, NULL, &nbad0, &fewest0);
+        if (m->r) { nbad0 = m->now.nbad; fewest0 = m->now.fewest; }
         /* the rows alone (3 or more rows) once the matched points fall
          * short after RACE_ROUNDS rounds */
         if (stage == 0 && (!m->r || (m->rounds >= RACE_ROUNDS && nbad0 > fewest0))) {
@@ -1694,6 +1730,9 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
                           K[C_ROWS]->name, elapsed());
                 K[C_ROWS]->R = R;
                 if (!ah->started) cand_build(K[C_ROWS], R);
+                /* the matched points' next rounds meanwhile, where the
+                 * other core is still building the rows alone */
+                else if (m->used == m->pre) cand_prestep(m, &ah->done, 1);
                 if (cand_start(K[C_ROWS], ah, o->threads) == 0 && K[C_ROWS]->pa.threads == 1)
                     compat_refine_threads(K[C_ROWS]->r, o->threads);
                 if (m->r) compat_refine_threads(m->r, o->threads);
@@ -1707,11 +1746,7 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
          * built (measured: with them from the start 0.6 -> 1.55 s there) */
         int first = 0;
         for (int a = 0; a < NCAND; a++)
-            if (K[a]->built && K[a]->r) {
-                int pass;
-                compat_refine_pass(K[a]->r, &pass, NULL, NULL, NULL);
-                if (!pass || K[a]->used < K[a]->pre) first = 1;
-            }
+            if (K[a]->built && K[a]->r && !K[a]->now.pass) first = 1;
         if (stage == 1 && !first) {
             stage = 2;
             char names[512] = "";
