@@ -1296,6 +1296,8 @@ static double improve(const struct options *opt, struct compat *cpp, double q0)
  * in advance (see race). */
 enum { C_MATCHED, C_ROWS, C_DENSE, C_SPREAD, C_POLISH, NCAND };
 #define RACE_ROUNDS 3
+/* rounds a candidate may step ahead of the race in all (cand_prestep) */
+#define PRE_MAX 16
 #define RACE_BEHIND 2
 /* the work of a round (struct candidate): its accepted smoothing moves
  * (vertex x shape) plus ROUND_WORK per vertex and shape for the rest
@@ -1331,10 +1333,10 @@ struct candidate {
     int built;                        /* started (or tried: then r NULL and q -1) */
     int rounds, moves;                /* rounds run; rs.moves when the last was counted */
     double work;                      /* of its rounds so far (ROUND_WORK) */
-    int pre, used;                    /* rounds stepped ahead (struct ahead), of them taken */
-    int status[RACE_ROUNDS];          /* what those steps returned */
-    double prework[RACE_ROUNDS];      /* and their work */
-    struct cand_state prestate[RACE_ROUNDS];   /* and the state after them */
+    int pre, used;                    /* rounds stepped ahead (struct ahead, cand_prestep), of them taken */
+    int status[PRE_MAX];              /* what those steps returned */
+    double prework[PRE_MAX];          /* and their work */
+    struct cand_state prestate[PRE_MAX];   /* and the state after them */
     struct cand_state now;            /* the state after the last round taken */
     struct rings *R;                  /* cand_build: the outlines, */
     int ok;                           /* built and triangulated, */
@@ -1498,14 +1500,14 @@ out:
     return NULL;
 }
 
-/* rounds of candidate k stepped ahead on one thread (up to RACE_ROUNDS in
+/* rounds of candidate k stepped ahead on one thread (up to PRE_MAX in
  * all, taken by cand_step in order) until *until is set: the race waiting
  * for the thread of struct ahead steps the rounds it will take next */
 static void cand_prestep(struct candidate *k, atomic_int *until, int threads)
 {
     if (!k->r) return;
     compat_refine_threads(k->r, 1);
-    while (k->pre < RACE_ROUNDS && !atomic_load(until) && (k->pre == 0 || k->status[k->pre - 1] > 0)) {
+    while (k->pre < PRE_MAX && !atomic_load(until) && (k->pre == 0 || k->status[k->pre - 1] > 0)) {
         int st = compat_refine_step(k->r);
         k->status[k->pre] = st;
         if (st >= 0) cand_state_read(k->r, &k->prestate[k->pre]);
@@ -1732,7 +1734,10 @@ static double race(struct options *o, struct rings *R, struct compat *cp, double
                 if (!ah->started) cand_build(K[C_ROWS], R);
                 /* the matched points' next rounds meanwhile, where the
                  * other core is still building the rows alone */
-                else if (m->used == m->pre) cand_prestep(m, &ah->done, 1);
+                else if (m->used == m->pre) {
+                    atomic_store(&ah->wait, 1);   /* the rows alone's rounds are the race's now */
+                    cand_prestep(m, &ah->done, 1);
+                }
                 if (cand_start(K[C_ROWS], ah, o->threads) == 0 && K[C_ROWS]->pa.threads == 1)
                     compat_refine_threads(K[C_ROWS]->r, o->threads);
                 if (m->r) compat_refine_threads(m->r, o->threads);
