@@ -1968,9 +1968,9 @@ static int refine_round(struct compat_refiner *r)
 }
 
 /* the end of a pass: back to the best round if the later ones only added
- * vertices, the final polish, and back to the polished mesh of a stall if
- * the later rounds ended below it.  0 or -1. */
-static int settle(struct compat_refiner *r)
+ * vertices, then (polish) the final polish, and back to the polished mesh
+ * of a stall if the later rounds ended below it.  0 or -1. */
+static int settle(struct compat_refiner *r, int polish)
 {
     struct work *w = &r->w;
     double goal = r->pa.goal;
@@ -1978,6 +1978,7 @@ static int settle(struct compat_refiner *r)
         best_restore(w, &r->best, &r->nvin);
         r->st->restored = 1;
     }
+    if (!polish) return 0;
     if (final_polish(r) < 0) return -1;
     if (r->polished.nv) {
         int wf, ws, nb;
@@ -2076,11 +2077,7 @@ int compat_refine_step(struct compat_refiner *r)
      * and its polish cost 0.09-0.27 s of t0587's six horse poses' 1.6 s);
      * one with a stall's polished mesh is settled now */
     int raw = r->pass == 0 && st->stop == COMPAT_REFINE_GROWING && !r->polished.nv;
-    if (!raw && settle(r) < 0) return -1;
-    if (raw && r->remesh && r->best.nv && r->wbest > r->wcur) {
-        best_restore(w, &r->best, &r->nvin);
-        st->restored = 1;
-    }
+    if (settle(r, !raw) < 0) return -1;
     int wf, ws, nb;
     double wk = worst_ratio(w, r->pa.goal, &wf, &ws, &nb);
     if (wk < 0) return -1;
@@ -2207,7 +2204,7 @@ int compat_refine_finish(struct compat_refiner *r)
     int rc = -1;
     if (!r->settled) {
         st->stalled = r->stall;
-        if (settle(r) < 0) goto out;
+        if (settle(r, 1) < 0) goto out;
     }
     /* a later pass not better than the best earlier one: back to that */
     int gdone = 0;   /* the global polish done */

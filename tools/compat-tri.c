@@ -1448,6 +1448,18 @@ static int cand_behind(const struct candidate *a, const struct candidate *b, dou
     return 1;
 }
 
+/* one round of candidate k stepped ahead of the race: what it returned,
+ * its work and its state kept for cand_step to take in order; returns
+ * what compat_refine_step returned */
+static int cand_ahead_round(struct candidate *k)
+{
+    int st = compat_refine_step(k->r);
+    k->status[k->pre] = st;
+    if (st >= 0) cand_state_read(k->r, &k->prestate[k->pre]);
+    k->prework[k->pre++] = st >= 0 ? round_work(k) : 0;
+    return st;
+}
+
 /* The given rows alone (C_ROWS) built ahead: with 2 or more threads it is
  * built, triangulated and refined up to RACE_ROUNDS rounds on a thread of
  * its own while the matched points are triangulated and refined on the
@@ -1488,13 +1500,8 @@ static void *ahead_run(void *arg)
     k->pa.threads = 1;
     if (!(k->r = compat_refine_begin(&k->cp, &k->pa, &k->rs))) { a->ok = 0; snprintf(a->err, sizeof a->err, "%s", cm_errmsg()); goto out; }
     cand_state_read(k->r, &k->now);
-    while (k->pre < RACE_ROUNDS && !atomic_load(&a->stop) && !atomic_load(&a->wait)) {
-        int st = compat_refine_step(k->r);
-        k->status[k->pre] = st;
-        if (st >= 0) cand_state_read(k->r, &k->prestate[k->pre]);
-        k->prework[k->pre++] = st >= 0 ? round_work(k) : 0;
-        if (st <= 0) break;
-    }
+    while (k->pre < RACE_ROUNDS && !atomic_load(&a->stop) && !atomic_load(&a->wait))
+        if (cand_ahead_round(k) <= 0) break;
 out:
     atomic_store(&a->done, 1);
     return NULL;
@@ -1507,12 +1514,8 @@ static void cand_prestep(struct candidate *k, atomic_int *until, int threads)
 {
     if (!k->r) return;
     compat_refine_threads(k->r, 1);
-    while (k->pre < PRE_MAX && !atomic_load(until) && (k->pre == 0 || k->status[k->pre - 1] > 0)) {
-        int st = compat_refine_step(k->r);
-        k->status[k->pre] = st;
-        if (st >= 0) cand_state_read(k->r, &k->prestate[k->pre]);
-        k->prework[k->pre++] = st >= 0 ? round_work(k) : 0;
-    }
+    while (k->pre < PRE_MAX && !atomic_load(until))
+        if (cand_ahead_round(k) <= 0) break;
     compat_refine_threads(k->r, threads);
 }
 
