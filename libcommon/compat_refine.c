@@ -1685,12 +1685,7 @@ struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat
     w->diag = malloc(c->N * sizeof *w->diag);
     w->pose_cost = calloc(3 * (size_t)c->N, sizeof *w->pose_cost);
     if (!w->diag || !w->pose_cost) { cm_seterr("out of memory"); goto fail; }
-    for (int s = 0; s < c->N; s++) {
-        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-        for (int v = 0; v < c->nb; v++)
-            for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], c->X[s][2 * v + d]); hi[d] = fmax(hi[d], c->X[s][2 * v + d]); }
-        w->diag[s] = hypot(hi[0] - lo[0], hi[1] - lo[1]);
-    }
+    for (int s = 0; s < c->N; s++) w->diag[s] = polygon_diagonal(c->X[s], c->nb);
     if (snap_take(c, &r->snap) < 0 || grow_v(w, c->nv) < 0) goto fail;
     /* boundary flags and successors from the faces */
     memset(w->bnd, 0, c->nv);
@@ -1704,12 +1699,7 @@ struct compat_refiner *compat_refine_begin(struct compat *c, const struct compat
         /* outline vertices that slide along their input outline */
         w->stol = malloc(c->N * sizeof *w->stol);
         if (!w->stol) { cm_seterr("out of memory"); goto fail; }
-        for (int s = 0; s < c->N; s++) {
-            double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-            for (int i = 0; i < c->nm; i++)
-                for (int d = 0; d < 2; d++) { lo[d] = fmin(lo[d], c->B[s][2 * i + d]); hi[d] = fmax(hi[d], c->B[s][2 * i + d]); }
-            w->stol[s] = pa->slide * hypot(hi[0] - lo[0], hi[1] - lo[1]);
-        }
+        for (int s = 0; s < c->N; s++) w->stol[s] = pa->slide * polygon_diagonal(c->B[s], c->nm);
         for (int v = 0; v < c->nb; v++)
             if (!(c->bpin && c->bpin[v])) w->seg[2 * v] = -2 - c->bidx[v];
         w->slide_now = pa->slide_first;
